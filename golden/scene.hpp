@@ -1,0 +1,117 @@
+// A scene as the user writes it (JSON, see docs/scene.md): everything in
+// floating point and user units. The host driver turns it into registers.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "golden/precision.hpp"
+
+namespace cube4::golden {
+
+using Vec3 = std::array<double, 3>;
+
+// How input values are mapped onto [0, 2^voxel_bits - 1].
+struct Quantisation {
+  enum class Mode { Full, MinMax, Window } mode = Mode::Full;
+  double lo = 0, hi = 0;  // Window only: input values lo..hi map to 0..max
+};
+
+struct VolumeSource {
+  // "den", "raw", "nifti" (files) or "sphere", "field", "noise", "constant",
+  // "single_voxel" (synthetic).
+  std::string kind = "den";
+  std::string path;                       // files: resolved against the scene's folder
+  // raw files
+  std::array<int, 3> dim{0, 0, 0};
+  std::string type = "uint8";             // uint8, uint16, int16, uint32, int32, float32, float64
+  std::string endian = "little";          // little, big
+  uint64_t header_bytes = 0;
+  // synthetic volumes
+  std::array<int, 3> size{64, 64, 64};
+  double radius = 0;                      // sphere; 0 = 3/8 of the smallest size
+  std::optional<Vec3> center;             // sphere; default the volume centre
+  std::string field = "marschner_lobb";   // field: marschner_lobb, gaussian, ramp_x, ramp_y, ramp_z
+  double value = 1.0;                     // constant / single_voxel, in [0, 1]
+  std::array<int, 3> at{0, 0, 0};         // single_voxel position
+  uint32_t seed = 1;                      // noise
+  // all
+  std::optional<Vec3> spacing;            // overrides the file's spacing
+  Quantisation quantisation;
+};
+
+struct View {
+  Vec3 rotate{0, 0, 0};                   // degrees about x, then y, then z (object to world)
+  std::optional<Vec3> direction;          // or: viewing direction in object space ...
+  Vec3 up{0, 1, 0};                       // ... and the up vector
+  std::array<double, 2> ray_offset{0, 0}; // sub-pixel start of rays on the base plane, [0,1)
+};
+
+struct ColorPoint { double x; Vec3 rgb; };     // x: normalised sample value [0,1]
+struct ScalarPoint { double x; double y; };    // piecewise-linear control point
+
+struct Light { Vec3 direction{0, 0, 1}; double intensity = 1.0; };  // towards the light, world space
+
+struct Material {
+  double ke = 0.15, kd = 0.85, ks = 0.35;
+  Vec3 specular_color{1, 1, 1};
+  double exponent = 20;
+};
+
+enum class Blend { Composite, Mip, MinIp };
+
+struct GradientModulation { bool opacity = false, diffuse = false, specular = false; };
+
+struct Cropping {
+  bool enabled = false;
+  std::array<std::array<int, 2>, 3> slab{{{0, 0}, {0, 0}, {0, 0}}};  // inclusive voxel ranges x, y, z
+  uint8_t mask = 0x80;  // visible = bit (inX | inY<<1 | inZ<<2); 0x80 = intersection
+};
+
+struct CutPlane {
+  bool enabled = false;
+  Vec3 normal{0, 0, 1};       // A, B, C in object voxel coordinates (normalised by the host)
+  double dmin = 0, dmax = 0;  // voxel units from the volume origin
+  double falloff = 0;         // width of the linear transition, voxel units
+  bool keep_inside = true;    // false: keep what is outside the slab
+};
+
+struct Scene {
+  std::string file;  // where it was read from ("" = built in)
+  VolumeSource volume;
+  View view;
+  int width = 256, height = 256;
+  std::vector<ColorPoint> color;
+  std::vector<ScalarPoint> opacity;
+  std::vector<ScalarPoint> gm_lut;   // x: |g| / max |g| in [0,1]; y in [0,1]
+  std::vector<Light> lights;
+  Material material;
+  bool shading = true;
+  Blend blend = Blend::Composite;
+  GradientModulation gm;
+  int supersampling = 1;             // z only, 1..8
+  Cropping cropping;
+  CutPlane cut;
+  int pipelines = 4;
+  double clock_mhz = 125;
+  Precision precision;
+};
+
+// The effects a scene calls for: decides what is computed and simulated.
+struct EffectSet {
+  bool gradient = false;       // any use of the gradient
+  bool magnitude = false;      // |g| and the GmLUT
+  bool shading = false;        // reflectance maps and Phong combine
+  bool specular = false;       // reflection vector and specular map
+  bool cropping = false;
+  bool cut_plane = false;
+  bool supersampling = false;
+  Blend blend = Blend::Composite;
+  std::vector<std::string> names() const;  // e.g. {"composite", "gradient", "shading", ...}
+};
+
+EffectSet effects_of(const Scene& s);
+
+}  // namespace cube4::golden
