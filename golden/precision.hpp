@@ -21,7 +21,7 @@ struct Precision {
   int coef_bits = 10;       // ke, kd, ks: unsigned, coef_frac_bits fraction
   int coef_frac_bits = 8;
   int eye_bits = 8;         // signed eye-vector components for the reflection vector
-  int cut_bits = 24;        // signed cut-plane distance accumulator
+  int cut_bits = 32;        // signed cut-plane distance, saturated
 };
 
 }  // namespace cube4::golden

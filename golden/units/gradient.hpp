@@ -1,0 +1,43 @@
+// Gradient unit: central differences of samples in x and y, and Cube-4's
+// 12-neighbourhood ABC method in z (ahead and behind slices bilinearly
+// re-aligned to the current ray), signed and saturating.
+#pragma once
+#include <cstdint>
+
+#include "golden/fixed.hpp"
+#include "golden/precision.hpp"
+#include "golden/units/trilinear.hpp"
+
+namespace cube4::golden {
+
+struct Gradient {
+  int32_t x = 0, y = 0, z = 0;
+  friend constexpr bool operator==(const Gradient& a, const Gradient& b) {
+    return a.x == b.x && a.y == b.y && a.z == b.z;
+  }
+};
+
+// A full central difference (twice the gradient in sample units per voxel)
+// scaled down by gradient_shift with rounding and saturated to ±(2^(b-1)-1).
+constexpr int32_t gradient_component(int64_t full_difference, const Precision& p) {
+  return static_cast<int32_t>(sat_signed(round_shift(full_difference, p.gradient_shift), p.gradient_bits));
+}
+
+// The ahead/behind sample straight in z: bilinear in the 2x2 samples around
+// the re-aligned position (weights from realign()).
+constexpr uint32_t abc_sample(uint32_t s00, uint32_t s10, uint32_t s01, uint32_t s11,
+                              uint32_t wx, uint32_t wy, int weight_bits) {
+  return static_cast<uint32_t>(bilerp(s00, s10, s01, s11, wx, wy, weight_bits));
+}
+
+// Sample slices are 1/S voxel apart in z, so the z difference is scaled by
+// S to stay in per-voxel units like x and y.
+constexpr Gradient gradient_12n(uint32_t left, uint32_t right, uint32_t up, uint32_t down,
+                                uint32_t behind, uint32_t ahead, int supersampling,
+                                const Precision& p) {
+  return {gradient_component(static_cast<int64_t>(right) - left, p),
+          gradient_component(static_cast<int64_t>(down) - up, p),
+          gradient_component((static_cast<int64_t>(ahead) - behind) * supersampling, p)};
+}
+
+}  // namespace cube4::golden

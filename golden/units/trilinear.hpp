@@ -1,0 +1,31 @@
+// Interpolation unit: linear interpolation in x, then y, then z (Cube-4's
+// SFG order), each step rounded back to the sample width.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "golden/fixed.hpp"
+
+namespace cube4::golden {
+
+// a + (b - a) * w / 2^W, rounded half up; w in [0, 2^W] (both ends return a
+// voxel exactly). The result lies between a and b, so it never needs
+// saturation and keeps the width of its inputs.
+constexpr int64_t lerp(int64_t a, int64_t b, int64_t w, int weight_bits) {
+  return a + round_shift((b - a) * w, weight_bits);
+}
+
+constexpr int64_t bilerp(int64_t v00, int64_t v10, int64_t v01, int64_t v11,
+                         int64_t wx, int64_t wy, int weight_bits) {
+  return lerp(lerp(v00, v10, wx, weight_bits), lerp(v01, v11, wx, weight_bits), wy, weight_bits);
+}
+
+// v[i] is the voxel at (x + (i & 1), y + (i >> 1 & 1), z + (i >> 2)).
+constexpr uint32_t trilinear(const std::array<uint32_t, 8>& v, uint32_t wx, uint32_t wy,
+                             uint32_t wz, int weight_bits) {
+  const int64_t front = bilerp(v[0], v[1], v[2], v[3], wx, wy, weight_bits);
+  const int64_t back = bilerp(v[4], v[5], v[6], v[7], wx, wy, weight_bits);
+  return static_cast<uint32_t>(lerp(front, back, wz, weight_bits));
+}
+
+}  // namespace cube4::golden
