@@ -1,1 +1,713 @@
-// placeholder: being written
+// Scene JSON → Scene. Every key is read through Node / ObjectReader, so each
+// error names the file, the key path ("lights[1].direction") and the value,
+// and a key nobody asked for is an error rather than a silently ignored typo.
+#include "golden/scene_io.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "golden/errors.hpp"
+#include "golden/volume_io.hpp"
+
+namespace cube4::golden {
+namespace {
+
+using json = nlohmann::json;
+
+// An axis the scene does not crop keeps every voxel, whatever the volume's size.
+constexpr int kWholeAxis = 1 << 30;
+constexpr size_t kMaxLights = 16;
+
+std::string fmt(double x) {
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+// Values go into one-line messages: long arrays are cut short.
+std::string show(const json& v) {
+  std::string s = v.dump();
+  constexpr size_t kMax = 60;
+  if (s.size() > kMax) s = s.substr(0, kMax - 3) + "...";
+  return s;
+}
+
+std::string file_prefix(const std::string& file) {
+  return (file.empty() ? std::string("scene") : file) + ": ";
+}
+
+std::string quoted_path(const std::string& path) {
+  return path.empty() ? std::string("the scene") : "\"" + path + "\"";
+}
+
+// `shown` is the value as the message shows it.
+[[noreturn]] void fail_value(const std::string& file, const std::string& path,
+                             const std::string& shown, const std::string& problem) {
+  throw InputError(file_prefix(file) + quoted_path(path) + " = " + shown + " " + problem);
+}
+
+[[noreturn]] void fail_missing(const std::string& file, const std::string& path,
+                               const std::string& why) {
+  throw InputError(file_prefix(file) + quoted_path(path) + " is missing; " + why);
+}
+
+std::string join_quoted(std::initializer_list<const char*> words) {
+  std::string out;
+  for (const char* w : words) out += (out.empty() ? "\"" : ", \"") + std::string(w) + "\"";
+  return out;
+}
+
+// One JSON value and where it sits in the scene, with checked conversions.
+class Node {
+ public:
+  Node(const json& v, std::string path, const std::string& file)
+      : v_(&v), path_(std::move(path)), file_(&file) {}
+
+  const json& value() const { return *v_; }
+  const std::string& path() const { return path_; }
+  const std::string& file() const { return *file_; }
+
+  [[noreturn]] void fail(const std::string& problem) const {
+    fail_value(*file_, path_, show(*v_), problem);
+  }
+
+  Node member(const std::string& key, const json& v) const {
+    return Node(v, path_.empty() ? key : path_ + "." + key, *file_);
+  }
+  Node element(size_t i) const {
+    return Node((*v_)[i], path_ + "[" + std::to_string(i) + "]", *file_);
+  }
+
+  double number() const {
+    if (!v_->is_number()) fail("should be a number");
+    const double x = v_->get<double>();
+    if (!std::isfinite(x)) fail("should be a finite number");
+    return x;
+  }
+  double number_in(double lo, double hi) const {
+    const double x = number();
+    if (x < lo || x > hi) fail("is out of range " + fmt(lo) + ".." + fmt(hi));
+    return x;
+  }
+  double at_least(double lo) const {
+    const double x = number();
+    if (x < lo) fail("should be >= " + fmt(lo));
+    return x;
+  }
+  double positive() const {
+    const double x = number();
+    if (x <= 0) fail("should be > 0");
+    return x;
+  }
+
+  // Integral floats (2.0) are accepted: JSON writers do not always keep the
+  // distinction, and the value is unambiguous.
+  int64_t integer(int64_t lo, int64_t hi) const {
+    int64_t x = 0;
+    if (v_->is_number_unsigned()) {
+      const uint64_t u = v_->get<uint64_t>();
+      x = u > uint64_t(std::numeric_limits<int64_t>::max()) ? std::numeric_limits<int64_t>::max()
+                                                            : int64_t(u);
+    } else if (v_->is_number_integer()) {
+      x = v_->get<int64_t>();
+    } else if (v_->is_number_float() && is_integral(v_->get<double>())) {
+      x = int64_t(v_->get<double>());
+    } else {
+      fail("should be an integer");
+    }
+    if (x < lo || x > hi) fail("is out of range " + std::to_string(lo) + ".." + std::to_string(hi));
+    return x;
+  }
+  int int_in(int lo, int hi) const { return int(integer(lo, hi)); }
+
+  bool boolean() const {
+    if (!v_->is_boolean()) fail("should be true or false");
+    return v_->get<bool>();
+  }
+  std::string string() const {
+    if (!v_->is_string()) fail("should be a string");
+    return v_->get<std::string>();
+  }
+  std::string one_of(std::initializer_list<const char*> choices) const {
+    const std::string s = string();
+    for (const char* c : choices)
+      if (s == c) return s;
+    fail("is not one of " + join_quoted(choices));
+  }
+
+  // The elements of an array of min..max entries.
+  std::vector<Node> elements(size_t min, size_t max) const {
+    if (!v_->is_array()) fail("should be an array");
+    const size_t n = v_->size();
+    if (n < min || n > max) {
+      if (min == max) fail("should have " + std::to_string(min) + " entries, not " + std::to_string(n));
+      fail("has " + std::to_string(n) + " entries; " + std::to_string(min) + ".." +
+           std::to_string(max) + " are allowed");
+    }
+    std::vector<Node> out;
+    for (size_t i = 0; i < n; ++i) out.push_back(element(i));
+    return out;
+  }
+
+  Vec3 vec3() const {
+    const auto e = elements(3, 3);
+    return {e[0].number(), e[1].number(), e[2].number()};
+  }
+  Vec3 vec3_in(double lo, double hi) const {
+    const auto e = elements(3, 3);
+    return {e[0].number_in(lo, hi), e[1].number_in(lo, hi), e[2].number_in(lo, hi)};
+  }
+  Vec3 positive_vec3() const {
+    const auto e = elements(3, 3);
+    return {e[0].positive(), e[1].positive(), e[2].positive()};
+  }
+  // Directions: any length but zero.
+  Vec3 direction() const {
+    const Vec3 v = vec3();
+    if (v[0] == 0 && v[1] == 0 && v[2] == 0) fail("is not a direction (all zero)");
+    return v;
+  }
+  std::array<int, 3> int3(int lo, int hi) const {
+    const auto e = elements(3, 3);
+    return {e[0].int_in(lo, hi), e[1].int_in(lo, hi), e[2].int_in(lo, hi)};
+  }
+
+ private:
+  static bool is_integral(double x) {
+    return std::isfinite(x) && std::floor(x) == x && std::fabs(x) < 9.0e18;
+  }
+
+  const json* v_;
+  std::string path_;
+  const std::string* file_;
+};
+
+// Walks one JSON object: hands out members by name, remembers which names
+// were asked for, and rejects every other key once the caller is done.
+class ObjectReader {
+ public:
+  explicit ObjectReader(const Node& n) : node_(n) {
+    if (!n.value().is_object()) n.fail("should be an object");
+  }
+
+  const Node& node() const { return node_; }
+
+  std::optional<Node> get(const std::string& key) {
+    known_.push_back(key);
+    const auto it = node_.value().find(key);
+    if (it == node_.value().end()) return std::nullopt;
+    return node_.member(key, *it);
+  }
+
+  void reject_unknown() const {
+    for (const auto& [key, value] : node_.value().items()) {
+      if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
+      const std::string path = node_.path().empty() ? key : node_.path() + "." + key;
+      throw InputError(file_prefix(node_.file()) + "unknown key \"" + path + "\" = " + show(value) +
+                       " (expected one of: " + known_list() + ")");
+    }
+  }
+
+  [[noreturn]] void fail_missing(const std::string& key, const std::string& why) const {
+    golden::fail_missing(node_.file(), node_.path().empty() ? key : node_.path() + "." + key, why);
+  }
+
+ private:
+  std::string known_list() const {
+    std::string out;
+    for (const auto& k : known_) out += (out.empty() ? "" : ", ") + k;
+    return out;
+  }
+
+  Node node_;
+  std::vector<std::string> known_;
+};
+
+// ---- JSON text ------------------------------------------------------------
+
+// nlohmann keeps the last of two equal keys; a duplicate is almost always a
+// copy-and-paste slip, so it is an error, reported with its key path.
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(const std::string& file) : file_(file) {}
+
+  bool operator()(int, json::parse_event_t event, json& parsed) {
+    using E = json::parse_event_t;
+    switch (event) {
+      case E::object_start: frames_.push_back({false, 0, "", {}}); break;
+      case E::array_start: frames_.push_back({true, 0, "", {}}); break;
+      case E::key: on_key(parsed.get<std::string>()); break;
+      case E::object_end:
+      case E::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case E::value: element_done(); break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool is_array;
+    size_t index;
+    std::string key;
+    std::set<std::string> keys;
+  };
+
+  void on_key(const std::string& key) {
+    Frame& f = frames_.back();
+    f.key = key;
+    if (!f.keys.insert(key).second)
+      throw InputError(file_prefix(file_) + "duplicate key \"" + path() + "\"");
+  }
+  void element_done() {
+    if (!frames_.empty() && frames_.back().is_array) ++frames_.back().index;
+  }
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_) {
+      if (f.is_array) p += "[" + std::to_string(f.index) + "]";
+      else p += (p.empty() ? "" : ".") + f.key;
+    }
+    return p;
+  }
+
+  const std::string& file_;
+  std::vector<Frame> frames_;
+};
+
+json parse_json(const std::string& text, const std::string& file) {
+  try {
+    return json::parse(text, DuplicateKeyCheck(file));
+  } catch (const json::parse_error& e) {
+    // Drop nlohmann's "[json.exception.parse_error.101] " tag, keep its
+    // "parse error at line L, column C: ..." and add the byte offset.
+    std::string what = e.what();
+    const auto tag_end = what.find("] ");
+    if (tag_end != std::string::npos) what = what.substr(tag_end + 2);
+    throw InputError(file_prefix(file) + "invalid JSON: " + what + " (byte " +
+                     std::to_string(e.byte) + ")");
+  }
+}
+
+// ---- volume ---------------------------------------------------------------
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string format_from_extension(std::string path) {
+  std::transform(path.begin(), path.end(), path.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  // Some installs gzip documentation examples (brainsmall.den.gz); the DEN loader reads both.
+  if (ends_with(path, ".den") || ends_with(path, ".den.gz")) return "den";
+  if (ends_with(path, ".raw")) return "raw";
+  if (ends_with(path, ".nii") || ends_with(path, ".nii.gz")) return "nifti";
+  return "";
+}
+
+void read_raw_layout(ObjectReader& r, VolumeSource& v) {
+  const auto dim = r.get("dim");
+  if (dim) v.dim = dim->int3(1, 4096);
+  if (auto n = r.get("type"))
+    v.type = n->one_of({"uint8", "uint12", "uint16", "int16", "uint32", "int32", "float32", "float64"});
+  if (auto n = r.get("endian")) v.endian = n->one_of({"little", "big"});
+  if (auto n = r.get("header")) v.header_bytes = uint64_t(n->integer(0, std::numeric_limits<int64_t>::max()));
+  r.reject_unknown();
+  if (!dim) r.fail_missing("dim", "raw volumes need their size [x, y, z]");
+}
+
+void read_file_source(ObjectReader& r, const Node& file, VolumeSource& v) {
+  v.path = file.string();
+  if (v.path.empty()) file.fail("should name a file");
+  if (auto f = r.get("format")) {
+    v.kind = f->one_of({"den", "raw", "nifti"});
+  } else {
+    v.kind = format_from_extension(v.path);
+    if (v.kind.empty())
+      file.fail("has no known extension (.den, .den.gz, .raw, .nii, .nii.gz); give \"volume.format\"");
+  }
+  if (v.kind == "raw") read_raw_layout(r, v);
+}
+
+// Only the keys of the chosen synthetic kind are read, so a key of another
+// kind ("radius" on "noise") is reported as unknown.
+void read_synthetic_source(ObjectReader& r, const Node& kind, VolumeSource& v) {
+  v.kind = kind.one_of({"sphere", "field", "noise", "constant", "single_voxel"});
+  if (auto n = r.get("size")) v.size = n->int3(1, 1024);
+  if (v.kind == "sphere") {
+    if (auto n = r.get("radius")) v.radius = n->positive();
+    if (auto n = r.get("center")) v.center = n->vec3();
+  } else if (v.kind == "field") {
+    if (auto n = r.get("field"))
+      v.field = n->one_of({"marschner_lobb", "gaussian", "ramp_x", "ramp_y", "ramp_z"});
+  } else if (v.kind == "noise") {
+    if (auto n = r.get("seed")) v.seed = uint32_t(n->integer(0, std::numeric_limits<uint32_t>::max()));
+  } else {
+    if (auto n = r.get("value")) v.value = n->number_in(0, 1);
+    if (v.kind == "single_voxel")
+      if (auto n = r.get("at")) v.at = n->int3(0, 1023);
+  }
+}
+
+Quantisation read_map(const Node& n) {
+  Quantisation q;
+  if (n.value().is_string()) {
+    q.mode = n.one_of({"full", "minmax"}) == "full" ? Quantisation::Mode::Full
+                                                     : Quantisation::Mode::MinMax;
+    return q;
+  }
+  if (!n.value().is_array()) n.fail("should be \"full\", \"minmax\" or [lo, hi]");
+  const auto e = n.elements(2, 2);
+  q.mode = Quantisation::Mode::Window;
+  q.lo = e[0].number();
+  q.hi = e[1].number();
+  if (q.hi <= q.lo) e[1].fail("should be greater than lo = " + fmt(q.lo));
+  return q;
+}
+
+void read_volume(const Node& n, VolumeSource& v) {
+  ObjectReader r(n);
+  const auto file = r.get("file");
+  const auto synthetic = r.get("synthetic");
+  if (file && synthetic) n.fail("gives both \"file\" and \"synthetic\"; give one");
+  if (file) read_file_source(r, *file, v);
+  if (synthetic) read_synthetic_source(r, *synthetic, v);
+  if (auto s = r.get("spacing")) v.spacing = s->positive_vec3();
+  if (auto m = r.get("map")) v.quantisation = read_map(*m);
+  r.reject_unknown();
+  if (!file && !synthetic) n.fail("needs \"file\" or \"synthetic\"");
+}
+
+// ---- view and output ------------------------------------------------------
+
+void read_view(const Node& n, View& v) {
+  ObjectReader r(n);
+  const auto rotate = r.get("rotate");
+  const auto direction = r.get("direction");
+  const auto up = r.get("up");
+  const auto offset = r.get("ray_offset");
+  r.reject_unknown();
+  if (rotate && direction) n.fail("gives both \"rotate\" and \"direction\"; give one");
+  if (up && !direction) up->fail("needs \"view.direction\" (it does not apply to \"rotate\")");
+  if (rotate) v.rotate = rotate->vec3();
+  if (direction) v.direction = direction->direction();
+  if (up) v.up = up->direction();
+  if (offset) {
+    const auto e = offset->elements(2, 2);
+    for (size_t i = 0; i < 2; ++i) {
+      v.ray_offset[i] = e[i].number();
+      if (v.ray_offset[i] < 0 || v.ray_offset[i] >= 1) e[i].fail("is out of range [0, 1)");
+    }
+  }
+}
+
+void read_output(const Node& n, Scene& s) {
+  ObjectReader r(n);
+  if (auto w = r.get("width")) s.width = w->int_in(1, 8192);
+  if (auto h = r.get("height")) s.height = h->int_in(1, 8192);
+  r.reject_unknown();
+}
+
+// ---- transfer functions ---------------------------------------------------
+
+// Piecewise-linear tables: rows of `width` numbers in [0,1], the first (x)
+// strictly increasing, at least one row.
+std::vector<std::vector<double>> read_table(const Node& n, size_t width) {
+  std::vector<std::vector<double>> rows;
+  for (const Node& row : n.elements(1, std::numeric_limits<size_t>::max())) {
+    std::vector<double> values;
+    for (const Node& cell : row.elements(width, width)) values.push_back(cell.number_in(0, 1));
+    if (!rows.empty() && values[0] <= rows.back()[0])
+      row.element(0).fail("is not greater than the x before it (" + fmt(rows.back()[0]) +
+                          "); x must increase strictly");
+    rows.push_back(std::move(values));
+  }
+  return rows;
+}
+
+std::vector<ScalarPoint> read_scalar_table(const Node& n) {
+  std::vector<ScalarPoint> out;
+  for (const auto& row : read_table(n, 2)) out.push_back({row[0], row[1]});
+  return out;
+}
+
+void read_transfer(const Node& n, Scene& s) {
+  ObjectReader r(n);
+  if (auto c = r.get("color"))
+    for (const auto& row : read_table(*c, 4)) s.color.push_back({row[0], {row[1], row[2], row[3]}});
+  if (auto o = r.get("opacity")) s.opacity = read_scalar_table(*o);
+  r.reject_unknown();
+}
+
+// ---- lighting -------------------------------------------------------------
+
+Light read_light(const Node& n) {
+  ObjectReader r(n);
+  Light l;
+  const auto direction = r.get("direction");
+  if (direction) l.direction = direction->direction();
+  if (auto i = r.get("intensity")) l.intensity = i->at_least(0);
+  r.reject_unknown();
+  if (!direction) r.fail_missing("direction", "every light needs one");
+  return l;
+}
+
+void read_lights(const Node& n, Scene& s) {
+  // An empty list would be silently replaced by the default light.
+  if (n.value().is_array() && n.value().empty())
+    n.fail("has no lights; give at least one, or \"shading\": false for none");
+  for (const Node& l : n.elements(1, kMaxLights)) s.lights.push_back(read_light(l));
+}
+
+void read_material(const Node& n, Material& m) {
+  ObjectReader r(n);
+  if (auto k = r.get("ke")) m.ke = k->number_in(0, 3.99);
+  if (auto k = r.get("kd")) m.kd = k->number_in(0, 3.99);
+  if (auto k = r.get("ks")) m.ks = k->number_in(0, 3.99);
+  if (auto c = r.get("specular_color")) m.specular_color = c->vec3_in(0, 1);
+  if (auto e = r.get("exponent")) m.exponent = e->number_in(1, 128);
+  r.reject_unknown();
+}
+
+void read_gradient_modulation(const Node& n, GradientModulation& gm) {
+  ObjectReader r(n);
+  if (auto b = r.get("opacity")) gm.opacity = b->boolean();
+  if (auto b = r.get("diffuse")) gm.diffuse = b->boolean();
+  if (auto b = r.get("specular")) gm.specular = b->boolean();
+  r.reject_unknown();
+}
+
+Blend read_blend(const Node& n) {
+  const std::string b = n.one_of({"composite", "mip", "minip"});
+  return b == "composite" ? Blend::Composite : b == "mip" ? Blend::Mip : Blend::MinIp;
+}
+
+// ---- cropping and cut plane -----------------------------------------------
+
+std::array<int, 2> read_slab(const Node& n) {
+  const auto e = n.elements(2, 2);
+  const int lo = e[0].int_in(0, kWholeAxis);
+  const int hi = e[1].int_in(0, kWholeAxis);
+  if (hi < lo) e[1].fail("is less than lo = " + std::to_string(lo));
+  return {lo, hi};
+}
+
+uint8_t read_combine(const Node& n) {
+  const std::string c = n.one_of({"intersection", "union", "cross"});
+  if (c == "intersection") return 0x80;  // in all three slabs
+  if (c == "union") return 0xFE;         // in any slab
+  return 0xE8;                           // in at least two slabs
+}
+
+void read_cropping(const Node& n, Cropping& c) {
+  ObjectReader r(n);
+  c.enabled = true;
+  const char* axes[] = {"x", "y", "z"};
+  for (size_t i = 0; i < 3; ++i) {
+    const auto a = r.get(axes[i]);
+    c.slab[i] = a ? read_slab(*a) : std::array<int, 2>{0, kWholeAxis};
+  }
+  const auto combine = r.get("combine");
+  const auto mask = r.get("mask");
+  const auto invert = r.get("invert");
+  r.reject_unknown();
+  if (combine && mask) n.fail("gives both \"combine\" and \"mask\"; give one");
+  if (combine) c.mask = read_combine(*combine);
+  if (mask) c.mask = uint8_t(mask->int_in(0, 255));
+  if (invert && invert->boolean()) c.mask = uint8_t(~c.mask);
+}
+
+void read_cut_plane(const Node& n, CutPlane& c) {
+  ObjectReader r(n);
+  c.enabled = true;
+  if (auto v = r.get("normal")) c.normal = v->direction();
+  if (auto v = r.get("dmin")) c.dmin = v->number();
+  if (auto v = r.get("dmax")) c.dmax = v->number();
+  if (auto v = r.get("falloff")) c.falloff = v->at_least(0);
+  if (auto v = r.get("keep")) c.keep_inside = v->one_of({"inside", "outside"}) == "inside";
+  r.reject_unknown();
+}
+
+// ---- precision ------------------------------------------------------------
+
+struct PrecisionField {
+  const char* key;
+  int Precision::*member;
+  int lo, hi;  // the widest range; finish_scene narrows the dependent ones
+};
+
+constexpr PrecisionField kPrecisionFields[] = {
+    {"voxel_bits", &Precision::voxel_bits, 8, 16},
+    {"weight_bits", &Precision::weight_bits, 2, 14},
+    {"dda_frac_bits", &Precision::dda_frac_bits, 2, 30},
+    {"gradient_bits", &Precision::gradient_bits, 4, 16},
+    {"gradient_shift", &Precision::gradient_shift, 0, 16},
+    {"magnitude_bits", &Precision::magnitude_bits, 4, 16},
+    {"nr_iterations", &Precision::nr_iterations, 0, 8},
+    {"color_bits", &Precision::color_bits, 4, 8},
+    {"alpha_bits", &Precision::alpha_bits, 8, 16},
+    {"gmlut_bits", &Precision::gmlut_bits, 4, 16},
+    {"map_face_res", &Precision::map_face_res, 2, 64},
+    {"map_bits", &Precision::map_bits, 8, 32},
+    {"map_frac_bits", &Precision::map_frac_bits, 0, 31},
+    {"coef_bits", &Precision::coef_bits, 4, 16},
+    {"coef_frac_bits", &Precision::coef_frac_bits, 0, 15},
+    {"eye_bits", &Precision::eye_bits, 4, 16},
+    {"cut_bits", &Precision::cut_bits, 16, 40},
+};
+
+void read_precision(const Node& n, Precision& p) {
+  ObjectReader r(n);
+  for (const auto& f : kPrecisionFields)
+    if (auto v = r.get(f.key)) p.*f.member = v->int_in(f.lo, f.hi);
+  r.reject_unknown();
+}
+
+// ---- cross-field checks (finish_scene) ------------------------------------
+
+void check_int(const Scene& s, const std::string& path, int x, int lo, int hi, const std::string& why) {
+  if (x < lo || x > hi)
+    fail_value(s.file, path, std::to_string(x), "is out of range " + std::to_string(lo) + ".." + std::to_string(hi) + why);
+}
+
+void check_precision(const Scene& s) {
+  const Precision& p = s.precision;
+  for (const auto& f : kPrecisionFields)
+    check_int(s, std::string("precision.") + f.key, p.*f.member, f.lo, f.hi, "");
+  check_int(s, "precision.dda_frac_bits", p.dda_frac_bits, p.weight_bits, 30,
+            " (at least \"precision.weight_bits\")");
+  check_int(s, "precision.map_frac_bits", p.map_frac_bits, 0, p.map_bits - 1,
+            " (below \"precision.map_bits\")");
+  check_int(s, "precision.coef_frac_bits", p.coef_frac_bits, 0, p.coef_bits - 1,
+            " (below \"precision.coef_bits\")");
+}
+
+// Formatted like the JSON the user wrote ([0,0,-3], not [0.0,0.0,-3.0]).
+template <class Array>
+std::string show_array(const Array& v) {
+  std::string out;
+  for (const auto& x : v) out += (out.empty() ? "[" : ",") + fmt(x);
+  return out + "]";
+}
+
+void check_view(const Scene& s) {
+  if (!s.view.direction) return;
+  const Vec3& d = *s.view.direction;
+  const Vec3& u = s.view.up;
+  const double dd = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  const double uu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  if (dd == 0) fail_value(s.file, "view.direction", show_array(d), "is not a direction (all zero)");
+  const Vec3 c{d[1] * u[2] - d[2] * u[1], d[2] * u[0] - d[0] * u[2], d[0] * u[1] - d[1] * u[0]};
+  const double cc = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  // sin(angle) below 1e-6: no usable image "up" is left after projection.
+  if (!(cc > 1e-6 * dd * uu))
+    fail_value(s.file, "view.up", show_array(u),
+               "is parallel to \"view.direction\" = " + show_array(d) + "; give another up");
+}
+
+void check_volume(const Scene& s) {
+  const VolumeSource& v = s.volume;
+  if (v.kind != "single_voxel") return;
+  for (size_t i = 0; i < 3; ++i)
+    if (v.at[i] < 0 || v.at[i] >= v.size[i])
+      fail_value(s.file, "volume.at", show_array(v.at),
+                 "lies outside \"volume.size\" = " + show_array(v.size));
+}
+
+void check_cut_plane(const Scene& s) {
+  if (s.cut.enabled && s.cut.dmax < s.cut.dmin)
+    fail_value(s.file, "cut_plane.dmax", fmt(s.cut.dmax),
+               "is less than \"cut_plane.dmin\" = " + fmt(s.cut.dmin));
+}
+
+void fill_defaults(Scene& s) {
+  if (s.color.empty()) s.color = {{0, {1, 1, 1}}, {1, {1, 1, 1}}};
+  // brainsmall's skin starts near byte 24 (24/255 = 0.094): air stays clear.
+  if (s.opacity.empty()) s.opacity = {{0, 0}, {0.094, 0}, {0.16, 0.6}, {1, 0.8}};
+  if (s.gm_lut.empty()) s.gm_lut = {{0, 0}, {1, 1}};
+  if (s.lights.empty()) s.lights = {Light{{0.3, 0.3, 1}, 1}};
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& json_text, const std::string& file_name) {
+  const json j = parse_json(json_text, file_name);
+  Scene s;
+  s.file = file_name;
+  ObjectReader r(Node(j, "", s.file));
+  const auto volume = r.get("volume");
+  if (volume) read_volume(*volume, s.volume);
+  if (auto n = r.get("view")) read_view(*n, s.view);
+  if (auto n = r.get("output")) read_output(*n, s);
+  if (auto n = r.get("transfer")) read_transfer(*n, s);
+  if (auto n = r.get("gm_lut")) s.gm_lut = read_scalar_table(*n);
+  if (auto n = r.get("lights")) read_lights(*n, s);
+  if (auto n = r.get("material")) read_material(*n, s.material);
+  if (auto n = r.get("shading")) s.shading = n->boolean();
+  if (auto n = r.get("blend")) s.blend = read_blend(*n);
+  if (auto n = r.get("gradient_modulation")) read_gradient_modulation(*n, s.gm);
+  if (auto n = r.get("supersampling")) s.supersampling = n->int_in(1, 8);
+  if (auto n = r.get("cropping")) read_cropping(*n, s.cropping);
+  if (auto n = r.get("cut_plane")) read_cut_plane(*n, s.cut);
+  if (auto n = r.get("pipelines")) s.pipelines = n->int_in(1, 256);
+  if (auto n = r.get("clock_mhz")) {
+    s.clock_mhz = n->number();
+    if (s.clock_mhz <= 0 || s.clock_mhz > 10000) n->fail("is out of range (0, 10000]");
+  }
+  if (auto n = r.get("precision")) read_precision(*n, s.precision);
+  // Unknown keys first: a misspelt "volume" should be reported as such.
+  r.reject_unknown();
+  if (!volume) r.fail_missing("volume", "every scene needs one (\"file\" or \"synthetic\")");
+  finish_scene(s);
+  return s;
+}
+
+Scene load_scene(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw InputError(path + ": cannot read the scene: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the scene: " + std::strerror(errno));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read the scene: " + std::strerror(errno));
+  return parse_scene(text.str(), path);
+}
+
+Scene default_scene() {
+  Scene s;
+  s.volume.kind = "den";
+  s.volume.path = default_brainsmall_path();
+  s.view.rotate = {20, 60, 180};  // a three-quarter view of the face
+  finish_scene(s);
+  return s;
+}
+
+void finish_scene(Scene& s) {
+  fill_defaults(s);
+  check_precision(s);
+  check_view(s);
+  check_volume(s);
+  check_cut_plane(s);
+}
+
+}  // namespace cube4::golden
