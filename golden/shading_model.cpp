@@ -1,1 +1,104 @@
-// placeholder: being written
+#include "golden/shading_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "golden/fixed.hpp"
+
+namespace cube4::golden {
+namespace {
+
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Vec3 unit_or_zero(const Vec3& v) {
+  const double n = std::sqrt(dot(v, v));
+  if (n == 0) return {0, 0, 0};
+  return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+// Index of the segment containing x and the position within it.
+template <class P>
+std::pair<size_t, double> locate(const std::vector<P>& pts, double x) {
+  if (x <= pts.front().x) return {0, 0.0};
+  if (x >= pts.back().x) return {pts.size() - 1, 0.0};
+  size_t i = 1;
+  while (pts[i].x < x) ++i;
+  return {i - 1, (x - pts[i - 1].x) / (pts[i].x - pts[i - 1].x)};
+}
+
+}  // namespace
+
+double eval_piecewise(const std::vector<ScalarPoint>& pts, double x) {
+  if (pts.empty()) return 0;
+  const auto [i, t] = locate(pts, x);
+  if (t == 0) return pts[i].y;
+  return pts[i].y + t * (pts[i + 1].y - pts[i].y);
+}
+
+Vec3 eval_color(const std::vector<ColorPoint>& pts, double x) {
+  if (pts.empty()) return {1, 1, 1};
+  const auto [i, t] = locate(pts, x);
+  if (t == 0) return pts[i].rgb;
+  Vec3 c{};
+  for (int k = 0; k < 3; ++k) c[k] = pts[i].rgb[k] + t * (pts[i + 1].rgb[k] - pts[i].rgb[k]);
+  return c;
+}
+
+double correct_alpha(double alpha, double ratio) {
+  if (alpha >= 1) return 1;
+  return 1 - std::pow(1 - alpha, ratio);
+}
+
+double sample_step_ratio(const ViewFactorisation& f, int supersampling) {
+  const double sx = f.shear_x * f.spacing[f.perm[0]];
+  const double sy = f.shear_y * f.spacing[f.perm[1]];
+  const double sz = f.spacing[f.perm[2]];
+  const double unit = std::min({f.spacing[0], f.spacing[1], f.spacing[2]});
+  return std::sqrt(sx * sx + sy * sy + sz * sz) / supersampling / unit;
+}
+
+double max_gradient_magnitude(const Precision& p) {
+  return static_cast<double>(max_signed(p.gradient_bits)) * std::sqrt(3.0);
+}
+
+double Lighting::diffuse(const Vec3& n) const {
+  double sum = 0;
+  for (const auto& [l, i] : lights) sum += i * std::max(0.0, dot(n, l));
+  return sum;
+}
+
+double Lighting::specular(const Vec3& r) const {
+  double sum = 0;
+  for (const auto& [l, i] : lights) {
+    const double c = dot(r, l);
+    if (c > 0) sum += i * std::pow(c, exponent);
+  }
+  return sum;
+}
+
+Lighting lighting_of(const Scene& s, const ViewFactorisation& f) {
+  Lighting L;
+  L.exponent = s.material.exponent;
+  for (const Light& light : s.lights) {
+    // World to object is the transpose of the rotation.
+    Vec3 o{};
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) o[i] += f.object_to_world[k][i] * light.direction[k];
+    L.lights.push_back({unit_or_zero(o), light.intensity});
+  }
+  return L;
+}
+
+Vec3 normal_from_permuted_gradient(const ViewFactorisation& f, const Vec3& g_perm) {
+  const Vec3 g_obj = f.direction_to_object(g_perm);
+  // A gradient per voxel becomes per physical unit by dividing by the spacing.
+  const Vec3 g_phys{g_obj[0] / f.spacing[0], g_obj[1] / f.spacing[1], g_obj[2] / f.spacing[2]};
+  const Vec3 u = unit_or_zero(g_phys);
+  return {-u[0], -u[1], -u[2]};
+}
+
+Vec3 object_direction(const ViewFactorisation& f, const Vec3& d_perm) {
+  return unit_or_zero(f.direction_to_object(d_perm));
+}
+
+}  // namespace cube4::golden

@@ -1,1 +1,157 @@
-// placeholder: being written
+#include "golden/view.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "golden/errors.hpp"
+
+namespace cube4::golden {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Mat3 multiply(const Mat3& a, const Mat3& b) {
+  Mat3 r{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) r[i][j] += a[i][k] * b[k][j];
+  return r;
+}
+
+Mat3 axis_rotation(int axis, double degrees) {
+  const double c = std::cos(degrees * kPi / 180), s = std::sin(degrees * kPi / 180);
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  Mat3 r{};
+  r[axis][axis] = 1;
+  r[a][a] = c; r[a][b] = -s;
+  r[b][a] = s; r[b][b] = c;
+  return r;
+}
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 normalised(const Vec3& v) {
+  const double n = std::sqrt(dot(v, v));
+  return {v[0] / n, v[1] / n, v[2] / n};
+}
+
+}  // namespace
+
+Affine2 Affine2::inverse() const {
+  const double det = m[0] * m[4] - m[1] * m[3];
+  Affine2 r;
+  r.m = {m[4] / det, -m[1] / det, 0, -m[3] / det, m[0] / det, 0};
+  r.m[2] = -(r.m[0] * m[2] + r.m[1] * m[5]);
+  r.m[5] = -(r.m[3] * m[2] + r.m[4] * m[5]);
+  return r;
+}
+
+// Rows of the result are the world axes in object coordinates.
+Mat3 rotation_of(const View& v) {
+  if (v.direction) {
+    const Vec3 z = normalised({-(*v.direction)[0], -(*v.direction)[1], -(*v.direction)[2]});
+    Vec3 x = cross(v.up, z);
+    if (dot(x, x) < 1e-20) throw InputError("view.up is parallel to view.direction");
+    x = normalised(x);
+    return {x, cross(z, x), z};
+  }
+  // Object to world: about x first, then y, then z.
+  return multiply(axis_rotation(2, v.rotate[2]),
+                  multiply(axis_rotation(1, v.rotate[1]), axis_rotation(0, v.rotate[0])));
+}
+
+ViewFactorisation factorise_view(const Scene& s, const Volume& vol) {
+  ViewFactorisation f;
+  f.object_to_world = rotation_of(s.view);
+  f.spacing = vol.spacing;
+  f.image_width = s.width;
+  f.image_height = s.height;
+  for (int i = 0; i < 3; ++i) f.view_dir_object[i] = -f.object_to_world[2][i];
+  for (int i = 0; i < 3; ++i) f.view_dir_voxel[i] = f.view_dir_object[i] / vol.spacing[i];
+
+  // The principal axis is chosen in voxel-index space, where the rays step:
+  // that is what keeps the shear within one voxel per slice for anisotropic
+  // spacing (choosing it in isotropic space would not).
+  const Vec3& d = f.view_dir_voxel;
+  int c = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(d[i]) > std::fabs(d[c])) c = i;
+  f.perm = {(c + 1) % 3, (c + 2) % 3, c};
+  Vec3 dp{};
+  for (int i = 0; i < 3; ++i) {
+    const double di = d[f.perm[i]];
+    f.flip[i] = di < 0;
+    dp[i] = std::fabs(di);
+    f.pdim[i] = vol.dim[f.perm[i]];
+  }
+  f.shear_x = std::min(1.0, dp[0] / dp[2]);
+  f.shear_y = std::min(1.0, dp[1] / dp[2]);
+  const Vec3 e = normalised(dp);
+  f.eye_perm = {-e[0], -e[1], -e[2]};
+
+  double diag2 = 0;
+  for (int i = 0; i < 3; ++i) diag2 += std::pow(vol.dim[i] * vol.spacing[i], 2);
+  f.pixel_size = std::sqrt(diag2) / std::min(s.width, s.height);
+  return f;
+}
+
+Vec3 ViewFactorisation::to_permuted(const Vec3& o) const {
+  Vec3 p{};
+  for (int i = 0; i < 3; ++i) {
+    const double v = o[perm[i]];
+    p[i] = flip[i] ? (pdim[i] - 1) - v : v;
+  }
+  return p;
+}
+
+Vec3 ViewFactorisation::to_object(const Vec3& p) const {
+  Vec3 o{};
+  for (int i = 0; i < 3; ++i) o[perm[i]] = flip[i] ? (pdim[i] - 1) - p[i] : p[i];
+  return o;
+}
+
+Vec3 ViewFactorisation::direction_to_object(const Vec3& p) const {
+  Vec3 o{};
+  for (int i = 0; i < 3; ++i) o[perm[i]] = flip[i] ? -p[i] : p[i];
+  return o;
+}
+
+namespace {
+// Object voxel size per axis in permuted order is not needed; the volume
+// centre in object voxel coordinates is.
+Vec3 centre_of(const ViewFactorisation& f) {
+  Vec3 c{};
+  for (int i = 0; i < 3; ++i) c[f.perm[i]] = (f.pdim[i] - 1) / 2.0;
+  return c;
+}
+}  // namespace
+
+std::array<double, 2> ViewFactorisation::image_of(const Vec3& ov) const {
+  const Vec3 c = centre_of(*this);
+  Vec3 phys{};
+  for (int i = 0; i < 3; ++i) phys[i] = (ov[i] - c[i]) * spacing[i];
+  const double wx = dot(object_to_world[0], phys), wy = dot(object_to_world[1], phys);
+  return {image_width / 2.0 - 0.5 + wx / pixel_size, image_height / 2.0 - 0.5 - wy / pixel_size};
+}
+
+Vec3 ViewFactorisation::object_of_image(double X, double Y) const {
+  const double wx = (X - image_width / 2.0 + 0.5) * pixel_size;
+  const double wy = -(Y - image_height / 2.0 + 0.5) * pixel_size;
+  const Vec3 c = centre_of(*this);
+  Vec3 o{};
+  for (int i = 0; i < 3; ++i)
+    o[i] = (object_to_world[0][i] * wx + object_to_world[1][i] * wy) / spacing[i] + c[i];
+  return o;
+}
+
+Affine2 ViewFactorisation::base_to_image(double shift_x, double shift_y) const {
+  auto at = [&](double u, double v) { return image_of(to_object({u - shift_x, v - shift_y, 0})); };
+  const auto p0 = at(0, 0), pu = at(1, 0), pv = at(0, 1);
+  Affine2 a;
+  a.m = {pu[0] - p0[0], pv[0] - p0[0], p0[0], pu[1] - p0[1], pv[1] - p0[1], p0[1]};
+  return a;
+}
+
+}  // namespace cube4::golden

@@ -1,1 +1,36 @@
-// placeholder: being written
+// The 2-D warp from base plane to final image (VolumePro's companion
+// graphics card): bilinear resampling, transparent outside the base plane.
+#include <cmath>
+
+#include "golden/renderers.hpp"
+
+namespace cube4::golden {
+
+ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactorisation& f) {
+  const Affine2 to_base = f.base_to_image(shift_x, shift_y).inverse();
+  ImageF out;
+  out.width = f.image_width;
+  out.height = f.image_height;
+  out.rgba.assign(static_cast<size_t>(out.width) * out.height * 4, 0.0f);
+  auto texel = [&](int u, int v, int c) -> float {
+    if (u < 0 || v < 0 || u >= base.width || v >= base.height) return 0.0f;
+    return base.pixel(u, v)[c];
+  };
+  for (int Y = 0; Y < out.height; ++Y)
+    for (int X = 0; X < out.width; ++X) {
+      const auto uv = to_base.apply(X, Y);
+      const double fu = std::floor(uv[0]), fv = std::floor(uv[1]);
+      const int u = static_cast<int>(fu), v = static_cast<int>(fv);
+      if (u < -1 || v < -1 || u >= base.width || v >= base.height) continue;
+      const float tu = static_cast<float>(uv[0] - fu), tv = static_cast<float>(uv[1] - fv);
+      float* px = out.pixel(X, Y);
+      for (int c = 0; c < 4; ++c) {
+        const float a = texel(u, v, c) + tu * (texel(u + 1, v, c) - texel(u, v, c));
+        const float b = texel(u, v + 1, c) + tu * (texel(u + 1, v + 1, c) - texel(u, v + 1, c));
+        px[c] = a + tv * (b - a);
+      }
+    }
+  return out;
+}
+
+}  // namespace cube4::golden

@@ -1,1 +1,163 @@
-int main(){return 0;}
+// The cube4 command: render a scene with a chosen model, or describe what
+// the host driver makes of it. Exit codes: 0 ok, 2 bad input, 1 internal error.
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "golden/errors.hpp"
+#include "golden/host_driver.hpp"
+#include "golden/renderers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+#include "tb/image_io.hpp"
+#include "tb/progress.hpp"
+#include "tb/report.hpp"
+
+namespace {
+
+using namespace cube4;
+using golden::InputError;
+
+struct RenderArgs {
+  std::string scene;
+  std::string model = "fixed";
+  std::string output = "cube4.png";
+  std::string baseplane;
+  std::string report;
+  double reference_step = 0.25;
+  bool quiet = false;
+};
+
+struct Loaded {
+  golden::Scene scene;
+  golden::Volume volume;
+  golden::HostProgram host;
+};
+
+Loaded load(const std::string& scene_path) {
+  Loaded l;
+  l.scene = scene_path.empty() ? golden::default_scene() : golden::load_scene(scene_path);
+  const std::string dir = scene_path.empty() ? "." : std::filesystem::path(scene_path).parent_path().string();
+  l.volume = golden::load_volume(l.scene.volume, l.scene.precision.voxel_bits, dir.empty() ? "." : dir);
+  l.host = golden::program_host(l.scene, l.volume);
+  return l;
+}
+
+nlohmann::json effects_json(const golden::EffectSet& e) { return e.names(); }
+
+int run_render(const RenderArgs& a) {
+  // Outputs are checked before the (possibly long) render, so a typo costs nothing.
+  for (const std::string* p : {&a.output, &a.baseplane}) {
+    if (p->empty()) continue;
+    const std::string ext = std::filesystem::path(*p).extension().string();
+    if (ext != ".png" && ext != ".exr" && ext != ".PNG" && ext != ".EXR")
+      throw InputError("output file '" + *p + "': unsupported extension '" + ext + "' (use .png or .exr)");
+  }
+  if (a.model == "reference" && !a.baseplane.empty())
+    throw InputError("--baseplane: the reference model casts rays from image pixels and has no base plane");
+  if (!(a.reference_step > 0 && a.reference_step <= 4))
+    throw InputError("--reference-step " + std::to_string(a.reference_step) + " is out of range (0, 4]");
+  Loaded l = load(a.scene);
+  tb::ProgressPrinter progress("render " + a.model, !a.quiet);
+  auto cb = [&](double f) { progress(f); };
+  golden::RenderStats stats;
+  golden::ImageF image;
+  std::optional<uint64_t> hash;
+  const auto t0 = std::chrono::steady_clock::now();
+  if (a.model == "fixed") {
+    const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, &stats, cb);
+    hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
+    image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
+    if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp);
+  } else if (a.model == "float") {
+    const golden::BasePlaneF bp = golden::render_float(l.volume, l.scene, l.host.view, &stats, cb);
+    image = golden::warp(bp.image, bp.shift_x, bp.shift_y, l.host.view);
+    if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp.image);
+  } else {
+    golden::ReferenceOptions opt;
+    opt.step = a.reference_step;
+    image = golden::render_reference(l.volume, l.scene, l.host.view, opt, &stats, cb);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  tb::write_image(a.output, image);
+  if (progress.shown() || !a.quiet)
+    std::fprintf(stderr, "cube4: %s model, %llu samples in %.3f s -> %s\n", a.model.c_str(),
+                 static_cast<unsigned long long>(stats.samples), seconds, a.output.c_str());
+  if (!a.report.empty()) {
+    nlohmann::json r = {
+        {"model", a.model},
+        {"scene", a.scene.empty() ? "(default)" : a.scene},
+        {"volume", tb::describe_volume(l.volume)},
+        {"view", tb::describe_view(l.scene, l.host)},
+        {"pipelines", l.scene.pipelines},
+        {"clock_mhz", l.scene.clock_mhz},
+        {"supersampling", l.scene.supersampling},
+        {"samples", stats.samples},
+        {"wall_seconds", seconds},
+        {"samples_per_second", seconds > 0 ? stats.samples / seconds : 0.0},
+        {"effects", effects_json(l.host.effects)},
+        {"output", a.output},
+    };
+    if (a.model == "reference") r["reference_step"] = a.reference_step;
+    if (!a.baseplane.empty()) r["baseplane"] = a.baseplane;
+    if (hash) r["baseplane_hash_fnv1a64"] = tb::hex64(*hash);
+    tb::write_json(a.report, r);
+  }
+  return 0;
+}
+
+int run_info(const std::string& scene) {
+  const Loaded l = load(scene);
+  nlohmann::json j = {
+      {"scene", scene.empty() ? "(default)" : scene},
+      {"volume", tb::describe_volume(l.volume)},
+      {"view", tb::describe_view(l.scene, l.host)},
+      {"effects", effects_json(l.host.effects)},
+      {"registers", tb::describe_registers(l.host.regs)},
+      {"pipelines", l.scene.pipelines},
+      {"clock_mhz", l.scene.clock_mhz},
+  };
+  std::cout << j.dump(2) << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"cube4: cycle-level model of the Cube-4 / VolumePro volume rendering architecture"};
+  app.require_subcommand(1);
+  RenderArgs ra;
+  CLI::App* render = app.add_subcommand("render", "render a scene (default: shaded composite of brainsmall)");
+  render->add_option("scene", ra.scene, "scene JSON file (docs/scene.md)");
+  render->add_option("--model", ra.model, "fixed (bit-exact golden), float, or reference (image-order)")
+      ->check(CLI::IsMember({"fixed", "float", "reference"}));
+  render->add_option("-o,--output", ra.output, "final image, .png or .exr")->capture_default_str();
+  render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact)");
+  render->add_option("--report", ra.report, "write a JSON report");
+  render->add_option("--reference-step", ra.reference_step, "reference model: ray step in voxels")->capture_default_str();
+  render->add_flag("-q,--quiet", ra.quiet, "no progress or summary on stderr");
+  std::string info_scene;
+  CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");
+  info->add_option("scene", info_scene, "scene JSON file (default: the default scene)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    if (*render) return run_render(ra);
+    return run_info(info_scene);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "cube4: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cube4: internal error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,1 +1,90 @@
-// placeholder
+#include "tb/report.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "golden/errors.hpp"
+
+namespace cube4::tb {
+
+uint64_t fnv1a64(const void* data, size_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  uint64_t h = 1469598103934665603ull;
+  for (size_t i = 0; i < bytes; ++i) {
+    h ^= p[i];
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string hex64(uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+nlohmann::json describe_volume(const golden::Volume& v) {
+  return {{"source", v.source}, {"dim", v.dim}, {"spacing", v.spacing}, {"voxel_bits", v.bits}};
+}
+
+nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& h) {
+  const golden::ViewFactorisation& f = h.view;
+  static const char* axis = "xyz";
+  std::string order;
+  for (int i = 0; i < 3; ++i) order += std::string(f.flip[i] ? "-" : "+") + axis[f.perm[i]];
+  nlohmann::json j = {
+      {"base_plane_axis", std::string(f.flip[2] ? "-" : "+") + axis[f.perm[2]]},
+      {"permuted_axes", order},
+      {"shear", {f.shear_x, f.shear_y}},
+      {"base_plane", {h.regs.base_width(), h.regs.base_height()}},
+      {"sample_slices", h.regs.sample_slices()},
+      {"image", {s.width, s.height}},
+  };
+  if (s.view.direction) {
+    j["direction"] = *s.view.direction;
+    j["up"] = s.view.up;
+  } else {
+    j["rotate_deg"] = s.view.rotate;
+  }
+  return j;
+}
+
+nlohmann::json describe_registers(const golden::Registers& r) {
+  return {
+      {"dim", r.dim},
+      {"perm", r.perm},
+      {"flip", r.flip},
+      {"supersampling", r.supersampling},
+      {"dda", {{"frac_bits", r.p.dda_frac_bits}, {"x_start", r.x_start}, {"x_step", r.x_step},
+               {"y_start", r.y_start}, {"y_step", r.y_step}}},
+      {"classification_entries", r.classification.size()},
+      {"gm_lut_entries", r.gm_lut.size()},
+      {"diffuse_map_entries", r.diffuse_map.size()},
+      {"specular_map_entries", r.specular_map.size()},
+      {"coefs", {{"ke", r.coefs.ke}, {"kd", r.coefs.kd}, {"ks", r.coefs.ks}, {"specular", r.coefs.specular}}},
+      {"eye", r.eye},
+      {"modes", {{"gradient", r.gradient}, {"magnitude", r.magnitude}, {"shading", r.shading},
+                 {"specular", r.specular}, {"gm_opacity", r.gm_opacity}, {"gm_diffuse", r.gm_diffuse},
+                 {"gm_specular", r.gm_specular}, {"blend", static_cast<int>(r.blend)},
+                 {"crop", r.crop_enabled}, {"cut", r.cut_enabled}}},
+      {"crop", {{"slab", r.crop.slab}, {"mask", r.crop.mask}}},
+      {"cut", {{"a", r.cut.a}, {"b", r.cut.b}, {"c", r.cut.c}, {"dmin", r.cut.dmin}, {"dmax", r.cut.dmax},
+               {"falloff", r.cut.falloff}, {"inv_falloff", r.cut.inv_falloff}, {"keep_inside", r.cut.keep_inside}}},
+  };
+}
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw golden::InputError("cannot write report '" + path + "'");
+    out << j.dump(2) << "\n";
+    if (!out) throw golden::InputError("cannot write report '" + path + "'");
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw golden::InputError("cannot write report '" + path + "': " + ec.message());
+}
+
+}  // namespace cube4::tb

@@ -1,0 +1,112 @@
+// One rendering pipeline's work on one sample, composed only of the unit
+// functions in golden/units/: what the fixed-point renderer runs for every
+// sample, and what a transaction-level model calls per transaction.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "golden/registers.hpp"
+#include "golden/units/classify.hpp"
+#include "golden/units/composite.hpp"
+#include "golden/units/crop.hpp"
+#include "golden/units/cube_map.hpp"
+#include "golden/units/cut_plane.hpp"
+#include "golden/units/dda.hpp"
+#include "golden/units/gradient.hpp"
+#include "golden/units/magnitude.hpp"
+#include "golden/units/phong.hpp"
+#include "golden/units/ray_align.hpp"
+#include "golden/units/reflection.hpp"
+#include "golden/units/trilinear.hpp"
+
+namespace cube4::golden {
+
+// Per-slice constants from the weight generator; they travel with the data.
+struct SliceControl {
+  int k = 0;                       // sample slice
+  int z_voxel = 0;                 // voxel slice below the sample slice
+  uint32_t wx = 0, wy = 0, wz = 0; // trilinear weights
+  int ix = 0, iy = 0;              // DDA integer offsets
+  int dx = 0, dy = 0;              // offset change since slice k-1 (ray alignment)
+  Realign behind_x, behind_y, ahead_x, ahead_y;  // ABC re-alignment
+};
+
+inline SliceControl slice_control(const Registers& r, int k) {
+  const Precision& p = r.p;
+  const SliceOffset ox = r.x_offset(k), oy = r.y_offset(k);
+  const SliceOffset px = r.x_offset(k - 1), py = r.y_offset(k - 1);
+  const SliceOffset nx = r.x_offset(k + 1), ny = r.y_offset(k + 1);
+  SliceControl c;
+  c.k = k;
+  c.z_voxel = z_voxel_slice(k, r.supersampling);
+  c.wx = ox.weight;
+  c.wy = oy.weight;
+  c.wz = z_weight(k, r.supersampling, p.weight_bits);
+  c.ix = ox.integer;
+  c.iy = oy.integer;
+  c.dx = k == 0 ? 0 : ox.integer - px.integer;
+  c.dy = k == 0 ? 0 : oy.integer - py.integer;
+  c.behind_x = realign(ox.weight, px.weight, p.weight_bits);
+  c.behind_y = realign(oy.weight, py.weight, p.weight_bits);
+  c.ahead_x = realign(ox.weight, nx.weight, p.weight_bits);
+  c.ahead_y = realign(oy.weight, ny.weight, p.weight_bits);
+  return c;
+}
+
+// The 12-neighbourhood of a sample (plus the sample): four in its own slice,
+// and 2x2 around the re-aligned position in the slices behind and ahead
+// ([0] at (base, base), [1] x+1, [2] y+1, [3] both).
+struct Neighbourhood {
+  uint32_t centre = 0, left = 0, right = 0, up = 0, down = 0;
+  std::array<uint32_t, 4> behind{}, ahead{};
+};
+
+inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const Neighbourhood& n) {
+  const int w = r.p.weight_bits;
+  const uint32_t behind = abc_sample(n.behind[0], n.behind[1], n.behind[2], n.behind[3],
+                                     c.behind_x.weight, c.behind_y.weight, w);
+  const uint32_t ahead = abc_sample(n.ahead[0], n.ahead[1], n.ahead[2], n.ahead[3],
+                                    c.ahead_x.weight, c.ahead_y.weight, w);
+  return gradient_12n(n.left, n.right, n.up, n.down, behind, ahead, r.supersampling, r.p);
+}
+
+// Gradient, magnitude, classification, shading, cropping and cut plane of
+// the sample at (x, y) of slice c.k. Units the registers leave off are not
+// evaluated at all, exactly as the hardware would skip them.
+inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int x, int y,
+                                 const Neighbourhood& n) {
+  const Precision& p = r.p;
+  const uint32_t one = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
+  ShadedSample out;
+  out.value = n.centre;
+  const ClassEntry& e = classify(r.classification, n.centre);
+  out.alpha = e.a;
+  out.rgb = widen_color(e.r, e.g, e.b, p);
+
+  Gradient g;
+  if (r.gradient) g = sample_gradient(r, c, n);
+  uint32_t gm = one;
+  if (r.magnitude) gm = gm_unit(r.gm_lut[gradient_magnitude(g, p)], p);
+  if (r.gm_opacity) out.alpha = modulate_alpha(out.alpha, gm, p);
+  if (r.shading) {
+    const uint32_t id = reflectance_lookup(r.diffuse_map, cube_coordinates(g.x, g.y, g.z, p), p);
+    uint32_t is = 0;
+    if (r.specular) {
+      const Gradient refl = reflection_vector(g, r.eye, p);
+      is = reflectance_lookup(r.specular_map, cube_coordinates(refl.x, refl.y, refl.z, p), p);
+    }
+    out.rgb = phong(out.rgb, id, is, r.gm_diffuse ? gm : one, r.gm_specular ? gm : one, r.coefs, p);
+  }
+  if (r.crop_enabled) out.visible = crop_visible(x, y, c.z_voxel, r.crop);
+  if (r.cut_enabled) {
+    const int w = p.weight_bits;
+    const int64_t d = cut_distance(r.cut, (int64_t{x} << w) + c.wx, (int64_t{y} << w) + c.wy,
+                                   (int64_t{c.z_voxel} << w) + c.wz, p);
+    const uint32_t f = cut_factor(d, r.cut, p);
+    out.alpha = cut_alpha(out.alpha, f, p);
+    if (f == 0) out.visible = false;
+  }
+  return out;
+}
+
+}  // namespace cube4::golden

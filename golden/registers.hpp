@@ -1,0 +1,57 @@
+// The integer register values: the one interface between the host (which
+// may use floating point) and the hardware (which never does). The golden
+// fixed-point renderer and the RTL consume exactly these.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "golden/precision.hpp"
+#include "golden/units/classify.hpp"
+#include "golden/units/composite.hpp"
+#include "golden/units/crop.hpp"
+#include "golden/units/cut_plane.hpp"
+#include "golden/units/dda.hpp"
+#include "golden/units/phong.hpp"
+#include "golden/units/reflection.hpp"
+
+namespace cube4::golden {
+
+struct Registers {
+  Precision p;
+  // Address generation: permuted axis i walks object axis perm[i], backwards if flip[i].
+  std::array<int, 3> dim{0, 0, 0};  // permuted nx, ny, nz
+  std::array<int, 3> perm{0, 1, 2};
+  std::array<bool, 3> flip{false, false, false};
+  int supersampling = 1;
+  // Ray-offset DDA, dda_frac_bits of fraction, per sample slice.
+  int64_t x_start = 0, x_step = 0, y_start = 0, y_step = 0;
+  // Tables.
+  std::vector<ClassEntry> classification;  // 2^voxel_bits entries
+  std::vector<uint16_t> gm_lut;            // 2^magnitude_bits entries, gmlut_bits wide
+  std::vector<uint32_t> diffuse_map;       // 6 * map_face_res^2, map_bits wide
+  std::vector<uint32_t> specular_map;
+  ShadeCoefs coefs;
+  Eye eye{0, 0, 0};
+  // Mode bits: decided by the scene's effect set.
+  bool gradient = false, magnitude = false, shading = false, specular = false;
+  bool gm_opacity = false, gm_diffuse = false, gm_specular = false;
+  BlendMode blend = BlendMode::Composite;
+  bool crop_enabled = false;
+  CropRegs crop;
+  bool cut_enabled = false;
+  CutRegs cut;
+
+  int sample_slices() const { return dim[2] * supersampling; }
+  SliceOffset x_offset(int k) const {
+    return dda_split(dda_position(x_start, x_step, k), p.dda_frac_bits, p.weight_bits);
+  }
+  SliceOffset y_offset(int k) const {
+    return dda_split(dda_position(y_start, y_step, k), p.dda_frac_bits, p.weight_bits);
+  }
+  // Base plane: one pixel per ray; rays enter through the front or a side face.
+  int base_width() const { return dim[0] + x_offset(sample_slices() - 1).integer; }
+  int base_height() const { return dim[1] + y_offset(sample_slices() - 1).integer; }
+};
+
+}  // namespace cube4::golden

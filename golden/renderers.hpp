@@ -1,0 +1,60 @@
+// The three renderers and the warp. The fixed-point renderer is the
+// bit-exact specification; the float renderer is the same algorithm in real
+// arithmetic; the reference is an independent image-order ray caster.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "golden/host_driver.hpp"
+#include "golden/volume.hpp"
+
+namespace cube4::golden {
+
+// Premultiplied RGBA, floats in [0, 1].
+struct ImageF {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+  float* pixel(int x, int y) { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+  const float* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+};
+
+// A base-plane image. Ray u starts at permuted x = u - shift_x on the front face.
+struct BasePlane {
+  int width = 0, height = 0;
+  int bits = 12;                 // channel width (alpha_bits)
+  std::vector<uint16_t> rgba;    // premultiplied
+  double shift_x = 0, shift_y = 0;
+  ImageF to_float() const;
+};
+
+struct BasePlaneF {
+  ImageF image;
+  double shift_x = 0, shift_y = 0;
+};
+
+using Progress = std::function<void(double fraction_done)>;
+
+// Counts of what the renderer computed, for reports.
+struct RenderStats {
+  uint64_t samples = 0;         // samples computed (S * n^3 for the fixed renderer)
+  int slices = 0;               // sample slices
+};
+
+BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* stats = nullptr,
+                       const Progress& progress = {});
+BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f,
+                        RenderStats* stats = nullptr, const Progress& progress = {});
+
+struct ReferenceOptions {
+  double step = 0.25;  // ray step in units of the smallest voxel spacing
+};
+ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisation& f,
+                        const ReferenceOptions& opt = {}, RenderStats* stats = nullptr,
+                        const Progress& progress = {});
+
+// Bilinear warp of a base plane onto the final image (transparent outside).
+ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactorisation& f);
+
+}  // namespace cube4::golden

@@ -1,0 +1,42 @@
+// The scene's optical model in floating point: transfer functions, opacity
+// correction, lights. The host driver samples it into tables; the float and
+// reference renderers evaluate it directly. One definition for all three.
+#pragma once
+#include <utility>
+#include <vector>
+
+#include "golden/scene.hpp"
+#include "golden/view.hpp"
+
+namespace cube4::golden {
+
+double eval_piecewise(const std::vector<ScalarPoint>& pts, double x);  // clamped at the ends
+Vec3 eval_color(const std::vector<ColorPoint>& pts, double x);
+
+// Opacity of a segment `ratio` times the unit length: 1 - (1 - α)^ratio.
+double correct_alpha(double alpha, double ratio);
+
+// Ray step between sample slices relative to the unit length (the smallest voxel spacing).
+double sample_step_ratio(const ViewFactorisation& f, int supersampling);
+
+// Largest gradient magnitude the hardware can represent: the GmLUT's x = 1.
+double max_gradient_magnitude(const Precision& p);
+
+struct Lighting {
+  std::vector<std::pair<Vec3, double>> lights;  // unit direction towards the light (object space), intensity
+  double exponent = 20;
+  // Σ I·max(0, n·l) for a unit outward normal n.
+  double diffuse(const Vec3& n) const;
+  // Σ I·max(0, r·l)^exponent for the unit mirror direction r of the eye.
+  double specular(const Vec3& r) const;
+};
+
+Lighting lighting_of(const Scene& s, const ViewFactorisation& f);
+
+// Unit outward normal (-gradient) in physical object space from a gradient
+// in permuted voxel space; zero vector if the gradient is zero.
+Vec3 normal_from_permuted_gradient(const ViewFactorisation& f, const Vec3& g_perm);
+// Unit direction in object space from a direction in permuted voxel space.
+Vec3 object_direction(const ViewFactorisation& f, const Vec3& d_perm);
+
+}  // namespace cube4::golden
