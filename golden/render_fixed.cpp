@@ -75,7 +75,8 @@ void write_pixel(BasePlane& bp, int u, int v, const RayAcc& a) {
 
 }  // namespace
 
-BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats, const Progress& progress) {
+BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats, const Progress& progress,
+                       SampleProbe* probe) {
   const int nx = r.dim[0], ny = r.dim[1], nz = r.dim[2];
   const int K = r.sample_slices();
   const int w = r.p.weight_bits;
@@ -130,6 +131,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
           gather_2x2(ahead, x, y, c.ahead_x, c.ahead_y, n.ahead);
         }
         const ShadedSample s = shade_sample(r, c, x, y, n);
+        if (probe) probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
         const Predecessor pred = ray_predecessor(x, y, c.dx, c.dy);
         const RayAcc acc = pred.exists ? prev[static_cast<size_t>(pred.y) * nx + pred.x] : RayAcc{};
         cur[static_cast<size_t>(y) * nx + x] = blend(r.blend, acc, s, r.p);

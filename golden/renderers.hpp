@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "golden/host_driver.hpp"
+#include "golden/pipeline.hpp"
 #include "golden/volume.hpp"
 
 namespace cube4::golden {
@@ -42,8 +43,15 @@ struct RenderStats {
   int slices = 0;               // sample slices
 };
 
+// Sees every sample the fixed renderer shades, with its gradient (zero when
+// the scene needs none): for measurements such as the gradient error.
+struct SampleProbe {
+  virtual ~SampleProbe() = default;
+  virtual void sample(int x, int y, const SliceControl& c, uint32_t value, const Gradient& g) = 0;
+};
+
 BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* stats = nullptr,
-                       const Progress& progress = {});
+                       const Progress& progress = {}, SampleProbe* probe = nullptr);
 BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f,
                         RenderStats* stats = nullptr, const Progress& progress = {});
 

@@ -1,1 +1,145 @@
+// Accuracy of the fixed-point model against the same algorithm in float, and
+// of both against the independent image-order reference; the published
+// 12-neighbourhood gradient check. Bounds and their derivation:
+// docs/accuracy.md.
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "golden/shading_model.hpp"
+#include "tb/tests/test_support.hpp"
+
+using namespace cube4;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Largest difference between a bilinearly interpolated fixed-point map and
+// the exact intensity it samples, over a fine grid of directions: the map
+// resolution's share of the fixed-vs-float error budget.
+double map_interpolation_error(const test::Setup& s, const std::vector<uint32_t>& map, bool specular) {
+  const golden::Precision& p = s.scene.precision;
+  const golden::Lighting L = golden::lighting_of(s.scene, s.host.view);
+  double worst = 0;
+  for (int face = 0; face < 6; ++face)
+    for (int i = 0; i <= 56; ++i)
+      for (int j = 0; j <= 56; ++j) {
+        const golden::Vec3 d = golden::map_direction(face, i, j, 57);
+        int32_t g[3];
+        for (int c = 0; c < 3; ++c) g[c] = static_cast<int32_t>(std::lround(d[c] * 120));
+        const double fixed = golden::reflectance_lookup(map, golden::cube_coordinates(g[0], g[1], g[2], p), p) /
+                             std::ldexp(1.0, p.map_frac_bits);
+        const golden::Vec3 gd{double(g[0]), double(g[1]), double(g[2])};
+        const double exact = specular ? L.specular(golden::object_direction(s.host.view, gd))
+                                      : L.diffuse(golden::normal_from_permuted_gradient(s.host.view, gd));
+        worst = std::max(worst, std::fabs(fixed - exact));
+      }
+  return worst;
+}
+
+void check_fixed_against_float(const test::Setup& s, const char* name) {
+  const auto e = test::compare(test::final_fixed(s), test::final_float(s));
+  const double spec = s.host.regs.specular ? map_interpolation_error(s, s.host.regs.specular_map, true) : 0.0;
+  const double diff = s.host.regs.shading ? map_interpolation_error(s, s.host.regs.diffuse_map, false) : 0.0;
+  // Per-sample colour error budget: the maps' interpolation error times the
+  // coefficients, plus 8 output LSBs for sample, gradient, α and output
+  // rounding; compositing weights sum to at most one, so it bounds a pixel.
+  const double budget = s.scene.material.ks * spec + s.scene.material.kd * diff + 8.0 / 255;
+  std::printf("%s: fixed vs float PSNR %.2f dB, max error %.4f (budget %.4f: specular map %.4f, diffuse map %.4f)\n",
+              name, e.psnr, e.max_error, budget, spec, diff);
+  EXPECT_LE(e.max_error, budget) << name;
+  EXPECT_GT(e.psnr, 45.0) << name;
+}
+
+}  // namespace
+
+TEST(Accuracy, FixedAgainstFloatOnBrainsmall) {
+  check_fixed_against_float(test::setup(R"({"volume": {"file": ")" CUBE4_BRAINSMALL R"("},
+      "view": {"rotate": [20, 60, 180]}})"), "brainsmall");
+}
+
+TEST(Accuracy, FixedAgainstFloatOnTheSphere) {
+  const std::string scene = CUBE4_SOURCE_DIR "/scenes/sphere.json";
+  test::Setup s;
+  s.scene = golden::load_scene(scene);
+  s.volume = golden::load_volume(s.scene.volume, s.scene.precision.voxel_bits, ".");
+  s.host = golden::program_host(s.scene, s.volume);
+  check_fixed_against_float(s, "sphere");
+}
+
+TEST(Accuracy, FloatAgainstReference) {
+  for (const std::string& json :
+       {std::string(R"({"volume": {"file": ")" CUBE4_BRAINSMALL R"("}, "view": {"rotate": [20, 60, 180]}})"),
+        std::string(R"({"volume": {"synthetic": "sphere", "size": [48, 48, 48]}, "view": {"rotate": [20, 30, 0]},
+                        "transfer": {"opacity": [[0, 0], [0.4, 0], [0.6, 1], [1, 1]]}})")}) {
+    const auto s = test::setup(json);
+    golden::ReferenceOptions opt;
+    const auto e = test::compare(test::final_float(s), golden::render_reference(s.volume, s.scene, s.host.view, opt));
+    double mean = 0;
+    const auto a = test::final_float(s);
+    const auto b = golden::render_reference(s.volume, s.scene, s.host.view, opt);
+    for (size_t i = 0; i < a.rgba.size(); ++i)
+      if (i % 4 != 3) mean += std::fabs(a.rgba[i] - b.rgba[i]);
+    mean /= a.rgba.size() * 3 / 4;
+    std::printf("float vs reference: PSNR %.2f dB, max %.4f, mean %.5f\n", e.psnr, e.max_error, mean);
+    // docs/accuracy.md: mean error within 1% (Towards-scalable reports 0.3%
+    // for the interpolation alone; here the base-plane warp and the gradient
+    // estimators differ too), PSNR above 30 dB.
+    EXPECT_LT(mean, 0.01);
+    EXPECT_GT(e.psnr, 30.0);
+  }
+}
+
+namespace {
+
+// Collects, for every ray, the first sample above a threshold and the angle
+// between its fixed-point gradient and the sphere's analytic normal.
+struct FirstHitProbe : golden::SampleProbe {
+  const golden::ViewFactorisation& view;
+  golden::Vec3 centre;
+  uint32_t threshold;
+  int weight_bits;
+  std::set<std::pair<int, int>> hit;
+  double angle_sum = 0;
+  int count = 0;
+  FirstHitProbe(const golden::ViewFactorisation& v, golden::Vec3 c, uint32_t t, int w)
+      : view(v), centre(c), threshold(t), weight_bits(w) {}
+  void sample(int x, int y, const golden::SliceControl& c, uint32_t value, const golden::Gradient& g) override {
+    if (value < threshold) return;
+    if (!hit.insert({x - c.ix, y - c.iy}).second) return;
+    const double one = std::ldexp(1.0, weight_bits);
+    const golden::Vec3 pos = view.to_object({x + c.wx / one, y + c.wy / one, c.z_voxel + c.wz / one});
+    const golden::Vec3 grad = view.direction_to_object({double(g.x), double(g.y), double(g.z)});
+    double dot = 0, gn = 0, nn = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double n = pos[i] - centre[i];
+      dot += -grad[i] * n;
+      gn += grad[i] * grad[i];
+      nn += n * n;
+    }
+    if (gn == 0 || nn == 0) return;
+    angle_sum += std::acos(std::clamp(dot / std::sqrt(gn * nn), -1.0, 1.0)) * 180 / kPi;
+    ++count;
+  }
+};
+
+}  // namespace
+
+TEST(Accuracy, TwelveNeighbourhoodGradientOnAVolumeSampledSphere) {
+  // Towards-scalable §3, Fig. 2: mean angular error below 3° for rotations
+  // about the vertical axis from 0° to 90° in 5° steps.
+  for (int deg = 0; deg <= 90; deg += 5) {
+    const auto s = test::setup(R"({"volume": {"synthetic": "sphere", "size": [64, 64, 64], "radius": 24},
+        "shading": false, "view": {"rotate": [0, )" + std::to_string(deg) + R"(, 0]}})");
+    FirstHitProbe probe(s.host.view, {31.5, 31.5, 31.5}, 2048, s.scene.precision.weight_bits);
+    golden::Registers r = s.host.regs;
+    r.gradient = true;  // measured although this unshaded scene does not need it
+    golden::render_fixed(s.volume, r, nullptr, {}, &probe);
+    ASSERT_GT(probe.count, 1000);
+    const double mean = probe.angle_sum / probe.count;
+    std::printf("rotation %2d°: %d surface samples, mean angular error %.3f°\n", deg, probe.count, mean);
+    EXPECT_LT(mean, 3.0) << "rotation " << deg;
+  }
+}
