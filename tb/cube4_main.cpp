@@ -144,6 +144,10 @@ int main(int argc, char** argv) {
   std::string info_scene;
   CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");
   info->add_option("scene", info_scene, "scene JSON file (default: the default scene)");
+  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "render" && std::string(argv[1]) != "info") {
+    std::fprintf(stderr, "cube4: error: unknown command '%s' (commands: render, info; see --help)\n", argv[1]);
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

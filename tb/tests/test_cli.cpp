@@ -1,1 +1,135 @@
+// The cube4 command end to end: outputs, reports, exit codes and the
+// messages of bad input (they must name the file, key and value).
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <sys/wait.h>
+
+#include "tb/image_io.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CliResult {
+  int code = -1;
+  std::string err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = fs::temp_directory_path() / ("cube4_cli_" + std::to_string(::getpid()) + "_" +
+                                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+
+  CliResult run(const std::string& args) const {
+    const std::string err_file = path("stderr.txt");
+    const std::string cmd = std::string(CUBE4_BINARY) + " " + args + " >/dev/null 2>" + err_file;
+    const int status = std::system(cmd.c_str());
+    CliResult r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream in(err_file);
+    r.err.assign(std::istreambuf_iterator<char>(in), {});
+    return r;
+  }
+
+  fs::path dir;
+};
+
+const char* kSphere = R"({"volume": {"synthetic": "sphere", "size": [16, 16, 16]}, "view": {"rotate": [10, 20, 0]},
+                          "output": {"width": 64, "height": 48}})";
+
+}  // namespace
+
+TEST_F(Cli, RendersEveryModelWithReportAndBasePlane) {
+  const std::string scene = write("s.json", kSphere);
+  for (const std::string model : {"fixed", "float", "reference"}) {
+    const std::string out = path(model + ".png"), rep = path(model + ".json");
+    const std::string bp = model == "reference" ? "" : " --baseplane " + path(model + "_bp.png");
+    const CliResult r = run("render " + scene + " --model " + model + " -q -o " + out + " --report " + rep + bp);
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto img = cube4::tb::read_image(out);
+    EXPECT_EQ(img.width, 64);
+    EXPECT_EQ(img.height, 48);
+    nlohmann::json j;
+    std::ifstream(rep) >> j;
+    EXPECT_EQ(j["model"], model);
+    EXPECT_EQ(j["samples"].get<uint64_t>() > 0, true);
+    for (const char* key : {"volume", "view", "pipelines", "wall_seconds", "samples_per_second", "effects"})
+      EXPECT_TRUE(j.contains(key)) << key;
+    if (model == "fixed") {
+      EXPECT_EQ(j["samples"], 16 * 16 * 16);
+      EXPECT_EQ(j["baseplane_hash_fnv1a64"].get<std::string>().size(), 16u);
+    }
+  }
+}
+
+TEST_F(Cli, BasePlanePngRoundTripsTheHardwareValues) {
+  const std::string scene = write("s.json", kSphere);
+  ASSERT_EQ(run("render " + scene + " -q -o " + path("a.png") + " --baseplane " + path("bp.png")).code, 0);
+  const auto bp = cube4::tb::read_baseplane_png(path("bp.png"), 12);
+  EXPECT_GT(bp.width, 16);
+  int64_t alpha = 0;
+  for (size_t i = 3; i < bp.rgba.size(); i += 4) {
+    ASSERT_LE(bp.rgba[i], 4095);
+    alpha += bp.rgba[i];
+  }
+  EXPECT_GT(alpha, 0);
+}
+
+TEST_F(Cli, InfoPrintsFactorisationRegistersAndEffects) {
+  const std::string scene = write("s.json", kSphere);
+  const std::string cmd = std::string(CUBE4_BINARY) + " info " + scene + " > " + path("info.json");
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  nlohmann::json j;
+  std::ifstream(path("info.json")) >> j;
+  EXPECT_TRUE(j["view"].contains("base_plane_axis"));
+  EXPECT_TRUE(j["registers"].contains("dda"));
+  EXPECT_EQ(j["effects"][0], "composite");
+}
+
+TEST_F(Cli, BadInputExitsTwoNamingTheCulprit) {
+  const std::string good = write("s.json", kSphere);
+  struct Case { std::string args; std::string must_contain; };
+  const std::vector<Case> cases = {
+      {"render " + path("missing.json"), "missing.json"},
+      {"render " + write("k.json", R"({"volume": {"synthetic": "sphere"}, "shadng": true})"), "shadng"},
+      {"render " + write("r.json", R"({"volume": {"synthetic": "sphere"}, "supersampling": 9})"), "supersampling"},
+      {"render " + write("v.json", R"({"volume": {"file": "nowhere.den"}})"), "nowhere.den"},
+      {"render " + write("j.json", R"({"volume": )"), "j.json"},
+      {"render " + good + " -o " + path("out.jpg"), "out.jpg"},
+      {"render " + good + " --model bogus", "bogus"},
+      {"render " + good + " --model reference --baseplane " + path("bp.png"), "baseplane"},
+      {"frobnicate", "frobnicate"},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = run(c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.must_contain), std::string::npos) << c.args << "\n" << r.err;
+  }
+  // Nothing half-written for a rejected run.
+  EXPECT_FALSE(fs::exists(path("out.jpg")));
+  EXPECT_FALSE(fs::exists(path("bp.png")));
+}
+
+TEST_F(Cli, TruncatedVolumeFileIsReportedWithItsName) {
+  std::ofstream(path("cut.den"), std::ios::binary) << std::string(30, '\0');
+  const CliResult r = run("render " + write("t.json", R"({"volume": {"file": "cut.den"}})") + " -o " + path("x.png"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("cut.den"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("x.png")));
+}
