@@ -27,6 +27,7 @@ constexpr int64_t round_shift(int64_t v, int s) {
 // that 0 -> 0 and max -> max exactly (8 -> 12 bits: v<<4 | v>>4).
 constexpr int64_t expand_bits(int64_t v, int from, int to) {
   if (to <= from) return v >> (from - to);
+  if (to <= 2 * from) return (v << (to - from)) | (v >> (2 * from - to));
   int64_t r = 0;
   int filled = 0;
   while (filled < to) {
@@ -45,10 +46,6 @@ constexpr int64_t mul_frac(int64_t x, int64_t f, int n) {
   return round_shift(x * (f + (f >> (n - 1))), n);
 }
 
-constexpr int bit_length(uint64_t v) {
-  int b = 0;
-  while (v) { ++b; v >>= 1; }
-  return b;
-}
+constexpr int bit_length(uint64_t v) { return v == 0 ? 0 : 64 - __builtin_clzll(v); }
 
 }  // namespace cube4::golden

@@ -72,9 +72,10 @@ inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const
 
 // Gradient, magnitude, classification, shading, cropping and cut plane of
 // the sample at (x, y) of slice c.k. Units the registers leave off are not
-// evaluated at all, exactly as the hardware would skip them.
+// evaluated at all, exactly as the hardware would skip them. `faces`, if
+// given, replaces the cube-map divider by its table (same values).
 inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int x, int y,
-                                 const Neighbourhood& n) {
+                                 const Neighbourhood& n, const FacePositionTable* faces = nullptr) {
   const Precision& p = r.p;
   const uint32_t one = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
   ShadedSample out;
@@ -89,11 +90,14 @@ inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int 
   if (r.magnitude) gm = gm_unit(r.gm_lut[gradient_magnitude(g, p)], p);
   if (r.gm_opacity) out.alpha = modulate_alpha(out.alpha, gm, p);
   if (r.shading) {
-    const uint32_t id = reflectance_lookup(r.diffuse_map, cube_coordinates(g.x, g.y, g.z, p), p);
+    auto coords = [&](const Gradient& v) {
+      return faces ? cube_coordinates_with(v.x, v.y, v.z, *faces) : cube_coordinates(v.x, v.y, v.z, p);
+    };
+    const uint32_t id = reflectance_lookup(r.diffuse_map, coords(g), p);
     uint32_t is = 0;
     if (r.specular) {
       const Gradient refl = reflection_vector(g, r.eye, p);
-      is = reflectance_lookup(r.specular_map, cube_coordinates(refl.x, refl.y, refl.z, p), p);
+      is = reflectance_lookup(r.specular_map, coords(refl), p);
     }
     out.rgb = phong(out.rgb, id, is, r.gm_diffuse ? gm : one, r.gm_specular ? gm : one, r.coefs, p);
   }

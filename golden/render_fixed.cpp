@@ -2,6 +2,7 @@
 // slice, beam by beam, in permuted order) built only from the unit functions.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "golden/pipeline.hpp"
@@ -27,41 +28,83 @@ struct PermutedAccess {
 // neighbours of edge samples read zero (the volume is surrounded by zeros).
 struct Plane {
   int nx = 0, ny = 0, pad = 0, pitch = 0;
-  std::vector<uint32_t> v;
+  std::vector<int32_t> v;
   Plane(int nx_, int ny_, int pad_) : nx(nx_), ny(ny_), pad(pad_), pitch(nx_ + 2 * pad_),
       v(static_cast<size_t>(nx_ + 2 * pad_) * (ny_ + 2 * pad_), 0) {}
-  uint32_t* row(int y) { return &v[static_cast<size_t>(y + pad) * pitch + pad]; }
-  const uint32_t* row(int y) const { return &v[static_cast<size_t>(y + pad) * pitch + pad]; }
-  uint32_t at(int x, int y) const { return row(y)[x]; }
-  void clear() { std::fill(v.begin(), v.end(), 0u); }
+  int32_t* row(int y) { return &v[static_cast<size_t>(y + pad) * pitch + pad]; }
+  const int32_t* row(int y) const { return &v[static_cast<size_t>(y + pad) * pitch + pad]; }
+  uint32_t at(int x, int y) const { return static_cast<uint32_t>(row(y)[x]); }
+  void clear() { std::fill(v.begin(), v.end(), 0); }
 };
 
 void load_voxel_slice(const Volume& vol, const Registers& r, const PermutedAccess& a, int z, Plane& out) {
   if (z >= r.dim[2]) { out.clear(); return; }
   const uint16_t* base = vol.data.data() + a.origin + a.stride[2] * z;
-  for (int y = 0; y < r.dim[1]; ++y) {
-    const uint16_t* src = base + a.stride[1] * y;
-    uint32_t* dst = out.row(y);
-    if (a.stride[0] == 1) {
-      for (int x = 0; x < r.dim[0]; ++x) dst[x] = src[x];
+  const int nx = r.dim[0], ny = r.dim[1];  // locals: int32_t stores cannot alias them
+  const int64_t sx = a.stride[0], sy = a.stride[1];
+  for (int y = 0; y < ny; ++y) {
+    const uint16_t* __restrict src = base + sy * y;
+    int32_t* __restrict dst = out.row(y);
+    if (sx == 1) {
+      for (int x = 0; x < nx; ++x) dst[x] = src[x];
     } else {
-      for (int x = 0; x < r.dim[0]; ++x) dst[x] = src[a.stride[0] * x];
+      for (int x = 0; x < nx; ++x) dst[x] = src[sx * x];
     }
   }
 }
 
-// Interpolation unit over a whole sample slice: x, then y, then z per
-// sample, i.e. trilinear() on each sample's eight voxels.
-void interpolate_slice(const Plane& lo, const Plane& hi, const SliceControl& c, int w, Plane& out) {
-  for (int y = 0; y < out.ny; ++y) {
-    const uint32_t *a0 = lo.row(y), *a1 = lo.row(y + 1), *b0 = hi.row(y), *b1 = hi.row(y + 1);
-    uint32_t* dst = out.row(y);
-    for (int x = 0; x < out.nx; ++x) {
-      dst[x] = trilinear({a0[x], a0[x + 1], a1[x], a1[x + 1], b0[x], b0[x + 1], b1[x], b1[x + 1]},
-                         c.wx, c.wy, c.wz, w);
+// Interpolation unit over a whole sample slice: trilinear() for every
+// sample, computed stage by stage across the slice (x lerps of each voxel
+// row once, then y, then z) with the same lerp, so the values are those of
+// trilinear() on each sample's eight voxels (tested). A stage whose weight
+// is zero returns its first operand exactly, so it is not computed.
+struct Interpolator {
+  int nx, ny, w;
+  std::vector<int32_t> tx, ty_lo, ty_hi;
+  Interpolator(int nx_, int ny_, int w_) : nx(nx_), ny(ny_), w(w_),
+      tx(static_cast<size_t>(nx_) * (ny_ + 1)), ty_lo(static_cast<size_t>(nx_) * ny_), ty_hi(ty_lo.size()) {}
+
+  void bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out) {
+    // Locals, so that stores through int32_t pointers cannot alias them.
+    const int nx = this->nx, ny = this->ny, w = this->w;
+    for (int y = 0; y <= ny; ++y) {
+      const int32_t* __restrict a = v.row(y);
+      int32_t* __restrict t = &tx[static_cast<size_t>(y) * nx];
+      if (wx == 0) {
+        std::copy(a, a + nx, t);
+      } else {
+        for (int x = 0; x < nx; ++x) t[x] = lerp_t<int32_t>(a[x], a[x + 1], wx, w);
+      }
+    }
+    for (int y = 0; y < ny; ++y) {
+      const int32_t* __restrict t0 = &tx[static_cast<size_t>(y) * nx];
+      const int32_t* __restrict t1 = t0 + nx;
+      int32_t* __restrict o = &out[static_cast<size_t>(y) * nx];
+      if (wy == 0) {
+        std::copy(t0, t0 + nx, o);
+      } else {
+        for (int x = 0; x < nx; ++x) o[x] = lerp_t<int32_t>(t0[x], t1[x], wy, w);
+      }
     }
   }
-}
+
+  void slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out) {
+    const auto wx = static_cast<int32_t>(c.wx), wy = static_cast<int32_t>(c.wy), wz = static_cast<int32_t>(c.wz);
+    const int nx = this->nx, ny = this->ny, w = this->w;
+    bilinear(lo, wx, wy, ty_lo);
+    if (wz != 0) bilinear(hi, wx, wy, ty_hi);
+    for (int y = 0; y < ny; ++y) {
+      const int32_t* __restrict a = &ty_lo[static_cast<size_t>(y) * nx];
+      const int32_t* __restrict b = &ty_hi[static_cast<size_t>(y) * nx];
+      int32_t* __restrict o = out.row(y);
+      if (wz == 0) {
+        std::copy(a, a + nx, o);
+      } else {
+        for (int x = 0; x < nx; ++x) o[x] = lerp_t<int32_t>(a[x], b[x], wz, w);
+      }
+    }
+  }
+};
 
 void gather_2x2(const Plane& s, int x, int y, const Realign& rx, const Realign& ry, std::array<uint32_t, 4>& out) {
   const int bx = x + rx.base, by = y + ry.base;
@@ -94,6 +137,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
   const PermutedAccess access(vol, r);
   // Voxel slices zv and zv+1 (one extra zero column/row for x+1, y+1).
   Plane vox_lo(nx, ny, 1), vox_hi(nx, ny, 1);
+  Interpolator interp(nx, ny, w);
   int loaded_z = -1;
   auto samples_of = [&](int k, Plane& out) {
     if (k < 0 || k >= K) { out.clear(); return; }
@@ -107,7 +151,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
       load_voxel_slice(vol, r, access, c.z_voxel + 1, vox_hi);
       loaded_z = c.z_voxel;
     }
-    interpolate_slice(vox_lo, vox_hi, c, w, out);
+    interp.slice(vox_lo, vox_hi, c, out);
   };
 
   // Sample slices behind, current and ahead of the one being shaded.
@@ -115,13 +159,46 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
   samples_of(0, current);
   if (r.gradient) samples_of(1, ahead);
   std::vector<RayAcc> prev(static_cast<size_t>(nx) * ny), cur(prev.size());
+  const bool may_skip = r.blend == BlendMode::Composite && probe == nullptr;
+  // Up to 10-bit gradients a table of the cube-map divisions (1 MB at most)
+  // is cheaper than dividing per sample.
+  std::unique_ptr<FacePositionTable> faces;
+  if (r.shading && r.p.gradient_bits <= 10)
+    faces = std::make_unique<FacePositionTable>(static_cast<int>(max_signed(r.p.gradient_bits)), r.p.map_face_res,
+                                                r.p.weight_bits);
+  const uint16_t opaque = static_cast<uint16_t>(max_unsigned(r.p.alpha_bits));
+  int32_t first_visible = 0;
+  while (first_visible < static_cast<int32_t>(r.classification.size()) && r.classification[first_visible].a == 0)
+    ++first_visible;
 
   for (int k = 0; k < K; ++k) {
     const SliceControl c = slice_control(r, k);
     Neighbourhood n;
     for (int y = 0; y < ny; ++y) {
+      RayAcc* out_row = &cur[static_cast<size_t>(y) * nx];
+      // Ray alignment for the whole beam: each ray's predecessor, or an
+      // empty ray where it enters through a side face.
+      // ray_predecessor() is the same for the whole beam from x = dx on.
+      const Predecessor from = ray_predecessor(c.dx, y, c.dx, c.dy);
+      if (!from.exists) {
+        std::fill(out_row, out_row + nx, RayAcc{});
+      } else {
+        const RayAcc* in_row = &prev[static_cast<size_t>(from.y) * nx + from.x];
+        std::fill(out_row, out_row + c.dx, RayAcc{});
+        std::copy(in_row, in_row + nx - c.dx, out_row + c.dx);
+      }
+      // A composited sample whose classified α is zero, or that meets an
+      // opaque ray, leaves the ray exactly as it is (α only shrinks on the
+      // way through the pipeline, and blend_front_to_back adds nothing for
+      // α = 0 or full α_acc), so its gradient and shading are not computed;
+      // nor are those of a beam whose samples all classify below the first
+      // non-zero α.
+      const int32_t* samples = current.row(y);
+      if (may_skip && *std::max_element(samples, samples + nx) < first_visible) continue;
       for (int x = 0; x < nx; ++x) {
-        n.centre = current.at(x, y);
+        RayAcc& out = out_row[x];
+        n.centre = static_cast<uint32_t>(samples[x]);
+        if (may_skip && (r.classification[n.centre].a == 0 || out.a == opaque)) continue;
         if (r.gradient) {
           n.left = current.at(x - 1, y);
           n.right = current.at(x + 1, y);
@@ -130,18 +207,17 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
           gather_2x2(behind, x, y, c.behind_x, c.behind_y, n.behind);
           gather_2x2(ahead, x, y, c.ahead_x, c.ahead_y, n.ahead);
         }
-        const ShadedSample s = shade_sample(r, c, x, y, n);
+        const ShadedSample s = shade_sample(r, c, x, y, n, faces.get());
         if (probe) probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
-        const Predecessor pred = ray_predecessor(x, y, c.dx, c.dy);
-        const RayAcc acc = pred.exists ? prev[static_cast<size_t>(pred.y) * nx + pred.x] : RayAcc{};
-        cur[static_cast<size_t>(y) * nx + x] = blend(r.blend, acc, s, r.p);
+        out = blend(r.blend, out, s, r.p);
       }
     }
-    // Rays of slice k-1 with no successor in slice k left through a side face.
-    if (k > 0) {
+    // Rays of slice k-1 with no successor in slice k left through a side
+    // face; only the last dy beams and the last dx rays of a beam can.
+    if (k > 0 && (c.dx | c.dy)) {
       const SliceControl pc = slice_control(r, k - 1);
       for (int y = 0; y < ny; ++y)
-        for (int x = 0; x < nx; ++x)
+        for (int x = y >= ny - c.dy ? 0 : nx - c.dx; x < nx; ++x)
           if (ray_leaves(x, y, c.dx, c.dy, nx, ny))
             write_pixel(bp, x - pc.ix + ix_last, y - pc.iy + iy_last, prev[static_cast<size_t>(y) * nx + x]);
     }

@@ -2,7 +2,9 @@
 // the host driver makes of it. Exit codes: 0 ok, 2 bad input, 1 internal error.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <vector>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -30,6 +32,7 @@ struct RenderArgs {
   std::string baseplane;
   std::string report;
   double reference_step = 0.25;
+  int repeat = 1;
   bool quiet = false;
 };
 
@@ -68,22 +71,35 @@ int run_render(const RenderArgs& a) {
   golden::RenderStats stats;
   golden::ImageF image;
   std::optional<uint64_t> hash;
-  const auto t0 = std::chrono::steady_clock::now();
-  if (a.model == "fixed") {
-    const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, &stats, cb);
-    hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
-    image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
-    if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp);
-  } else if (a.model == "float") {
-    const golden::BasePlaneF bp = golden::render_float(l.volume, l.scene, l.host.view, &stats, cb);
-    image = golden::warp(bp.image, bp.shift_x, bp.shift_y, l.host.view);
-    if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp.image);
-  } else {
-    golden::ReferenceOptions opt;
-    opt.step = a.reference_step;
-    image = golden::render_reference(l.volume, l.scene, l.host.view, opt, &stats, cb);
+  // Each repetition renders the base plane (or reference image) and warps
+  // it: a frame as the hardware plus companion card would deliver it.
+  std::vector<double> frame_seconds;
+  for (int rep = 0; rep < a.repeat; ++rep) {
+    const bool last = rep + 1 == a.repeat;
+    const auto t0 = std::chrono::steady_clock::now();
+    if (a.model == "fixed") {
+      const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, &stats, cb);
+      image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
+      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      if (last) {
+        hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
+        if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp);
+      }
+    } else if (a.model == "float") {
+      const golden::BasePlaneF bp = golden::render_float(l.volume, l.scene, l.host.view, &stats, cb);
+      image = golden::warp(bp.image, bp.shift_x, bp.shift_y, l.host.view);
+      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      if (last && !a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp.image);
+    } else {
+      golden::ReferenceOptions opt;
+      opt.step = a.reference_step;
+      image = golden::render_reference(l.volume, l.scene, l.host.view, opt, &stats, cb);
+      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::vector<double> sorted = frame_seconds;
+  std::sort(sorted.begin(), sorted.end());
+  const double seconds = sorted[sorted.size() / 2];
   tb::write_image(a.output, image);
   if (progress.shown() || !a.quiet)
     std::fprintf(stderr, "cube4: %s model, %llu samples in %.3f s -> %s\n", a.model.c_str(),
@@ -99,6 +115,8 @@ int run_render(const RenderArgs& a) {
         {"supersampling", l.scene.supersampling},
         {"samples", stats.samples},
         {"wall_seconds", seconds},
+        {"frames", a.repeat},
+        {"frame_ms", {{"min", sorted.front() * 1e3}, {"median", seconds * 1e3}, {"max", sorted.back() * 1e3}}},
         {"samples_per_second", seconds > 0 ? stats.samples / seconds : 0.0},
         {"effects", effects_json(l.host.effects)},
         {"output", a.output},
@@ -140,6 +158,8 @@ int main(int argc, char** argv) {
   render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact)");
   render->add_option("--report", ra.report, "write a JSON report");
   render->add_option("--reference-step", ra.reference_step, "reference model: ray step in voxels")->capture_default_str();
+  render->add_option("--repeat", ra.repeat, "render N times (benchmarking): the report gives min and median")
+      ->check(CLI::Range(1, 100000));
   render->add_flag("-q,--quiet", ra.quiet, "no progress or summary on stderr");
   std::string info_scene;
   CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");

@@ -37,8 +37,37 @@ constexpr void face_position(int64_t s, int64_t m, int res, int weight_bits, uin
   weight = static_cast<uint32_t>(w);
 }
 
-// Ties pick the lower axis (x before y before z), so every vector has one face.
-constexpr CubeCoord cube_coordinates(int32_t x, int32_t y, int32_t z, const Precision& p) {
+// face_position() for every |s| <= m <= mmax, filled by calling it: a
+// software renderer's substitute for the hardware divider, equal by
+// construction (and tested exhaustively).
+class FacePositionTable {
+ public:
+  FacePositionTable(int mmax, int res, int weight_bits) : mmax_(mmax), entries_(offset(mmax + 1)) {
+    for (int m = 1; m <= mmax; ++m)
+      for (int s = -m; s <= m; ++s) {
+        uint32_t c = 0, w = 0;
+        face_position(s, m, res, weight_bits, c, w);
+        entries_[offset(m) + s + m] = {static_cast<uint16_t>(c), static_cast<uint16_t>(w)};
+      }
+  }
+  void operator()(int64_t s, int64_t m, uint32_t& cell, uint32_t& weight) const {
+    const Entry& e = entries_[offset(static_cast<int>(m)) + s + m];
+    cell = e.cell;
+    weight = e.weight;
+  }
+  int mmax() const { return mmax_; }
+
+ private:
+  struct Entry { uint16_t cell, weight; };
+  static size_t offset(int m) { return static_cast<size_t>(m) * m - 1; }  // sum of 2k+1 for 0 < k < m
+  int mmax_;
+  std::vector<Entry> entries_;
+};
+
+// Ties pick the lower axis (x before y before z), so every vector has one
+// face. `position(s, m, cell, weight)` is face_position at this precision.
+template <class FacePosition>
+constexpr CubeCoord cube_coordinates_with(int32_t x, int32_t y, int32_t z, const FacePosition& position) {
   const int64_t c[3] = {x, y, z};
   const int64_t a[3] = {x < 0 ? -int64_t{x} : x, y < 0 ? -int64_t{y} : y, z < 0 ? -int64_t{z} : z};
   CubeCoord r;
@@ -46,9 +75,15 @@ constexpr CubeCoord cube_coordinates(int32_t x, int32_t y, int32_t z, const Prec
   const int axis = (a[0] >= a[1] && a[0] >= a[2]) ? 0 : (a[1] >= a[2] ? 1 : 2);
   r.valid = true;
   r.face = 2 * axis + (c[axis] < 0 ? 1 : 0);
-  face_position(c[face_axis_u(axis)], a[axis], p.map_face_res, p.weight_bits, r.u, r.wu);
-  face_position(c[face_axis_v(axis)], a[axis], p.map_face_res, p.weight_bits, r.v, r.wv);
+  position(c[face_axis_u(axis)], a[axis], r.u, r.wu);
+  position(c[face_axis_v(axis)], a[axis], r.v, r.wv);
   return r;
+}
+
+constexpr CubeCoord cube_coordinates(int32_t x, int32_t y, int32_t z, const Precision& p) {
+  return cube_coordinates_with(x, y, z, [&p](int64_t s, int64_t m, uint32_t& cell, uint32_t& weight) {
+    face_position(s, m, p.map_face_res, p.weight_bits, cell, weight);
+  });
 }
 
 constexpr size_t map_index(int face, uint32_t u, uint32_t v, int res) {

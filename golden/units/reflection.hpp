@@ -21,8 +21,8 @@ inline Gradient reduce_vector(int64_t x, int64_t y, int64_t z, int bits) {
   int64_t m = mag(x);
   if (mag(y) > m) m = mag(y);
   if (mag(z) > m) m = mag(z);
-  int s = 0;
-  while ((m >> s) > max_signed(bits)) ++s;
+  // The smallest such shift leaves m with bits-1 significant bits.
+  const int s = m > max_signed(bits) ? bit_length(static_cast<uint64_t>(m)) - (bits - 1) : 0;
   auto shrink = [&](int64_t v) { return static_cast<int32_t>(v < 0 ? -((-v) >> s) : v >> s); };
   return {shrink(x), shrink(y), shrink(z)};
 }

@@ -10,9 +10,16 @@ namespace cube4::golden {
 
 // a + (b - a) * w / 2^W, rounded half up; w in [0, 2^W] (both ends return a
 // voxel exactly). The result lies between a and b, so it never needs
-// saturation and keeps the width of its inputs.
+// saturation and keeps the width of its inputs. T may be any signed type
+// that holds (b - a) * w + 2^(W-1): int32_t does for every allowed width
+// (16-bit voxels, 14-bit weights), which lets whole beams vectorise.
+template <class T>
+constexpr T lerp_t(T a, T b, T w, int weight_bits) {
+  return a + (((b - a) * w + (T{1} << (weight_bits - 1))) >> weight_bits);
+}
+
 constexpr int64_t lerp(int64_t a, int64_t b, int64_t w, int weight_bits) {
-  return a + round_shift((b - a) * w, weight_bits);
+  return lerp_t<int64_t>(a, b, w, weight_bits);
 }
 
 constexpr int64_t bilerp(int64_t v00, int64_t v10, int64_t v01, int64_t v11,

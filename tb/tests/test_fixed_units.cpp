@@ -398,3 +398,29 @@ TEST(CutPlane, InsideRampAndOutside) {
   EXPECT_EQ(cut_factor(6, hard, kP), 0u);
   EXPECT_EQ(cut_alpha(3000, 4095, kP), 3000u);
 }
+
+TEST(CubeMap, DivisionTableEqualsTheDivider) {
+  for (int res : {4, 8, 16}) {
+    const FacePositionTable table(127, res, kP.weight_bits);
+    for (int m = 1; m <= 127; ++m)
+      for (int s = -m; s <= m; ++s) {
+        uint32_t c1 = 0, w1 = 0, c2 = 0, w2 = 0;
+        face_position(s, m, res, kP.weight_bits, c1, w1);
+        table(s, m, c2, w2);
+        ASSERT_EQ(c1, c2) << s << "/" << m;
+        ASSERT_EQ(w1, w2) << s << "/" << m;
+      }
+  }
+}
+
+TEST(Reflection, ReduceVectorUsesTheSmallestShift) {
+  std::mt19937_64 gen(9);
+  for (int i = 0; i < 200000; ++i) {
+    const int64_t x = static_cast<int64_t>(gen() >> (gen() % 60)) * ((gen() & 1) ? 1 : -1);
+    const Gradient g = reduce_vector(x, x / 3, -x / 7, 8);
+    const int64_t m = x < 0 ? -x : x;
+    int s = 0;
+    while ((m >> s) > 127) ++s;  // the definition, spelled out
+    ASSERT_EQ(g.x, x < 0 ? -((-x) >> s) : x >> s) << x;
+  }
+}

@@ -166,3 +166,58 @@ TEST(RenderFixed, AnisotropicSpacingMatchesTheIsotropicVolume) {
   aniso.host = golden::program_host(aniso.scene, half);
   EXPECT_GT(test::compare(test::final_fixed(iso), test::final_fixed(aniso)).psnr, 25.0);
 }
+
+namespace {
+struct NullProbe : golden::SampleProbe {
+  uint64_t seen = 0;
+  void sample(int, int, const golden::SliceControl&, uint32_t, const golden::Gradient&) override { ++seen; }
+};
+}  // namespace
+
+TEST(RenderFixed, SkippingSamplesThatCannotChangeTheRayIsExact) {
+  // A probe makes the renderer shade every sample; without one it skips the
+  // composited samples of classified α = 0 and those behind opaque rays.
+  for (const char* extra : {"", R"(, "transfer": {"opacity": [[0, 0], [0.5, 0], [0.55, 1], [1, 1]]})",
+                            R"(, "gradient_modulation": {"opacity": true, "diffuse": true, "specular": true})"}) {
+    const auto s = test::setup(sphere_scene(direction(0.4, -0.3, 1), extra, 20));
+    NullProbe probe;
+    const golden::BasePlane all = golden::render_fixed(s.volume, s.host.regs, nullptr, {}, &probe);
+    EXPECT_EQ(probe.seen, 20u * 20 * 20);
+    EXPECT_EQ(golden::render_fixed(s.volume, s.host.regs).rgba, all.rgba) << extra;
+  }
+}
+
+namespace {
+// Checks every sample the renderer produced against trilinear() on the
+// sample's own eight voxels, fetched through the view's axis mapping.
+struct TrilinearCheck : golden::SampleProbe {
+  const golden::Volume& vol;
+  const golden::ViewFactorisation& view;
+  int weight_bits;
+  uint64_t checked = 0, wrong = 0;
+  TrilinearCheck(const golden::Volume& v, const golden::ViewFactorisation& f, int w) : vol(v), view(f), weight_bits(w) {}
+  uint32_t voxel(int x, int y, int z) const {
+    const golden::Vec3 o = view.to_object({double(x), double(y), double(z)});
+    for (int i = 0; i < 3; ++i)
+      if (o[i] < 0 || o[i] > vol.dim[i] - 1 || x >= view.pdim[0] || y >= view.pdim[1] || z >= view.pdim[2]) return 0;
+    return vol.at(int(o[0]), int(o[1]), int(o[2]));
+  }
+  void sample(int x, int y, const golden::SliceControl& c, uint32_t value, const golden::Gradient&) override {
+    std::array<uint32_t, 8> v;
+    for (int i = 0; i < 8; ++i) v[i] = voxel(x + (i & 1), y + (i >> 1 & 1), c.z_voxel + (i >> 2));
+    ++checked;
+    if (golden::trilinear(v, c.wx, c.wy, c.wz, weight_bits) != value) ++wrong;
+  }
+};
+}  // namespace
+
+TEST(RenderFixed, BeamWiseInterpolationEqualsTrilinearPerSample) {
+  for (int S : {1, 3}) {
+    const auto s = test::setup(R"({"volume": {"synthetic": "noise", "size": [13, 11, 9], "seed": 4},
+        "supersampling": )" + std::to_string(S) + R"(, "view": )" + direction(-0.45, 0.3, -1) + "}");
+    TrilinearCheck check(s.volume, s.host.view, s.scene.precision.weight_bits);
+    golden::render_fixed(s.volume, s.host.regs, nullptr, {}, &check);
+    EXPECT_EQ(check.checked, 13u * 11 * 9 * S);
+    EXPECT_EQ(check.wrong, 0u);
+  }
+}

@@ -1,0 +1,139 @@
+// cube4_shade_phong: the Phong combine of VolumePro §3.5,
+//   RGB = (ke + kd*Id*Gd) * SampleRGB + ks*Is*Gs * SpecularColor,
+// bit-exact with golden phong() (golden/units/phong.hpp):
+//   fd  = ke + round_shift(kd * mul_frac(Id, Gd, AlphaBits), MapFracBits)
+//   fs  =      round_shift(ks * mul_frac(Is, Gs, AlphaBits), MapFracBits)
+//   out = sat_unsigned(round_shift(c * fd, CoefFracBits)
+//                      + round_shift(spec_c * fs, CoefFracBits), AlphaBits)
+// with mul_frac(x, f, n) = (x * (f + (f >> (n-1))) + 2^(n-1)) >> n and
+// round_shift(v, s) = (v + 2^(s-1)) >> s (v >= 0 throughout, so no signs).
+//
+// Widths: mul_frac(Id, Gd) <= Id: MapBits; fd < 2^(CoefBits+MapBits-MapFracBits+1);
+// fs < 2^(CoefBits+MapBits-MapFracBits).
+//
+// Latency: 3 cycles (1: mul_frac of Id and Is; 2: fd and fs; 3: the colour
+// products, sum and saturation). The colour travels with the sample (it is
+// used in stage 3). Fully pipelined, one sample per clock. Handshake:
+// valid-only; valid_i travels with the data to valid_o. Only the valid
+// registers are reset. ke/kd/ks and the specular colour are frame registers:
+// change them only while no sample is in flight.
+//
+// Parameters (defaults = golden Precision): AlphaBits, MapBits,
+// MapFracBits, CoefBits, CoefFracBits.
+module cube4_shade_phong #(
+  parameter int unsigned AlphaBits    = 12,
+  parameter int unsigned MapBits      = 16,
+  parameter int unsigned MapFracBits  = 8,
+  parameter int unsigned CoefBits     = 10,
+  parameter int unsigned CoefFracBits = 8
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  // Frame registers (golden ShadeCoefs).
+  input  logic [CoefBits-1:0]  ke_i,
+  input  logic [CoefBits-1:0]  kd_i,
+  input  logic [CoefBits-1:0]  ks_i,
+  input  logic [AlphaBits-1:0] spec_red_i,
+  input  logic [AlphaBits-1:0] spec_green_i,
+  input  logic [AlphaBits-1:0] spec_blue_i,
+  // Sample stream.
+  input  logic                 valid_i,
+  input  logic [AlphaBits-1:0] red_i,
+  input  logic [AlphaBits-1:0] green_i,
+  input  logic [AlphaBits-1:0] blue_i,
+  input  logic [MapBits-1:0]   id_i,
+  input  logic [MapBits-1:0]   is_i,
+  input  logic [AlphaBits-1:0] gd_i,
+  input  logic [AlphaBits-1:0] gs_i,
+  output logic                 valid_o,
+  output logic [AlphaBits-1:0] red_o,
+  output logic [AlphaBits-1:0] green_o,
+  output logic [AlphaBits-1:0] blue_o
+);
+
+  localparam int unsigned A        = AlphaBits;
+  localparam int unsigned FsBits   = CoefBits + MapBits - MapFracBits;
+  localparam int unsigned FdBits   = FsBits + 1;
+  localparam int unsigned KBits    = CoefBits + MapBits;                // kd * mul_frac
+  localparam int unsigned CBits    = A + FdBits;                        // colour * factor
+  localparam int unsigned SumBits  = CBits - CoefFracBits + 1;
+
+  /////////////////////////////////////
+  // Stage 1: mul_frac(Id, Gd), (Is, Gs) //
+  /////////////////////////////////////
+  // (x * (f + (f >> (A-1))) + 2^(A-1)) >> A; the result never exceeds x.
+  function automatic logic [MapBits-1:0] mul_frac(input logic [MapBits-1:0] x,
+                                                   input logic [A-1:0]       f);
+    logic [A:0]         f_unit;  // f mapped onto [0, 2^A]
+    logic [MapBits+A:0] prod;
+    f_unit = {1'b0, f} + (A+1)'(f[A-1]);
+    prod   = (MapBits+A+1)'(x) * (MapBits+A+1)'(f_unit) + ((MapBits+A+1)'(1) << (A - 1));
+    mul_frac = MapBits'(prod >> A);
+  endfunction
+
+  logic [MapBits-1:0] md_q, ms_q;
+  logic [3*A-1:0]     color_q;
+  always_ff @(posedge clk_i) begin : stage1_regs
+    md_q    <= mul_frac(id_i, gd_i);
+    ms_q    <= mul_frac(is_i, gs_i);
+    color_q <= {red_i, green_i, blue_i};
+  end
+
+  ////////////////////////////////
+  // Stage 2: fd and fs factors //
+  ////////////////////////////////
+  // round_shift(v, s) for v >= 0: (v + (2^s >> 1)) >> s (no rounding at s = 0).
+  localparam logic [KBits-1:0] MapHalf = KBits'((64'd1 << MapFracBits) >> 1);
+
+  logic [KBits-1:0]  kd_prod, ks_prod;
+  logic [FsBits-1:0] kd_term, ks_term;
+  assign kd_prod = KBits'(kd_i) * KBits'(md_q) + MapHalf;
+  assign ks_prod = KBits'(ks_i) * KBits'(ms_q) + MapHalf;
+  // The rounding addition cannot carry out: kd*md <= (2^C-1)(2^M-1).
+  assign kd_term = FsBits'(kd_prod >> MapFracBits);
+  assign ks_term = FsBits'(ks_prod >> MapFracBits);
+
+  logic [FdBits-1:0] fd_q;
+  logic [FsBits-1:0] fs_q;
+  logic [3*A-1:0]    color_qq;
+  always_ff @(posedge clk_i) begin : stage2_regs
+    fd_q     <= FdBits'(kd_term) + FdBits'(ke_i);
+    fs_q     <= ks_term;
+    color_qq <= color_q;
+  end
+
+  ///////////////////////////////////////////////
+  // Stage 3: colour products, sum, saturation //
+  ///////////////////////////////////////////////
+  localparam logic [CBits-1:0] CoefHalf = CBits'((64'd1 << CoefFracBits) >> 1);
+  localparam logic [SumBits-1:0] AlphaMax = SumBits'((64'd1 << A) - 1);
+
+  function automatic logic [A-1:0] channel(input logic [A-1:0]      c,
+                                          input logic [A-1:0]      spec,
+                                          input logic [FdBits-1:0] fd,
+                                          input logic [FsBits-1:0] fs);
+    logic [CBits-1:0]   diffuse, specular;
+    logic [SumBits-1:0] sum;
+    diffuse  = CBits'(c) * CBits'(fd) + CoefHalf;
+    specular = CBits'(spec) * CBits'(fs) + CoefHalf;
+    sum      = SumBits'(diffuse >> CoefFracBits) + SumBits'(specular >> CoefFracBits);
+    channel  = (sum > AlphaMax) ? {A{1'b1}} : sum[A-1:0];
+  endfunction
+
+  always_ff @(posedge clk_i) begin : stage3_regs
+    red_o   <= channel(color_qq[3*A-1:2*A], spec_red_i, fd_q, fs_q);
+    green_o <= channel(color_qq[2*A-1:A], spec_green_i, fd_q, fs_q);
+    blue_o  <= channel(color_qq[A-1:0], spec_blue_i, fd_q, fs_q);
+  end
+
+  logic [2:0] valid_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin : valid_regs
+    if (!rst_ni) begin
+      valid_q <= '0;
+    end else begin
+      valid_q <= {valid_q[1:0], valid_i};
+    end
+  end
+  assign valid_o = valid_q[2];
+
+endmodule

@@ -1,0 +1,376 @@
+// cube4_shader: the classification-and-shading unit of one rendering
+// pipeline, bit-exact with golden shade_sample() (golden/pipeline.hpp)
+// without cropping and the cut plane (those act in cube4_composite):
+//   value  = sample
+//   (rgb, alpha, gm) = cube4_shade_classify(sample, |g|)   (magnitude, gm_opacity)
+//   if shading:
+//     Id  = reflectance(diffuse map,  cube_coordinates(g))
+//     Is  = specular ? reflectance(specular map, cube_coordinates(R(g, eye))) : 0
+//     rgb = phong(rgb, Id, Is, gm_diffuse ? gm : one, gm_specular ? gm : one)
+//
+// Structure (latencies with the default parameters):
+//   specular path: reflection (4) -> cube_coord (7) -> reflectance (3) = 14
+//   diffuse path:  cube_coord (7) -> reflectance (3), then Id delayed 4 = 14
+//   classify (2):  sample and |g| delayed 12, so colour/alpha/gm arrive at 14
+//   phong (3):     14 -> 17; alpha delayed 3, the sample value delayed 17.
+// Shading off is phong with ke = 1.0 (2^CoefFracBits), kd = ks = 0, which
+// returns the colour exactly (round_shift(c << CoefFracBits, CoefFracBits) = c,
+// no saturation); specular off is ks = 0, which gives the same fs = 0 as golden
+// Is = 0. So one phong serves all modes and the colour needs no bypass delay.
+//
+// Inputs: grad_*_i is the gradient unit's output (zero when the gradient unit
+// is off, as golden Gradient{}), grad_mag_i its magnitude (golden
+// gradient_magnitude(g)).
+//
+// Latency: Latency = 4 + (1 + ceil(($clog2(MapFaceRes)+WeightBits)/DivBitsPerStage))
+// + 3 + 3 cycles = 17 with the defaults. Fully pipelined, one sample per
+// clock, all internal delays balanced. Handshake: valid-only; valid_i travels
+// with the data to valid_o. Only the valid registers are reset. Mode,
+// coefficient and eye inputs and the four tables are frame registers: change
+// them only while no sample is in flight.
+//
+// RAMs (defaults): classification 4096 x 36 = 147456 bits, GmLUT 256 x 8 =
+// 2048 bits, diffuse and specular maps 4 banks x 96 x 16 = 6144 bits each.
+//
+// Parameters (defaults = golden Precision): VoxelBits, WeightBits,
+// GradientBits, MagnitudeBits, ColorBits, AlphaBits, GmlutBits, MapFaceRes,
+// MapBits, MapFracBits, CoefBits, CoefFracBits, EyeBits; DivBitsPerStage
+// (cube_coord divider).
+module cube4_shader #(
+  parameter int unsigned VoxelBits       = 12,
+  parameter int unsigned WeightBits      = 8,
+  parameter int unsigned GradientBits    = 8,
+  parameter int unsigned MagnitudeBits   = 8,
+  parameter int unsigned ColorBits       = 8,
+  parameter int unsigned AlphaBits       = 12,
+  parameter int unsigned GmlutBits       = 8,
+  parameter int unsigned MapFaceRes      = 8,
+  parameter int unsigned MapBits         = 16,
+  parameter int unsigned MapFracBits     = 8,
+  parameter int unsigned CoefBits        = 10,
+  parameter int unsigned CoefFracBits    = 8,
+  parameter int unsigned EyeBits         = 8,
+  parameter int unsigned DivBitsPerStage = 2
+) (
+  input  logic                                   clk_i,
+  input  logic                                   rst_ni,
+  // Frame registers: modes (golden Registers fields of the same names).
+  input  logic                                   magnitude_i,
+  input  logic                                   shading_i,
+  input  logic                                   specular_i,
+  input  logic                                   gm_opacity_i,
+  input  logic                                   gm_diffuse_i,
+  input  logic                                   gm_specular_i,
+  // Frame registers: coefficients (golden ShadeCoefs) and eye vector.
+  input  logic [CoefBits-1:0]                    ke_i,
+  input  logic [CoefBits-1:0]                    kd_i,
+  input  logic [CoefBits-1:0]                    ks_i,
+  input  logic [AlphaBits-1:0]                   spec_red_i,
+  input  logic [AlphaBits-1:0]                   spec_green_i,
+  input  logic [AlphaBits-1:0]                   spec_blue_i,
+  input  logic signed [EyeBits-1:0]              eye_x_i,
+  input  logic signed [EyeBits-1:0]              eye_y_i,
+  input  logic signed [EyeBits-1:0]              eye_z_i,
+  // Host write ports: classification ({r, g, b, a}), GmLUT, and the
+  // diffuse and specular maps (map_index() addresses).
+  input  logic                                   class_we_i,
+  input  logic [VoxelBits-1:0]                   class_waddr_i,
+  input  logic [3*ColorBits+AlphaBits-1:0]       class_wdata_i,
+  input  logic                                   gmlut_we_i,
+  input  logic [MagnitudeBits-1:0]               gmlut_waddr_i,
+  input  logic [GmlutBits-1:0]                   gmlut_wdata_i,
+  input  logic                                   dmap_we_i,
+  input  logic [$clog2(6*MapFaceRes*MapFaceRes)-1:0] dmap_waddr_i,
+  input  logic [MapBits-1:0]                     dmap_wdata_i,
+  input  logic                                   smap_we_i,
+  input  logic [$clog2(6*MapFaceRes*MapFaceRes)-1:0] smap_waddr_i,
+  input  logic [MapBits-1:0]                     smap_wdata_i,
+  // Sample stream.
+  input  logic                                   valid_i,
+  input  logic [VoxelBits-1:0]                   sample_i,
+  input  logic signed [GradientBits-1:0]         grad_x_i,
+  input  logic signed [GradientBits-1:0]         grad_y_i,
+  input  logic signed [GradientBits-1:0]         grad_z_i,
+  input  logic [MagnitudeBits-1:0]               grad_mag_i,
+  output logic                                   valid_o,
+  output logic [AlphaBits-1:0]                   red_o,
+  output logic [AlphaBits-1:0]                   green_o,
+  output logic [AlphaBits-1:0]                   blue_o,
+  output logic [AlphaBits-1:0]                   alpha_o,
+  output logic [VoxelBits-1:0]                   value_o
+);
+
+  localparam int unsigned CellBits   = $clog2(MapFaceRes);
+  localparam int unsigned LatRefl    = 4;
+  localparam int unsigned LatCube    = 1 + (CellBits + WeightBits + DivBitsPerStage - 1) / DivBitsPerStage;
+  localparam int unsigned LatMap     = 3;
+  localparam int unsigned LatClass   = 2;
+  localparam int unsigned LatPhong   = 3;
+  localparam int unsigned PhongIn    = LatRefl + LatCube + LatMap;  // phong inputs
+  localparam int unsigned ClassDelay = PhongIn - LatClass;
+  localparam int unsigned Latency    = PhongIn + LatPhong;
+  localparam int unsigned A          = AlphaBits;
+
+  ///////////////////////////////
+  // Diffuse path: g -> Id     //
+  ///////////////////////////////
+  logic                  dcc_valid, dcc_coord_valid;
+  logic [2:0]            dcc_face;
+  logic [CellBits-1:0]   dcc_u, dcc_v;
+  logic [WeightBits:0]   dcc_wu, dcc_wv;
+
+  cube4_shade_cube_coord #(
+    .GradientBits    (GradientBits),
+    .WeightBits      (WeightBits),
+    .MapFaceRes      (MapFaceRes),
+    .DivBitsPerStage (DivBitsPerStage)
+  ) u_diffuse_coord (
+    .clk_i,
+    .rst_ni,
+    .valid_i,
+    .x_i           (grad_x_i),
+    .y_i           (grad_y_i),
+    .z_i           (grad_z_i),
+    .valid_o       (dcc_valid),
+    .coord_valid_o (dcc_coord_valid),
+    .face_o        (dcc_face),
+    .u_o           (dcc_u),
+    .v_o           (dcc_v),
+    .wu_o          (dcc_wu),
+    .wv_o          (dcc_wv)
+  );
+
+  logic               dmap_valid;
+  logic [MapBits-1:0] id_early;
+
+  cube4_shade_reflectance #(
+    .WeightBits (WeightBits),
+    .MapFaceRes (MapFaceRes),
+    .MapBits    (MapBits)
+  ) u_diffuse_map (
+    .clk_i,
+    .rst_ni,
+    .we_i          (dmap_we_i),
+    .waddr_i       (dmap_waddr_i),
+    .wdata_i       (dmap_wdata_i),
+    .valid_i       (dcc_valid),
+    .coord_valid_i (dcc_coord_valid),
+    .face_i        (dcc_face),
+    .u_i           (dcc_u),
+    .v_i           (dcc_v),
+    .wu_i          (dcc_wu),
+    .wv_i          (dcc_wv),
+    .valid_o       (dmap_valid),
+    .value_o       (id_early)
+  );
+
+  // Id waits for the reflection vector's latency.
+  logic [LatRefl*MapBits-1:0] id_delay_q;
+  always_ff @(posedge clk_i) begin : id_delay
+    id_delay_q[0 +: MapBits] <= id_early;
+    for (int unsigned k = 1; k < LatRefl; k++) begin
+      id_delay_q[k*MapBits +: MapBits] <= id_delay_q[(k-1)*MapBits +: MapBits];
+    end
+  end
+
+  logic [MapBits-1:0] id;
+  assign id = id_delay_q[(LatRefl-1)*MapBits +: MapBits];
+
+  ////////////////////////////////////////
+  // Specular path: g -> R -> Is        //
+  ////////////////////////////////////////
+  logic                           refl_valid;
+  logic signed [GradientBits-1:0] refl_x, refl_y, refl_z;
+
+  cube4_shade_reflection #(
+    .GradientBits (GradientBits),
+    .EyeBits      (EyeBits)
+  ) u_reflection (
+    .clk_i,
+    .rst_ni,
+    .eye_x_i,
+    .eye_y_i,
+    .eye_z_i,
+    .valid_i,
+    .x_i     (grad_x_i),
+    .y_i     (grad_y_i),
+    .z_i     (grad_z_i),
+    .valid_o (refl_valid),
+    .x_o     (refl_x),
+    .y_o     (refl_y),
+    .z_o     (refl_z)
+  );
+
+  logic                  scc_valid, scc_coord_valid;
+  logic [2:0]            scc_face;
+  logic [CellBits-1:0]   scc_u, scc_v;
+  logic [WeightBits:0]   scc_wu, scc_wv;
+
+  cube4_shade_cube_coord #(
+    .GradientBits    (GradientBits),
+    .WeightBits      (WeightBits),
+    .MapFaceRes      (MapFaceRes),
+    .DivBitsPerStage (DivBitsPerStage)
+  ) u_specular_coord (
+    .clk_i,
+    .rst_ni,
+    .valid_i       (refl_valid),
+    .x_i           (refl_x),
+    .y_i           (refl_y),
+    .z_i           (refl_z),
+    .valid_o       (scc_valid),
+    .coord_valid_o (scc_coord_valid),
+    .face_o        (scc_face),
+    .u_o           (scc_u),
+    .v_o           (scc_v),
+    .wu_o          (scc_wu),
+    .wv_o          (scc_wv)
+  );
+
+  logic               smap_valid;
+  logic [MapBits-1:0] is_value;
+
+  cube4_shade_reflectance #(
+    .WeightBits (WeightBits),
+    .MapFaceRes (MapFaceRes),
+    .MapBits    (MapBits)
+  ) u_specular_map (
+    .clk_i,
+    .rst_ni,
+    .we_i          (smap_we_i),
+    .waddr_i       (smap_waddr_i),
+    .wdata_i       (smap_wdata_i),
+    .valid_i       (scc_valid),
+    .coord_valid_i (scc_coord_valid),
+    .face_i        (scc_face),
+    .u_i           (scc_u),
+    .v_i           (scc_v),
+    .wu_i          (scc_wu),
+    .wv_i          (scc_wv),
+    .valid_o       (smap_valid),
+    .value_o       (is_value)
+  );
+
+  /////////////////////////////////////////////
+  // Classification, timed to meet Id and Is //
+  /////////////////////////////////////////////
+  // The sample travels to the output (value_o); classify taps it at ClassDelay.
+  logic [Latency*VoxelBits-1:0]        sample_delay_q;
+  logic [ClassDelay*MagnitudeBits-1:0] mag_delay_q;
+  always_ff @(posedge clk_i) begin : sample_delay
+    sample_delay_q[0 +: VoxelBits] <= sample_i;
+    for (int unsigned k = 1; k < Latency; k++) begin
+      sample_delay_q[k*VoxelBits +: VoxelBits] <= sample_delay_q[(k-1)*VoxelBits +: VoxelBits];
+    end
+    mag_delay_q[0 +: MagnitudeBits] <= grad_mag_i;
+    for (int unsigned k = 1; k < ClassDelay; k++) begin
+      mag_delay_q[k*MagnitudeBits +: MagnitudeBits] <=
+          mag_delay_q[(k-1)*MagnitudeBits +: MagnitudeBits];
+    end
+  end
+
+  logic [ClassDelay-1:0] class_valid_delay_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin : class_valid_delay
+    if (!rst_ni) begin
+      class_valid_delay_q <= '0;
+    end else begin
+      class_valid_delay_q[0] <= valid_i;
+      for (int unsigned k = 1; k < ClassDelay; k++) begin
+        class_valid_delay_q[k] <= class_valid_delay_q[k-1];
+      end
+    end
+  end
+
+  logic         class_valid;
+  logic [A-1:0] class_red, class_green, class_blue, class_alpha, gm;
+
+  cube4_shade_classify #(
+    .VoxelBits     (VoxelBits),
+    .MagnitudeBits (MagnitudeBits),
+    .ColorBits     (ColorBits),
+    .AlphaBits     (AlphaBits),
+    .GmlutBits     (GmlutBits)
+  ) u_classify (
+    .clk_i,
+    .rst_ni,
+    .magnitude_i,
+    .gm_opacity_i,
+    .class_we_i,
+    .class_waddr_i,
+    .class_wdata_i,
+    .gmlut_we_i,
+    .gmlut_waddr_i,
+    .gmlut_wdata_i,
+    .valid_i    (class_valid_delay_q[ClassDelay-1]),
+    .sample_i   (sample_delay_q[(ClassDelay-1)*VoxelBits +: VoxelBits]),
+    .grad_mag_i (mag_delay_q[(ClassDelay-1)*MagnitudeBits +: MagnitudeBits]),
+    .valid_o    (class_valid),
+    .red_o      (class_red),
+    .green_o    (class_green),
+    .blue_o     (class_blue),
+    .alpha_o    (class_alpha),
+    .gm_o       (gm)
+  );
+
+  ///////////
+  // Phong //
+  ///////////
+  // Modes as coefficients (see the header): shading off = identity.
+  localparam logic [CoefBits-1:0] CoefOne = CoefBits'(64'd1 << CoefFracBits);
+
+  logic [CoefBits-1:0] ke_eff, kd_eff, ks_eff;
+  assign ke_eff = shading_i ? ke_i : CoefOne;
+  assign kd_eff = shading_i ? kd_i : '0;
+  assign ks_eff = (shading_i && specular_i) ? ks_i : '0;
+
+  logic [A-1:0] gd, gs;
+  assign gd = gm_diffuse_i ? gm : {A{1'b1}};
+  assign gs = gm_specular_i ? gm : {A{1'b1}};
+
+  cube4_shade_phong #(
+    .AlphaBits    (AlphaBits),
+    .MapBits      (MapBits),
+    .MapFracBits  (MapFracBits),
+    .CoefBits     (CoefBits),
+    .CoefFracBits (CoefFracBits)
+  ) u_phong (
+    .clk_i,
+    .rst_ni,
+    .ke_i         (ke_eff),
+    .kd_i         (kd_eff),
+    .ks_i         (ks_eff),
+    .spec_red_i,
+    .spec_green_i,
+    .spec_blue_i,
+    .valid_i      (smap_valid),
+    .red_i        (class_red),
+    .green_i      (class_green),
+    .blue_i       (class_blue),
+    .id_i         (id),
+    .is_i         (is_value),
+    .gd_i         (gd),
+    .gs_i         (gs),
+    .valid_o,
+    .red_o,
+    .green_o,
+    .blue_o
+  );
+
+  // Alpha waits for phong.
+  logic [LatPhong*A-1:0] alpha_delay_q;
+  always_ff @(posedge clk_i) begin : alpha_delay
+    alpha_delay_q[0 +: A] <= class_alpha;
+    for (int unsigned k = 1; k < LatPhong; k++) begin
+      alpha_delay_q[k*A +: A] <= alpha_delay_q[(k-1)*A +: A];
+    end
+  end
+
+  assign alpha_o = alpha_delay_q[(LatPhong-1)*A +: A];
+  assign value_o = sample_delay_q[(Latency-1)*VoxelBits +: VoxelBits];
+
+  // The valid chain runs through the specular path; the other units' valid
+  // outputs carry the same information at their own times.
+  logic unused_valids;
+  assign unused_valids = ^{dmap_valid, class_valid};
+
+endmodule

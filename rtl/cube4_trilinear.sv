@@ -1,0 +1,115 @@
+// cube4_trilinear: the interpolation unit, trilinear interpolation of eight
+// voxels to one sample in Cube-4's SFG order: x, then y, then z.
+//
+// Function: bit-exact with golden trilinear() (golden/units/trilinear.hpp):
+//   front  = lerp(lerp(v0, v1, wx), lerp(v2, v3, wx), wy)
+//   back   = lerp(lerp(v4, v5, wx), lerp(v6, v7, wx), wy)
+//   sample = lerp(front, back, wz)
+// Voxel i of voxels_i (bits [i*VoxelBits +: VoxelBits]) is the voxel at
+// (x + (i & 1), y + (i >> 1 & 1), z + (i >> 2)); each lerp rounds half up
+// back to VoxelBits (cube4_lerp). Weights are in [0, 2^WeightBits].
+//
+// Latency: 3 cycles, fully pipelined (one new input set per clock):
+//   stage 1 registers the four x lerps, stage 2 the two y lerps, stage 3
+//   the z lerp (sample_o is driven by the stage-3 register).
+// Handshake: valid-only. valid_i travels with the data and appears on
+//   valid_o 3 cycles later; only the valid pipeline is reset, data
+//   registers are not (sample_o is meaningful only while valid_o is high).
+//
+// Parameters:
+//   VoxelBits  - voxel and sample width (golden Precision::voxel_bits, 12)
+//   WeightBits - weight fraction bits; weight ports are WeightBits+1 wide
+//                (Precision::weight_bits, 8)
+module cube4_trilinear #(
+  parameter int unsigned VoxelBits  = 12,
+  parameter int unsigned WeightBits = 8
+) (
+  input  logic                   clk_i,
+  input  logic                   rst_ni,
+  input  logic                   valid_i,
+  input  logic [8*VoxelBits-1:0] voxels_i,
+  input  logic [WeightBits:0]    wx_i,
+  input  logic [WeightBits:0]    wy_i,
+  input  logic [WeightBits:0]    wz_i,
+  output logic                   valid_o,
+  output logic [VoxelBits-1:0]   sample_o
+);
+
+  localparam int unsigned Latency = 3;
+
+  // Valid pipeline: the only reset state.
+  logic [Latency-1:0] valid_d, valid_q;
+  assign valid_d = {valid_q[Latency-2:0], valid_i};
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      valid_q <= '0;
+    end else begin
+      valid_q <= valid_d;
+    end
+  end
+  assign valid_o = valid_q[Latency-1];
+
+  // Stage 1: four lerps in x.
+  // Unpacked-array assignment is not accepted by yosys 0.23: packed vectors.
+  logic [4*VoxelBits-1:0] x_d, x_q;
+  logic [WeightBits:0]   wy_q, wz1_q;
+
+  for (genvar i = 0; i < 4; i++) begin : g_x
+    cube4_lerp #(
+      .VoxelBits (VoxelBits),
+      .WeightBits(WeightBits)
+    ) u_lerp_x (
+      .a_i(voxels_i[(2*i)*VoxelBits +: VoxelBits]),
+      .b_i(voxels_i[(2*i+1)*VoxelBits +: VoxelBits]),
+      .w_i(wx_i),
+      .y_o(x_d[i*VoxelBits +: VoxelBits])
+    );
+  end
+
+  always_ff @(posedge clk_i) begin
+    x_q   <= x_d;
+    wy_q  <= wy_i;
+    wz1_q <= wz_i;
+  end
+
+  // Stage 2: two lerps in y (front: voxels 0..3, back: voxels 4..7).
+  logic [2*VoxelBits-1:0] y_d, y_q;
+  logic [WeightBits:0]  wz2_q;
+
+  for (genvar i = 0; i < 2; i++) begin : g_y
+    cube4_lerp #(
+      .VoxelBits (VoxelBits),
+      .WeightBits(WeightBits)
+    ) u_lerp_y (
+      .a_i(x_q[(2*i)*VoxelBits +: VoxelBits]),
+      .b_i(x_q[(2*i+1)*VoxelBits +: VoxelBits]),
+      .w_i(wy_q),
+      .y_o(y_d[i*VoxelBits +: VoxelBits])
+    );
+  end
+
+  always_ff @(posedge clk_i) begin
+    y_q   <= y_d;
+    wz2_q <= wz1_q;
+  end
+
+  // Stage 3: one lerp in z.
+  logic [VoxelBits-1:0] z_d, z_q;
+
+  cube4_lerp #(
+    .VoxelBits (VoxelBits),
+    .WeightBits(WeightBits)
+  ) u_lerp_z (
+    .a_i(y_q[VoxelBits-1:0]),
+    .b_i(y_q[2*VoxelBits-1:VoxelBits]),
+    .w_i(wz2_q),
+    .y_o(z_d)
+  );
+
+  always_ff @(posedge clk_i) begin
+    z_q <= z_d;
+  end
+  assign sample_o = z_q;
+
+endmodule

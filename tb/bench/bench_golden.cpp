@@ -1,0 +1,95 @@
+// Times the golden renderers on one core, frame by frame (base plane plus
+// warp, as a frame would be delivered), without the image-I/O libraries so
+// that start-up does not blur the numbers. Prints one JSON object.
+//   bench_golden [SCENE] [--model fixed|float|reference] [--frames N] [--warmup K]
+//                [--supersampling S] [--reference-step H]
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "golden/errors.hpp"
+#include "golden/renderers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+
+using namespace cube4::golden;
+
+int main(int argc, char** argv) {
+  std::string scene_path, model = "fixed";
+  int frames = 20, warmup = 3, supersampling = 0;
+  double step = 0.25;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) { std::fprintf(stderr, "bench_golden: %s needs a value\n", a.c_str()); std::exit(2); }
+      return argv[++i];
+    };
+    if (a == "--model") model = value();
+    else if (a == "--frames") frames = std::atoi(value().c_str());
+    else if (a == "--warmup") warmup = std::atoi(value().c_str());
+    else if (a == "--supersampling") supersampling = std::atoi(value().c_str());
+    else if (a == "--reference-step") step = std::atof(value().c_str());
+    else if (!a.empty() && a[0] != '-') scene_path = a;
+    else { std::fprintf(stderr, "bench_golden: unknown option %s\n", a.c_str()); return 2; }
+  }
+  if (model != "fixed" && model != "float" && model != "reference") {
+    std::fprintf(stderr, "bench_golden: --model %s: use fixed, float or reference\n", model.c_str());
+    return 2;
+  }
+  try {
+    Scene s = scene_path.empty() ? default_scene() : load_scene(scene_path);
+    if (supersampling > 0) s.supersampling = supersampling;
+    finish_scene(s);
+    const std::string dir = scene_path.empty() ? "." : std::filesystem::path(scene_path).parent_path().string();
+    const Volume vol = load_volume(s.volume, s.precision.voxel_bits, dir.empty() ? "." : dir);
+    const HostProgram h = program_host(s, vol);
+    std::vector<double> ms;
+    RenderStats stats;
+    volatile float sink = 0;
+    for (int f = 0; f < warmup + frames; ++f) {
+      const auto t0 = std::chrono::steady_clock::now();
+      ImageF img;
+      if (model == "fixed") {
+        const BasePlane bp = render_fixed(vol, h.regs, &stats);
+        img = warp(bp.to_float(), bp.shift_x, bp.shift_y, h.view);
+      } else if (model == "float") {
+        const BasePlaneF bp = render_float(vol, s, h.view, &stats);
+        img = warp(bp.image, bp.shift_x, bp.shift_y, h.view);
+      } else {
+        ReferenceOptions opt;
+        opt.step = step;
+        img = render_reference(vol, s, h.view, opt, &stats);
+      }
+      sink = sink + img.rgba[img.rgba.size() / 2];
+      const double t = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      if (f >= warmup) ms.push_back(t);
+    }
+    std::sort(ms.begin(), ms.end());
+    const double median = ms[ms.size() / 2];
+    nlohmann::json j = {
+        {"model", model},
+        {"scene", scene_path.empty() ? "(default)" : scene_path},
+        {"volume", vol.source},
+        {"dim", vol.dim},
+        {"image", {s.width, s.height}},
+        {"supersampling", s.supersampling},
+        {"frames", frames},
+        {"samples_per_frame", stats.samples},
+        {"ms", {{"median", median}, {"min", ms.front()}, {"max", ms.back()}}},
+        {"samples_per_second", stats.samples / (median * 1e-3)},
+    };
+    if (model == "reference") j["reference_step"] = step;
+    std::printf("%s\n", j.dump().c_str());
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "bench_golden: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
