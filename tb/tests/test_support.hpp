@@ -1,5 +1,8 @@
 // Small helpers shared by the golden-model tests.
 #pragma once
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <string>
 
 #include "golden/host_driver.hpp"
@@ -34,22 +37,18 @@ inline golden::ImageF final_float(const Setup& s) {
 }
 
 struct ImageError {
-  double psnr = 0;     // over RGB, peak 1
+  double psnr = 0;       // over RGB, peak 1
   double max_error = 0;
+  double mean_error = 0;
 };
 
+// RGB comparison through OpenImageIO's ImageBufAlgo::compare (what idiff uses).
 inline ImageError compare(const golden::ImageF& a, const golden::ImageF& b) {
-  double se = 0, mx = 0;
-  size_t n = 0;
-  for (size_t i = 0; i < a.rgba.size(); ++i) {
-    if (i % 4 == 3) continue;
-    const double d = static_cast<double>(a.rgba[i]) - b.rgba[i];
-    se += d * d;
-    mx = std::max(mx, std::fabs(d));
-    ++n;
-  }
-  const double mse = se / n;
-  return {mse == 0 ? 999.0 : 10 * std::log10(1.0 / mse), mx};
+  const OIIO::ImageSpec spec(a.width, a.height, 4, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageBuf ia(spec, const_cast<float*>(a.rgba.data()));
+  OIIO::ImageBuf ib(spec, const_cast<float*>(b.rgba.data()));
+  const auto r = OIIO::ImageBufAlgo::compare(ia, ib, 0.0f, 0.0f, OIIO::ROI(0, a.width, 0, a.height, 0, 1, 0, 3));
+  return {r.PSNR, r.maxerror, r.meanerror};
 }
 
 }  // namespace cube4::test
