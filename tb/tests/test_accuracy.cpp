@@ -84,6 +84,10 @@ TEST(Accuracy, FloatAgainstReference) {
     // estimators differ too), PSNR above 30 dB.
     EXPECT_LT(mean, 0.01);
     EXPECT_GT(e.psnr, 30.0);
+    // The largest differences sit on silhouettes, where the base plane's
+    // bilinear warp and the reference's per-pixel rays cover an edge pixel
+    // differently: at most half of it for a sub-pixel displacement.
+    EXPECT_LT(e.max_error, 0.5);
   }
 }
 
