@@ -5,24 +5,12 @@
 #include <memory>
 #include <vector>
 
+#include "golden/permuted_volume.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/renderers.hpp"
 
 namespace cube4::golden {
 namespace {
-
-// Address generation, functionally: permuted (x, y, z) -> voxel memory offset.
-struct PermutedAccess {
-  int64_t origin = 0;
-  int64_t stride[3] = {0, 0, 0};
-  PermutedAccess(const Volume& v, const Registers& r) {
-    const int64_t object_stride[3] = {1, v.dim[0], int64_t{v.dim[0]} * v.dim[1]};
-    for (int i = 0; i < 3; ++i) {
-      stride[i] = object_stride[r.perm[i]] * (r.flip[i] ? -1 : 1);
-      if (r.flip[i]) origin += (r.dim[i] - 1) * object_stride[r.perm[i]];
-    }
-  }
-};
 
 // A slice with a border of zeros: `pad` columns/rows before and after, so
 // neighbours of edge samples read zero (the volume is surrounded by zeros).
@@ -37,20 +25,8 @@ struct Plane {
   void clear() { std::fill(v.begin(), v.end(), 0); }
 };
 
-void load_voxel_slice(const Volume& vol, const Registers& r, const PermutedAccess& a, int z, Plane& out) {
-  if (z >= r.dim[2]) { out.clear(); return; }
-  const uint16_t* base = vol.data.data() + a.origin + a.stride[2] * z;
-  const int nx = r.dim[0], ny = r.dim[1];  // locals: int32_t stores cannot alias them
-  const int64_t sx = a.stride[0], sy = a.stride[1];
-  for (int y = 0; y < ny; ++y) {
-    const uint16_t* __restrict src = base + sy * y;
-    int32_t* __restrict dst = out.row(y);
-    if (sx == 1) {
-      for (int x = 0; x < nx; ++x) dst[x] = src[x];
-    } else {
-      for (int x = 0; x < nx; ++x) dst[x] = src[sx * x];
-    }
-  }
+void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out) {
+  for (int y = 0; y < out.ny; ++y) pv.load_beam(y, z, out.row(y));
 }
 
 // Interpolation unit over a whole sample slice: trilinear() for every
@@ -134,7 +110,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
   bp.shift_x = ix_last - r.x_start / frac_one;
   bp.shift_y = iy_last - r.y_start / frac_one;
 
-  const PermutedAccess access(vol, r);
+  const PermutedVolume access(vol, r.perm, r.flip);
   // Voxel slices zv and zv+1 (one extra zero column/row for x+1, y+1).
   Plane vox_lo(nx, ny, 1), vox_hi(nx, ny, 1);
   Interpolator interp(nx, ny, w);
@@ -146,9 +122,9 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
       if (c.z_voxel == loaded_z + 1 && loaded_z >= 0) {
         std::swap(vox_lo, vox_hi);
       } else {
-        load_voxel_slice(vol, r, access, c.z_voxel, vox_lo);
+        load_voxel_slice(access, c.z_voxel, vox_lo);
       }
-      load_voxel_slice(vol, r, access, c.z_voxel + 1, vox_hi);
+      load_voxel_slice(access, c.z_voxel + 1, vox_hi);
       loaded_z = c.z_voxel;
     }
     interp.slice(vox_lo, vox_hi, c, out);

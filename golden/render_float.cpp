@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "golden/fixed.hpp"
+#include "golden/permuted_volume.hpp"
 #include "golden/renderers.hpp"
 #include "golden/shading_model.hpp"
 #include "golden/units/ray_align.hpp"
@@ -36,28 +37,34 @@ struct FloatView {
     const double i = std::floor(v);
     return {static_cast<int>(i), v - i};
   }
-  // Voxel at permuted (x, y, z); zero outside the volume.
-  double voxel(int x, int y, int z) const {
-    if (x < 0 || y < 0 || z < 0 || x >= f.pdim[0] || y >= f.pdim[1] || z >= f.pdim[2]) return 0;
-    const Vec3 o = f.to_object({static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)});
-    return vol.at(static_cast<int>(o[0]), static_cast<int>(o[1]), static_cast<int>(o[2]));
-  }
 };
 
-void interpolate(const FloatView& fv, int k, PlaneF& out) {
+// Voxel slice z in permuted order, one zero column and row beyond the volume.
+void load_slice(const PermutedVolume& pv, int z, PlaneF& out) {
+  std::vector<double> beam(static_cast<size_t>(out.nx));
+  for (int y = 0; y <= out.ny; ++y) {
+    pv.load_beam(y, z, beam.data());
+    for (int x = 0; x < out.nx; ++x) out.at(x, y) = beam[x];
+    out.at(out.nx, y) = 0;
+  }
+}
+
+void interpolate(const FloatView& fv, const PermutedVolume& pv, int k, PlaneF& lo, PlaneF& hi, PlaneF& out) {
   if (k < 0 || k >= fv.K) { out.clear(); return; }
   const Offset ox = fv.x_offset(k), oy = fv.y_offset(k);
   const int z = k / fv.S;
   const double wz = static_cast<double>(k % fv.S) / fv.S;
+  load_slice(pv, z, lo);
+  load_slice(pv, z + 1, hi);
   for (int y = 0; y < out.ny; ++y)
     for (int x = 0; x < out.nx; ++x) {
-      auto bil = [&](int zz) {
-        const double a = fv.voxel(x, y, zz) + ox.frac * (fv.voxel(x + 1, y, zz) - fv.voxel(x, y, zz));
-        const double b = fv.voxel(x, y + 1, zz) + ox.frac * (fv.voxel(x + 1, y + 1, zz) - fv.voxel(x, y + 1, zz));
+      auto bil = [&](const PlaneF& v) {
+        const double a = v.at(x, y) + ox.frac * (v.at(x + 1, y) - v.at(x, y));
+        const double b = v.at(x, y + 1) + ox.frac * (v.at(x + 1, y + 1) - v.at(x, y + 1));
         return a + oy.frac * (b - a);
       };
-      const double lo = bil(z), hi = bil(z + 1);
-      out.at(x, y) = lo + wz * (hi - lo);
+      const double l = bil(lo), h = bil(hi);
+      out.at(x, y) = l + wz * (h - l);
     }
 }
 
@@ -103,9 +110,12 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
     px[2] = static_cast<float>(a.b); px[3] = static_cast<float>(a.a);
   };
 
+  const PermutedVolume pv(vol, f.perm, f.flip);
+  PlaneF vox_lo(nx, ny), vox_hi(nx, ny);
+  auto interpolate_slice = [&](int k, PlaneF& out) { interpolate(fv, pv, k, vox_lo, vox_hi, out); };
   PlaneF behind(nx, ny), current(nx, ny), ahead(nx, ny);
-  interpolate(fv, 0, current);
-  if (e.gradient) interpolate(fv, 1, ahead);
+  interpolate_slice(0, current);
+  if (e.gradient) interpolate_slice(1, ahead);
   std::vector<AccF> prev(static_cast<size_t>(nx) * ny), cur(prev.size());
   for (int k = 0; k < K; ++k) {
     const Offset ox = fv.x_offset(k), oy = fv.y_offset(k);
@@ -171,9 +181,9 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
     if (e.gradient) {
       std::swap(behind, current);
       std::swap(current, ahead);
-      interpolate(fv, k + 2, ahead);
+      interpolate_slice(k + 2, ahead);
     } else if (k + 1 < K) {
-      interpolate(fv, k + 1, current);
+      interpolate_slice(k + 1, current);
     }
     if (progress) progress(static_cast<double>(k + 1) / K);
   }
