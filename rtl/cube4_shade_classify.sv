@@ -91,6 +91,10 @@ module cube4_shade_classify #(
     assign gm_expanded[AlphaBits-1-i] = gmlut_q[GmlutBits-1-(i % GmlutBits)];
   end
 
+  // With GmlutBits > AlphaBits expand_bits keeps only the top bits.
+  logic unused_gmlut;
+  assign unused_gmlut = ^gmlut_q;
+
   logic [AlphaBits-1:0] gm_unit;
   assign gm_unit = magnitude_i ? gm_expanded : {AlphaBits{1'b1}};
 

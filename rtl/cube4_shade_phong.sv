@@ -116,7 +116,9 @@ module cube4_shade_phong #(
     logic [SumBits-1:0] sum;
     diffuse  = CBits'(c) * CBits'(fd) + CoefHalf;
     specular = CBits'(spec) * CBits'(fs) + CoefHalf;
-    sum      = SumBits'(diffuse >> CoefFracBits) + SumBits'(specular >> CoefFracBits);
+    diffuse  = diffuse >> CoefFracBits;
+    specular = specular >> CoefFracBits;
+    sum      = SumBits'(diffuse) + SumBits'(specular);
     channel  = (sum > AlphaMax) ? {A{1'b1}} : sum[A-1:0];
   endfunction
 

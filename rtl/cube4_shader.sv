@@ -102,7 +102,8 @@ module cube4_shader #(
 
   localparam int unsigned CellBits   = $clog2(MapFaceRes);
   localparam int unsigned LatRefl    = 4;
-  localparam int unsigned LatCube    = 1 + (CellBits + WeightBits + DivBitsPerStage - 1) / DivBitsPerStage;
+  localparam int unsigned LatCube    = 1 + (CellBits + WeightBits + DivBitsPerStage - 1)
+                                        / DivBitsPerStage;
   localparam int unsigned LatMap     = 3;
   localparam int unsigned LatClass   = 2;
   localparam int unsigned LatPhong   = 3;

@@ -1,0 +1,327 @@
+// cube4_composite: the compositing unit's datapath (VolumePro §3.6, §4.3):
+// cropping, the cut plane and the blend of one shaded sample into its ray's
+// accumulator. Bit-exact with the composition in golden shade_sample()
+// (golden/pipeline.hpp) and golden blend() (golden/units/composite.hpp):
+//   visible = crop_enabled ? crop_visible(x, y, z, crop) : 1
+//   if cut_enabled:
+//     d       = cut_distance(cut, (x << W) + wx, (y << W) + wy, (z << W) + wz)
+//     f       = cut_factor(d, cut)
+//     alpha   = cut_alpha(alpha, f)          (mul_frac)
+//     visible &= f != 0
+//   acc' = blend(mode, acc, {rgb, alpha, value, visible})
+// blend: front-to-back (mode 0, and 3), MIP (1), MinIP (2); an invisible
+// sample leaves the accumulator unchanged. Both blends use the premultiplied
+// colour mul_frac(c, alpha), so it is computed before the accumulator is
+// needed, and the accumulator path is one multiply deep.
+//
+// The ray-alignment FIFOs are outside: the predecessor accumulator acc_*_i
+// enters AccDelay = 6 cycles after its sample (valid_i) and the result
+// appears one cycle later, so the accumulator -> result loop has a latency
+// of 1 cycle (what bounds back-to-back samples of one ray), while the
+// sample -> result latency is Latency = 7 cycles:
+//   1: crop compares, the three products of d       2: d = sum, saturated
+//   3: outside distance and comparisons             4: ramp (the wide product)
+//   5: cut factor and cut_alpha                     6: premultiplied colour
+//   7: blend with acc_*_i (driven in cycle 6)
+// Fully pipelined, one sample per clock. Handshake: valid-only; valid_i
+// travels with the data to valid_o (acc_*_i carries no valid of its own; it
+// is ignored in cycles whose sample was not valid). Only the valid registers
+// are reset. The crop, cut and mode inputs are frame registers: change them
+// only while no sample is in flight.
+//
+// Register widths (golden holds them in int32/int64; the RTL domain):
+//   x, y, z, crop slabs: unsigned PosBits; wx, wy, wz: WeightBits;
+//   cut a, b, c: signed CutCoefBits (host: |a| <= 2^10);
+//   dmin, dmax: signed CutBits; falloff: unsigned CutBits;
+//   inv_falloff: unsigned AlphaBits + CutInvShift (host: <= (2^A-1) * 2^24).
+// The ramp product (falloff - outside) * inv_falloff is computed at its full
+// width, CutBits x (AlphaBits + CutInvShift) bits.
+//
+// Parameters (defaults = golden Precision, kCutInvShift): VoxelBits,
+// WeightBits, AlphaBits, CutBits, CutInvShift; PosBits, CutCoefBits.
+module cube4_composite #(
+  parameter int unsigned VoxelBits   = 12,
+  parameter int unsigned WeightBits  = 8,
+  parameter int unsigned AlphaBits   = 12,
+  parameter int unsigned CutBits     = 32,
+  parameter int unsigned CutInvShift = 24,
+  parameter int unsigned PosBits     = 16,
+  parameter int unsigned CutCoefBits = 12
+) (
+  input  logic                                 clk_i,
+  input  logic                                 rst_ni,
+  // Frame registers: blend mode (golden BlendMode), cropping (CropRegs).
+  input  logic [1:0]                           blend_mode_i,
+  input  logic                                 crop_enabled_i,
+  input  logic [PosBits-1:0]                   crop_x_lo_i,
+  input  logic [PosBits-1:0]                   crop_x_hi_i,
+  input  logic [PosBits-1:0]                   crop_y_lo_i,
+  input  logic [PosBits-1:0]                   crop_y_hi_i,
+  input  logic [PosBits-1:0]                   crop_z_lo_i,
+  input  logic [PosBits-1:0]                   crop_z_hi_i,
+  input  logic [7:0]                           crop_mask_i,
+  // Frame registers: cut plane (CutRegs).
+  input  logic                                 cut_enabled_i,
+  input  logic signed [CutCoefBits-1:0]        cut_a_i,
+  input  logic signed [CutCoefBits-1:0]        cut_b_i,
+  input  logic signed [CutCoefBits-1:0]        cut_c_i,
+  input  logic signed [CutBits-1:0]            cut_dmin_i,
+  input  logic signed [CutBits-1:0]            cut_dmax_i,
+  input  logic [CutBits-1:0]                   cut_falloff_i,
+  input  logic [AlphaBits+CutInvShift-1:0]     cut_inv_falloff_i,
+  input  logic                                 cut_keep_inside_i,
+  // Shaded sample and its position (x, y, z_voxel, slice weights).
+  input  logic                                 valid_i,
+  input  logic [AlphaBits-1:0]                 red_i,
+  input  logic [AlphaBits-1:0]                 green_i,
+  input  logic [AlphaBits-1:0]                 blue_i,
+  input  logic [AlphaBits-1:0]                 alpha_i,
+  input  logic [VoxelBits-1:0]                 value_i,
+  input  logic [PosBits-1:0]                   x_i,
+  input  logic [PosBits-1:0]                   y_i,
+  input  logic [PosBits-1:0]                   z_i,
+  input  logic [WeightBits-1:0]                wx_i,
+  input  logic [WeightBits-1:0]                wy_i,
+  input  logic [WeightBits-1:0]                wz_i,
+  // Predecessor accumulator (golden RayAcc), AccDelay cycles after valid_i.
+  input  logic [AlphaBits-1:0]                 acc_red_i,
+  input  logic [AlphaBits-1:0]                 acc_green_i,
+  input  logic [AlphaBits-1:0]                 acc_blue_i,
+  input  logic [AlphaBits-1:0]                 acc_alpha_i,
+  input  logic [VoxelBits-1:0]                 acc_value_i,
+  input  logic                                 acc_selected_i,  // RayAcc::valid
+  // New accumulator.
+  output logic                                 valid_o,
+  output logic [AlphaBits-1:0]                 red_o,
+  output logic [AlphaBits-1:0]                 green_o,
+  output logic [AlphaBits-1:0]                 blue_o,
+  output logic [AlphaBits-1:0]                 alpha_o,
+  output logic [VoxelBits-1:0]                 value_o,
+  output logic                                 selected_o
+);
+
+  localparam int unsigned A        = AlphaBits;
+  localparam int unsigned PwBits   = PosBits + WeightBits;           // (x << W) + wx
+  localparam int unsigned TermBits = CutCoefBits + PwBits;           // a * X, signed
+  localparam int unsigned SumBits  = TermBits + 2;                   // a*X + b*Y + c*Z
+  localparam int unsigned DBits    = (SumBits > CutBits) ? SumBits : CutBits;
+  localparam int unsigned InvBits  = AlphaBits + CutInvShift;
+  localparam int unsigned RampBits = CutBits + InvBits + 1;          // product + rounding
+  localparam int unsigned Latency  = 7;
+
+  // mul_frac(x, f, A) = (x * (f + (f >> (A-1))) + 2^(A-1)) >> A, never above x.
+  function automatic logic [A-1:0] mul_frac(input logic [A-1:0] x, input logic [A-1:0] f);
+    logic [A:0]     f_unit;
+    logic [2*A:0]   prod;
+    f_unit   = {1'b0, f} + (A+1)'(f[A-1]);
+    prod     = (2*A+1)'(x) * (2*A+1)'(f_unit) + ((2*A+1)'(1) << (A - 1));
+    mul_frac = A'(prod >> A);
+  endfunction
+
+  logic [Latency-1:0] valid_q;
+
+  ////////////////////////////////////////////////
+  // Stage 1: crop compares, products of d      //
+  ////////////////////////////////////////////////
+  logic in_x, in_y, in_z, crop_visible;
+  assign in_x = (crop_x_lo_i <= x_i) && (x_i <= crop_x_hi_i);
+  assign in_y = (crop_y_lo_i <= y_i) && (y_i <= crop_y_hi_i);
+  assign in_z = (crop_z_lo_i <= z_i) && (z_i <= crop_z_hi_i);
+  assign crop_visible = !crop_enabled_i || crop_mask_i[{in_z, in_y, in_x}];
+
+  logic signed [TermBits-1:0] term_x, term_y, term_z;
+  assign term_x = TermBits'(cut_a_i) * $signed(TermBits'({x_i, wx_i}));
+  assign term_y = TermBits'(cut_b_i) * $signed(TermBits'({y_i, wy_i}));
+  assign term_z = TermBits'(cut_c_i) * $signed(TermBits'({z_i, wz_i}));
+
+  logic signed [TermBits-1:0] term_x_q, term_y_q, term_z_q;
+  logic [3:0]                 visible1_q;  // crop visibility, stages 1..4
+  // Colour (stages 1..5), alpha (1..4) and value (1..6) delay lines,
+  // stage k at [(k-1)*Width +: Width].
+  logic [5*3*A-1:0]           rgb_q;
+  logic [4*A-1:0]             alpha_q;
+  logic [6*VoxelBits-1:0]     value_q;
+
+  always_ff @(posedge clk_i) begin : stage1_regs
+    term_x_q      <= term_x;
+    term_y_q      <= term_y;
+    term_z_q      <= term_z;
+    visible1_q[0] <= crop_visible;
+    rgb_q[0 +: 3*A]           <= {red_i, green_i, blue_i};
+    alpha_q[0 +: A]           <= alpha_i;
+    value_q[0 +: VoxelBits]   <= value_i;
+  end
+
+  // The sample's data waits for the cut factor.
+  always_ff @(posedge clk_i) begin : sample_delay
+    for (int unsigned k = 1; k < 4; k++) visible1_q[k] <= visible1_q[k-1];
+    for (int unsigned k = 1; k < 5; k++) rgb_q[k*3*A +: 3*A] <= rgb_q[(k-1)*3*A +: 3*A];
+    for (int unsigned k = 1; k < 4; k++) alpha_q[k*A +: A] <= alpha_q[(k-1)*A +: A];
+    for (int unsigned k = 1; k < 6; k++) begin
+      value_q[k*VoxelBits +: VoxelBits] <= value_q[(k-1)*VoxelBits +: VoxelBits];
+    end
+  end
+
+  ///////////////////////////////////////////
+  // Stage 2: d = sat_signed(sum, CutBits) //
+  ///////////////////////////////////////////
+  localparam logic signed [DBits-1:0] DMax = DBits'((64'd1 << (CutBits - 1)) - 1);
+
+  logic signed [DBits-1:0]   dist_sum;
+  logic signed [CutBits-1:0] dist_d, dist_q;
+  assign dist_sum = DBits'(term_x_q) + DBits'(term_y_q) + DBits'(term_z_q);
+  always_comb begin : saturate_distance
+    if (dist_sum > DMax) begin
+      dist_d = CutBits'(DMax);
+    end else if (dist_sum < -DMax) begin
+      dist_d = CutBits'(-DMax);
+    end else begin
+      dist_d = CutBits'(dist_sum);
+    end
+  end
+
+  always_ff @(posedge clk_i) begin : stage2_regs
+    dist_q <= dist_d;
+  end
+
+  ////////////////////////////////////////////////////////////
+  // Stage 3: distance outside [dmin, dmax], against falloff //
+  ////////////////////////////////////////////////////////////
+  // d - dmin and d - dmax fit CutBits+1 signed bits; the outside distance
+  // (dmin - d or d - dmax, when positive) fits CutBits unsigned bits.
+  logic signed [CutBits:0] below_diff, above_diff;
+  logic                    below, above;
+  logic [CutBits-1:0]      outside;
+  assign below_diff = (CutBits+1)'(cut_dmin_i) - (CutBits+1)'(dist_q);
+  assign above_diff = (CutBits+1)'(dist_q) - (CutBits+1)'(cut_dmax_i);
+  assign below      = dist_q < cut_dmin_i;
+  assign above      = dist_q > cut_dmax_i;
+  assign outside    = below ? below_diff[CutBits-1:0]
+                    : above ? above_diff[CutBits-1:0] : '0;
+
+  logic unused_diff_msbs;
+  assign unused_diff_msbs = below_diff[CutBits] ^ above_diff[CutBits];
+
+  logic               in_slab_q, beyond_q;
+  logic [CutBits-1:0] ramp_span_q;
+  always_ff @(posedge clk_i) begin : stage3_regs
+    in_slab_q   <= !below && !above;
+    beyond_q    <= outside >= cut_falloff_i;
+    ramp_span_q <= cut_falloff_i - outside;  // used only when outside < falloff
+  end
+
+  ////////////////////////////////////////////////////////////////////////
+  // Stage 4: ramp = round_shift(span * inv_falloff, CutInvShift), <= one //
+  ////////////////////////////////////////////////////////////////////////
+  localparam logic [RampBits-1:0] RampHalf = RampBits'(1) << (CutInvShift - 1);
+
+  logic [RampBits-1:0] ramp_prod;
+  logic [A-1:0]        ramp_d, ramp_q;
+  logic                in_slab_qq, beyond_qq;
+  assign ramp_prod = RampBits'(ramp_span_q) * RampBits'(cut_inv_falloff_i) + RampHalf;
+  // ramp > one iff any bit above the A bits of (prod + half) >> CutInvShift.
+  assign ramp_d = (|ramp_prod[RampBits-1:CutInvShift+A]) ? {A{1'b1}}
+                                                          : ramp_prod[CutInvShift+A-1:CutInvShift];
+
+  logic unused_ramp_lsbs;
+  assign unused_ramp_lsbs = ^ramp_prod[CutInvShift-1:0];
+
+  always_ff @(posedge clk_i) begin : stage4_regs
+    ramp_q     <= ramp_d;
+    in_slab_qq <= in_slab_q;
+    beyond_qq  <= beyond_q;
+  end
+
+  ////////////////////////////////////////////////
+  // Stage 5: cut factor, cut_alpha, visibility //
+  ////////////////////////////////////////////////
+  logic [A-1:0] inside_factor, factor;
+  always_comb begin : cut_factor
+    if (in_slab_qq) begin
+      inside_factor = {A{1'b1}};
+    end else if (beyond_qq) begin
+      inside_factor = '0;
+    end else begin
+      inside_factor = ramp_q;
+    end
+    factor = cut_keep_inside_i ? inside_factor : {A{1'b1}} - inside_factor;
+  end
+
+  logic [A-1:0] cut_alpha_q;
+  logic         visible_q;
+  always_ff @(posedge clk_i) begin : stage5_regs
+    cut_alpha_q <= cut_enabled_i ? mul_frac(alpha_q[3*A +: A], factor) : alpha_q[3*A +: A];
+    visible_q   <= visible1_q[3] && (!cut_enabled_i || factor != '0);
+  end
+
+  ///////////////////////////////////////////
+  // Stage 6: premultiplied sample colour  //
+  ///////////////////////////////////////////
+  logic [A-1:0] pre_red_q, pre_green_q, pre_blue_q, pre_alpha_q;
+  logic         pre_visible_q;
+  always_ff @(posedge clk_i) begin : stage6_regs
+    pre_red_q     <= mul_frac(rgb_q[4*3*A+2*A +: A], cut_alpha_q);
+    pre_green_q   <= mul_frac(rgb_q[4*3*A+A +: A], cut_alpha_q);
+    pre_blue_q    <= mul_frac(rgb_q[4*3*A +: A], cut_alpha_q);
+    pre_alpha_q   <= cut_alpha_q;
+    pre_visible_q <= visible_q;
+  end
+
+  ////////////////////////////////////////////////
+  // Stage 7: blend with the accumulator        //
+  ////////////////////////////////////////////////
+  // Front to back: t = one - acc.a; c += mul_frac(t, pre_c), saturated;
+  // a += mul_frac(t, alpha) (never passes one).
+  logic [A-1:0] transparency;
+  assign transparency = {A{1'b1}} - acc_alpha_i;
+
+  function automatic logic [A-1:0] add_sat(input logic [A-1:0] acc, input logic [A-1:0] inc);
+    logic [A:0] sum;
+    sum     = {1'b0, acc} + {1'b0, inc};
+    add_sat = sum[A] ? {A{1'b1}} : sum[A-1:0];
+  endfunction
+
+  logic [VoxelBits-1:0] sample_value;
+  logic                 sample_value_wins, take;
+  assign sample_value      = value_q[5*VoxelBits +: VoxelBits];
+  assign sample_value_wins = (blend_mode_i == 2'd1) ? (sample_value > acc_value_i)
+                                                    : (sample_value < acc_value_i);
+  assign take = !acc_selected_i || sample_value_wins;
+
+  always_ff @(posedge clk_i) begin : stage7_regs
+    // Default: the accumulator unchanged (invisible sample, or not taken).
+    red_o      <= acc_red_i;
+    green_o    <= acc_green_i;
+    blue_o     <= acc_blue_i;
+    alpha_o    <= acc_alpha_i;
+    value_o    <= acc_value_i;
+    selected_o <= acc_selected_i;
+    if (pre_visible_q) begin
+      if (blend_mode_i == 2'd1 || blend_mode_i == 2'd2) begin
+        if (take) begin
+          red_o      <= pre_red_q;
+          green_o    <= pre_green_q;
+          blue_o     <= pre_blue_q;
+          alpha_o    <= pre_alpha_q;
+          value_o    <= sample_value;
+          selected_o <= 1'b1;
+        end
+      end else begin
+        red_o   <= add_sat(acc_red_i, mul_frac(transparency, pre_red_q));
+        green_o <= add_sat(acc_green_i, mul_frac(transparency, pre_green_q));
+        blue_o  <= add_sat(acc_blue_i, mul_frac(transparency, pre_blue_q));
+        alpha_o <= acc_alpha_i + mul_frac(transparency, pre_alpha_q);
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin : valid_regs
+    if (!rst_ni) begin
+      valid_q <= '0;
+    end else begin
+      valid_q <= {valid_q[Latency-2:0], valid_i};
+    end
+  end
+  assign valid_o = valid_q[Latency-1];
+
+endmodule

@@ -1,0 +1,685 @@
+// RTL equivalence tests of the compositor datapath, cube4_composite:
+// cropping, cut plane and blend, against the composition golden
+// shade_sample() (golden/pipeline.hpp) and blend() (golden/units/composite.hpp)
+// make of crop_visible, cut_distance, cut_factor, cut_alpha,
+// visible &= factor != 0, and blend.
+//
+// Driven cycle by cycle, back to back and with random valid gaps (junk data
+// in the gaps); the predecessor accumulator of a sample is driven
+// kAccDelay cycles after the sample, as the unit's contract says, and junk
+// in the other cycles. Every output is compared with the golden result of
+// the input that entered kLatency cycles earlier (rtl_check.hpp). Frame
+// registers (mode, crop, cut) change only after the pipeline has drained.
+//
+// CUBE4_RTL_VECTORS overrides the random vector count (default 1,000,000).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <deque>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "Vcube4_composite.h"
+#include "Vcube4_composite_narrow.h"
+#include "golden/host_driver.hpp"
+#include "golden/pipeline.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+#include "tb/rtl/rtl_check.hpp"
+
+namespace {
+
+namespace g = cube4::golden;
+namespace rtl = cube4::rtl;
+using rtl::Fields;
+using rtl::Random;
+
+constexpr int kLatency = 7;
+constexpr int kAccDelay = 6;
+
+// The unit's widths: the golden precision plus the RTL's register widths.
+struct Widths {
+  g::Precision p;
+  int pos_bits = 16;       // cube4_composite PosBits
+  int cut_coef_bits = 12;  // cube4_composite CutCoefBits
+  int inv_bits() const { return p.alpha_bits + g::kCutInvShift; }
+  int64_t pos_max() const { return (int64_t{1} << pos_bits) - 1; }
+  int64_t amax() const { return g::max_unsigned(p.alpha_bits); }
+  int64_t vmax() const { return g::max_unsigned(p.voxel_bits); }
+  int64_t wmax() const { return g::max_unsigned(p.weight_bits); }
+};
+const Widths kW;  // the defaults
+
+// Other widths (rtl/groups/shader.cmake verilates Vcube4_composite_narrow
+// with the same values).
+Widths narrow_widths() {
+  Widths w;
+  w.p.voxel_bits = 10;
+  w.p.weight_bits = 6;
+  w.p.alpha_bits = 14;
+  w.p.cut_bits = 24;
+  w.pos_bits = 12;
+  w.cut_coef_bits = 12;
+  return w;
+}
+const char* kNarrowPrecisionJson =
+    R"(, "precision": {"voxel_bits": 10, "weight_bits": 6, "alpha_bits": 14, "cut_bits": 24})";
+
+template <class T>
+void put(T& port, int64_t v, int bits) {
+  rtl::put_bits(port, 0, bits, static_cast<uint64_t>(v));
+}
+
+// Frame registers of the compositor.
+struct Config {
+  g::BlendMode mode = g::BlendMode::Composite;
+  uint8_t mode_bits = 0;  // as driven (3 also means composite)
+  bool crop_enabled = false;
+  g::CropRegs crop;
+  bool cut_enabled = false;
+  g::CutRegs cut;
+};
+
+struct CompIn {
+  g::ShadedSample s;  // rgb, alpha, value; visible is decided in the unit
+  int32_t x = 0, y = 0, z = 0;
+  uint32_t wx = 0, wy = 0, wz = 0;
+  g::RayAcc acc;
+  Config cfg;
+  Fields fields() const {
+    const g::CropRegs& c = cfg.crop;
+    const g::CutRegs& k = cfg.cut;
+    return {{"red", s.rgb[0]},
+            {"green", s.rgb[1]},
+            {"blue", s.rgb[2]},
+            {"alpha", s.alpha},
+            {"value", s.value},
+            {"x", x},
+            {"y", y},
+            {"z", z},
+            {"wx", wx},
+            {"wy", wy},
+            {"wz", wz},
+            {"acc_red", acc.r},
+            {"acc_green", acc.g},
+            {"acc_blue", acc.b},
+            {"acc_alpha", acc.a},
+            {"acc_value", acc.value},
+            {"acc_selected", acc.valid},
+            {"blend_mode", cfg.mode_bits},
+            {"crop_enabled", cfg.crop_enabled},
+            {"crop_x_lo", c.slab[0][0]},
+            {"crop_x_hi", c.slab[0][1]},
+            {"crop_y_lo", c.slab[1][0]},
+            {"crop_y_hi", c.slab[1][1]},
+            {"crop_z_lo", c.slab[2][0]},
+            {"crop_z_hi", c.slab[2][1]},
+            {"crop_mask", c.mask},
+            {"cut_enabled", cfg.cut_enabled},
+            {"cut_a", k.a},
+            {"cut_b", k.b},
+            {"cut_c", k.c},
+            {"cut_dmin", k.dmin},
+            {"cut_dmax", k.dmax},
+            {"cut_falloff", k.falloff},
+            {"cut_inv_falloff", static_cast<int64_t>(k.inv_falloff)},
+            {"cut_keep_inside", k.keep_inside}};
+  }
+};
+
+struct AccOut {
+  g::RayAcc acc;
+  bool operator==(const AccOut& o) const { return acc == o.acc; }
+  Fields fields() const {
+    return {{"red", acc.r},     {"green", acc.g},     {"blue", acc.b},
+            {"alpha", acc.a},   {"value", acc.value}, {"selected", acc.valid}};
+  }
+};
+
+// The golden composition, exactly as golden shade_sample() and blend() do it.
+g::RayAcc golden_composite(const CompIn& in, const g::Precision& p) {
+  g::ShadedSample s = in.s;
+  s.visible = true;
+  if (in.cfg.crop_enabled) s.visible = g::crop_visible(in.x, in.y, in.z, in.cfg.crop);
+  if (in.cfg.cut_enabled) {
+    const int w = p.weight_bits;
+    const int64_t d = g::cut_distance(in.cfg.cut, (int64_t{in.x} << w) + in.wx, (int64_t{in.y} << w) + in.wy,
+                                      (int64_t{in.z} << w) + in.wz, p);
+    const uint32_t f = g::cut_factor(d, in.cfg.cut, p);
+    s.alpha = g::cut_alpha(s.alpha, f, p);
+    if (f == 0) s.visible = false;
+  }
+  return g::blend(in.cfg.mode, in.acc, s, p);
+}
+
+template <class M>
+class CompositeBench {
+ public:
+  explicit CompositeBench(const Widths& widths = kW, const std::string& name = "cube4_composite")
+      : m(std::make_unique<M>()), sb(name, kLatency), w(widths), junk_(9001) {
+    m->valid_i = 0;
+    rtl::reset(*m);
+  }
+  ~CompositeBench() { m->final(); }
+
+  void configure(const Config& c) {
+    drain();
+    cfg = c;
+    put(m->blend_mode_i, c.mode_bits, 2);
+    m->crop_enabled_i = c.crop_enabled;
+    put(m->crop_x_lo_i, c.crop.slab[0][0], w.pos_bits);
+    put(m->crop_x_hi_i, c.crop.slab[0][1], w.pos_bits);
+    put(m->crop_y_lo_i, c.crop.slab[1][0], w.pos_bits);
+    put(m->crop_y_hi_i, c.crop.slab[1][1], w.pos_bits);
+    put(m->crop_z_lo_i, c.crop.slab[2][0], w.pos_bits);
+    put(m->crop_z_hi_i, c.crop.slab[2][1], w.pos_bits);
+    put(m->crop_mask_i, c.crop.mask, 8);
+    m->cut_enabled_i = c.cut_enabled;
+    put(m->cut_a_i, c.cut.a, w.cut_coef_bits);
+    put(m->cut_b_i, c.cut.b, w.cut_coef_bits);
+    put(m->cut_c_i, c.cut.c, w.cut_coef_bits);
+    put(m->cut_dmin_i, c.cut.dmin, w.p.cut_bits);
+    put(m->cut_dmax_i, c.cut.dmax, w.p.cut_bits);
+    put(m->cut_falloff_i, c.cut.falloff, w.p.cut_bits);
+    put(m->cut_inv_falloff_i, static_cast<int64_t>(c.cut.inv_falloff), w.inv_bits());
+    m->cut_keep_inside_i = c.cut.keep_inside;
+  }
+
+  void step(bool valid, CompIn in) {
+    in.cfg = cfg;
+    const g::Precision& p = w.p;
+    const int a = p.alpha_bits;
+    m->valid_i = valid;
+    put(m->red_i, in.s.rgb[0], a);
+    put(m->green_i, in.s.rgb[1], a);
+    put(m->blue_i, in.s.rgb[2], a);
+    put(m->alpha_i, in.s.alpha, a);
+    put(m->value_i, in.s.value, p.voxel_bits);
+    put(m->x_i, in.x, w.pos_bits);
+    put(m->y_i, in.y, w.pos_bits);
+    put(m->z_i, in.z, w.pos_bits);
+    put(m->wx_i, in.wx, p.weight_bits);
+    put(m->wy_i, in.wy, p.weight_bits);
+    put(m->wz_i, in.wz, p.weight_bits);
+    // The accumulator of the sample driven kAccDelay cycles ago, else junk.
+    g::RayAcc acc;
+    if (!pending_.empty() && pending_.front().first + kAccDelay == cycle) {
+      acc = pending_.front().second;
+      pending_.pop_front();
+    } else {
+      acc.r = static_cast<uint16_t>(junk_.bits(a));
+      acc.g = static_cast<uint16_t>(junk_.bits(a));
+      acc.b = static_cast<uint16_t>(junk_.bits(a));
+      acc.a = static_cast<uint16_t>(junk_.bits(a));
+      acc.value = static_cast<uint16_t>(junk_.bits(p.voxel_bits));
+      acc.valid = junk_.chance(0.5);
+    }
+    put(m->acc_red_i, acc.r, a);
+    put(m->acc_green_i, acc.g, a);
+    put(m->acc_blue_i, acc.b, a);
+    put(m->acc_alpha_i, acc.a, a);
+    put(m->acc_value_i, acc.value, p.voxel_bits);
+    m->acc_selected_i = acc.valid;
+    rtl::settle(*m);
+    sb.observe(cycle, m->valid_o, read());
+    if (valid) {
+      const g::RayAcc expected = golden_composite(in, p);
+      count(in, expected);
+      sb.expect(cycle, in, {expected});
+      pending_.emplace_back(cycle, in.acc);
+      ++vectors;
+    }
+    rtl::rise(*m);
+    ++cycle;
+  }
+
+  void drain() {
+    for (int i = 0; i <= kLatency; ++i) step(false, junk_sample());
+  }
+  ::testing::AssertionResult result() {
+    drain();
+    sb.finish();
+    std::printf("  %s (%llu cycles)\n    covered: %s\n", sb.report().c_str(), static_cast<unsigned long long>(cycle),
+                coverage.str().c_str());
+    if (sb.ok()) return ::testing::AssertionSuccess() << sb.report();
+    return ::testing::AssertionFailure() << sb.report();
+  }
+
+  // What the checked samples exercised (from golden values only).
+  struct Coverage {
+    uint64_t crop_hidden = 0, crop_shown = 0, d_saturated = 0, cut_full = 0, cut_zero = 0, cut_ramp = 0,
+             extreme_taken = 0, extreme_kept = 0, extreme_tie = 0, ftb_saturated = 0, ftb_opaque = 0;
+    std::string str() const {
+      return "crop hidden/shown " + std::to_string(crop_hidden) + "/" + std::to_string(crop_shown) +
+             ", cut factor one/zero/ramp " + std::to_string(cut_full) + "/" + std::to_string(cut_zero) + "/" +
+             std::to_string(cut_ramp) + ", d saturated " + std::to_string(d_saturated) +
+             ", MIP/MinIP taken/kept/ties " + std::to_string(extreme_taken) + "/" + std::to_string(extreme_kept) +
+             "/" + std::to_string(extreme_tie) + ", front-to-back colour saturated " + std::to_string(ftb_saturated) +
+             ", opaque accumulator " + std::to_string(ftb_opaque);
+    }
+  } coverage;
+
+  std::unique_ptr<M> m;
+  rtl::Scoreboard<CompIn, AccOut> sb;
+  Widths w;
+  Config cfg;
+  uint64_t cycle = 0, vectors = 0;
+
+ private:
+  AccOut read() const {
+    AccOut o;
+    o.acc.r = static_cast<uint16_t>(m->red_o);
+    o.acc.g = static_cast<uint16_t>(m->green_o);
+    o.acc.b = static_cast<uint16_t>(m->blue_o);
+    o.acc.a = static_cast<uint16_t>(m->alpha_o);
+    o.acc.value = static_cast<uint16_t>(m->value_o);
+    o.acc.valid = m->selected_o;
+    return o;
+  }
+  void count(const CompIn& in, const g::RayAcc& out) {
+    const g::Precision& p = w.p;
+    Coverage& c = coverage;
+    if (in.cfg.crop_enabled) ++(g::crop_visible(in.x, in.y, in.z, in.cfg.crop) ? c.crop_shown : c.crop_hidden);
+    if (in.cfg.cut_enabled) {
+      const int wb = p.weight_bits;
+      const int64_t d = g::cut_distance(in.cfg.cut, (int64_t{in.x} << wb) + in.wx, (int64_t{in.y} << wb) + in.wy,
+                                        (int64_t{in.z} << wb) + in.wz, p);
+      if (std::abs(d) == g::max_signed(p.cut_bits)) ++c.d_saturated;
+      const uint32_t f = g::cut_factor(d, in.cfg.cut, p);
+      ++(f == w.amax() ? c.cut_full : f == 0 ? c.cut_zero : c.cut_ramp);
+    }
+    if (in.cfg.mode == g::BlendMode::Mip || in.cfg.mode == g::BlendMode::MinIp) {
+      ++(out == in.acc ? c.extreme_kept : c.extreme_taken);
+      if (in.acc.valid && in.s.value == in.acc.value) ++c.extreme_tie;
+    } else {
+      if (in.acc.a == w.amax()) ++c.ftb_opaque;
+      for (uint16_t ch : {out.r, out.g, out.b})
+        if (ch == w.amax()) ++c.ftb_saturated;
+    }
+  }
+
+  CompIn junk_sample() {
+    CompIn in;
+    const int a = w.p.alpha_bits;
+    in.s.rgb = {static_cast<uint32_t>(junk_.bits(a)), static_cast<uint32_t>(junk_.bits(a)),
+                static_cast<uint32_t>(junk_.bits(a))};
+    in.s.alpha = static_cast<uint32_t>(junk_.bits(a));
+    in.x = static_cast<int32_t>(junk_.bits(w.pos_bits));
+    return in;
+  }
+
+  std::deque<std::pair<uint64_t, g::RayAcc>> pending_;
+  Random junk_;
+};
+
+// ---------------------------------------------------------------------------
+// Stimulus.
+
+g::RayAcc random_acc(Random& rnd, const Widths& w) {
+  g::RayAcc a;
+  a.r = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.2));
+  a.g = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.2));
+  a.b = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.2));
+  a.a = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.3));
+  a.value = static_cast<uint16_t>(rnd.edgy(w.vmax(), 0.1));
+  a.valid = rnd.chance(0.7);
+  return a;
+}
+
+CompIn random_sample(Random& rnd, const Widths& w, int64_t pos_max) {
+  CompIn in;
+  const int64_t amax = w.amax();
+  in.s.rgb = {static_cast<uint32_t>(rnd.edgy(amax, 0.2)), static_cast<uint32_t>(rnd.edgy(amax, 0.2)),
+              static_cast<uint32_t>(rnd.edgy(amax, 0.2))};
+  in.s.alpha = static_cast<uint32_t>(rnd.edgy(amax, 0.3));
+  in.acc = random_acc(rnd, w);
+  // Ties with the accumulator (MIP/MinIP) and neighbours.
+  in.s.value = static_cast<uint32_t>(rnd.chance(0.3)
+                                         ? std::clamp<int64_t>(in.acc.value + rnd.range(-1, 1), 0, w.vmax())
+                                         : rnd.edgy(w.vmax(), 0.1));
+  in.x = static_cast<int32_t>(rnd.range(0, pos_max));
+  in.y = static_cast<int32_t>(rnd.range(0, pos_max));
+  in.z = static_cast<int32_t>(rnd.range(0, pos_max));
+  in.wx = static_cast<uint32_t>(rnd.edgy(w.wmax(), 0.1));
+  in.wy = static_cast<uint32_t>(rnd.edgy(w.wmax(), 0.1));
+  in.wz = static_cast<uint32_t>(rnd.edgy(w.wmax(), 0.1));
+  return in;
+}
+
+// Host computation of inv_falloff (host_driver.cpp's formula in integers).
+uint64_t inv_falloff(int64_t falloff, const g::Precision& p) {
+  if (falloff <= 0) return 0;
+  const int64_t num = g::max_unsigned(p.alpha_bits) << g::kCutInvShift;
+  return static_cast<uint64_t>((num + falloff / 2) / falloff);
+}
+
+// Uniform in [0, 2^b) for a random b in [0, max_bits].
+int64_t log_uniform(Random& rnd, int max_bits) {
+  const int b = static_cast<int>(rnd.range(0, max_bits));
+  return b == 0 ? 0 : rnd.range(0, (int64_t{1} << b) - 1);
+}
+
+const uint8_t kMasks[] = {0x80, 0xFE, 0xE8, 0x7F, 0x01, 0x00, 0xFF, 0x17};
+
+Config random_config(Random& rnd, const Widths& w, int64_t pos_max) {
+  const g::Precision& p = w.p;
+  Config c;
+  c.mode_bits = static_cast<uint8_t>(rnd.range(0, 3));
+  c.mode = static_cast<g::BlendMode>(c.mode_bits);
+  c.crop_enabled = rnd.chance(0.5);
+  for (auto& s : c.crop.slab) {
+    if (rnd.chance(0.1)) {
+      s = {1, 0};  // empty (the host's encoding of a slab outside the volume)
+    } else if (rnd.chance(0.1)) {
+      s = {0, static_cast<int32_t>(w.pos_max())};
+    } else {
+      int32_t lo = static_cast<int32_t>(rnd.range(0, pos_max)), hi = static_cast<int32_t>(rnd.range(0, pos_max));
+      if (lo > hi) std::swap(lo, hi);
+      s = {lo, hi};
+    }
+  }
+  c.crop.mask = rnd.chance(0.5) ? kMasks[rnd.range(0, 7)] : static_cast<uint8_t>(rnd.bits(8));
+  c.cut_enabled = rnd.chance(0.6);
+  const int64_t cmax = (int64_t{1} << (w.cut_coef_bits - 1)) - 1;
+  if (rnd.chance(0.5)) {  // a host-like unit normal, 2^10 scale
+    double d[3], n2 = 0;
+    for (auto& v : d) {
+      v = static_cast<double>(rnd.range(-1000, 1000));
+      n2 += v * v;
+    }
+    const double n = n2 > 0 ? std::sqrt(n2) : 1;
+    c.cut.a = static_cast<int32_t>(std::lround(d[0] / n * 1024));
+    c.cut.b = static_cast<int32_t>(std::lround(d[1] / n * 1024));
+    c.cut.c = static_cast<int32_t>(std::lround(d[2] / n * 1024));
+  } else {
+    c.cut.a = static_cast<int32_t>(rnd.range(-cmax - 1, cmax));
+    c.cut.b = static_cast<int32_t>(rnd.range(-cmax - 1, cmax));
+    c.cut.c = static_cast<int32_t>(rnd.range(-cmax - 1, cmax));
+  }
+  // The slab around the distance of a random position in the block's range.
+  const int wb = p.weight_bits;
+  const int64_t d0 = g::cut_distance(c.cut, rnd.range(0, pos_max) << wb, rnd.range(0, pos_max) << wb,
+                                     rnd.range(0, pos_max) << wb, p);
+  const int64_t dlim = g::max_signed(p.cut_bits);
+  c.cut.dmin = std::clamp<int64_t>(d0 - log_uniform(rnd, 28), -dlim - 1, dlim);
+  c.cut.dmax = std::clamp<int64_t>(c.cut.dmin + log_uniform(rnd, 28), -dlim - 1, dlim);
+  if (rnd.chance(0.05)) std::swap(c.cut.dmin, c.cut.dmax);  // an empty slab: dmin > dmax
+  c.cut.falloff = rnd.chance(0.1) ? 0 : log_uniform(rnd, std::min(30, p.cut_bits - 1));
+  c.cut.inv_falloff = inv_falloff(c.cut.falloff, p);
+  if (rnd.chance(0.2) && c.cut.falloff > 0) {
+    // Any register value for which golden's int64 product cannot overflow.
+    const int64_t lim = std::min<int64_t>((int64_t{1} << w.inv_bits()) - 1, (int64_t{1} << 62) / c.cut.falloff);
+    c.cut.inv_falloff = static_cast<uint64_t>(rnd.range(0, lim));
+  }
+  c.cut.keep_inside = rnd.chance(0.6);
+  return c;
+}
+
+// ---------------------------------------------------------------------------
+// Test bodies, for any widths.
+
+template <class M>
+void composite_random(const Widths& w, const std::string& name, long n) {
+  CompositeBench<M> b(w, name);
+  Random rnd(701);
+  const long block = 4000;
+  for (long done = 0; done < n;) {
+    const int64_t pos_max = rnd.chance(0.8) ? 63 : w.pos_max();
+    b.configure(random_config(rnd, w, pos_max));
+    const double gap = rnd.chance(0.5) ? 0.0 : 0.25;
+    for (long i = 0; i < block && done < n; ++i) {
+      const bool v = !rnd.chance(gap);
+      b.step(v, random_sample(rnd, w, pos_max));
+      done += v;
+    }
+  }
+  EXPECT_TRUE(b.result());
+  EXPECT_GE(b.vectors, static_cast<uint64_t>(n));
+  const auto& c = b.coverage;
+  for (uint64_t k : {c.crop_hidden, c.crop_shown, c.d_saturated, c.cut_full, c.cut_zero, c.cut_ramp, c.extreme_taken,
+                     c.extreme_kept, c.extreme_tie, c.ftb_saturated, c.ftb_opaque})
+    EXPECT_GT(k, 0u) << "random stimulus missed a case: " << c.str();
+}
+
+template <class M>
+void composite_crop_boundaries(const Widths& w, const std::string& name) {
+  CompositeBench<M> b(w, name);
+  Random rnd(702);
+  const int32_t top = static_cast<int32_t>(w.pos_max());
+  const std::vector<std::array<std::array<int32_t, 2>, 3>> slab_sets = {
+      {{{10, 20}, {30, 40}, {50, 60}}},
+      {{{0, 0}, {7, 7}, {0, top}}},      // one-voxel slabs, the whole axis
+      {{{1, 0}, {top, top}, {0, 1}}},    // empty (the host's encoding), the top edge
+  };
+  for (const auto& slabs : slab_sets) {
+    std::vector<uint8_t> masks;
+    for (int j = 0; j < 8; ++j) masks.push_back(static_cast<uint8_t>(1 << j));
+    for (uint8_t mk : kMasks) masks.push_back(mk);
+    for (uint8_t mask : masks) {
+      Config c;
+      c.crop_enabled = true;
+      c.crop.slab = slabs;
+      c.crop.mask = mask;
+      c.mode_bits = static_cast<uint8_t>(rnd.range(0, 2));
+      c.mode = static_cast<g::BlendMode>(c.mode_bits);
+      b.configure(c);
+      std::array<std::vector<int32_t>, 3> pos;
+      for (int i = 0; i < 3; ++i)
+        for (int64_t v : {int64_t{slabs[i][0]} - 1, int64_t{slabs[i][0]}, int64_t{slabs[i][0]} + 1,
+                          int64_t{slabs[i][1]} - 1, int64_t{slabs[i][1]}, int64_t{slabs[i][1]} + 1})
+          if (v >= 0 && v <= w.pos_max()) pos[i].push_back(static_cast<int32_t>(v));
+      for (int32_t x : pos[0])
+        for (int32_t y : pos[1])
+          for (int32_t z : pos[2]) {
+            CompIn in = random_sample(rnd, w, 63);
+            in.x = x;
+            in.y = y;
+            in.z = z;
+            b.step(!rnd.chance(0.1), in);
+          }
+    }
+  }
+  EXPECT_TRUE(b.result());
+}
+
+template <class M>
+void composite_cut_boundaries(const Widths& w, const std::string& name) {
+  CompositeBench<M> b(w, name);
+  const g::Precision& p = w.p;
+  Random rnd(703);
+  const int wb = p.weight_bits;
+  const int64_t wmask = w.wmax();
+  const int64_t xmax = (w.pos_max() << wb) | wmask;  // the largest X = (x << W) + wx
+  const int64_t falloffs[] = {0, 1, 2, 255, 256, 4096, 3 << 16, (int64_t{1} << 24) + 5};
+  // d = X, Y or Z (one coefficient 1 or -1): every distance is reachable.
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {1, -1})
+      for (bool thin : {false, true})
+        for (int64_t falloff : falloffs)
+          for (bool keep : {true, false}) {
+            if (falloff > g::max_unsigned(p.cut_bits)) continue;  // outside the falloff register
+            Config c;
+            c.cut_enabled = true;
+            c.mode_bits = static_cast<uint8_t>(rnd.range(0, 3));
+            c.mode = static_cast<g::BlendMode>(c.mode_bits);
+            (axis == 0 ? c.cut.a : axis == 1 ? c.cut.b : c.cut.c) = sign;
+            const int64_t base = xmax / 4;  // room for a falloff below dmin
+            c.cut.dmin = sign * (base + 7);
+            c.cut.dmax = sign * (base + (thin ? 7 : (int64_t{50} << wb) + 3));
+            if (c.cut.dmin > c.cut.dmax) std::swap(c.cut.dmin, c.cut.dmax);
+            c.cut.falloff = falloff;
+            c.cut.inv_falloff = inv_falloff(falloff, p);
+            c.cut.keep_inside = keep;
+            b.configure(c);
+            std::vector<int64_t> ds;
+            for (int64_t e : {c.cut.dmin, c.cut.dmax})
+              for (int64_t off : {int64_t{0}, falloff})
+                for (int64_t k : {-1, 0, 1}) {
+                  ds.push_back(e - off + k);
+                  ds.push_back(e + off + k);
+                }
+            for (int i = 0; i < 16; ++i) ds.push_back(rnd.range(c.cut.dmin - falloff - 2, c.cut.dmax + falloff + 2));
+            const uint64_t ramp_before = b.coverage.cut_ramp;
+            for (int64_t d : ds) {
+              const int64_t pos = d * sign;  // the X (or Y, Z) at that distance
+              if (pos < 0 || pos > xmax) continue;
+              CompIn in = random_sample(rnd, w, 63);
+              int32_t* coord[3] = {&in.x, &in.y, &in.z};
+              uint32_t* weight[3] = {&in.wx, &in.wy, &in.wz};
+              *coord[axis] = static_cast<int32_t>(pos >> wb);
+              *weight[axis] = static_cast<uint32_t>(pos & wmask);
+              b.step(true, in);
+            }
+            if (falloff > 1) EXPECT_GT(b.coverage.cut_ramp, ramp_before) << "no sample in the fall-off ramp";
+          }
+  // Saturated distances: |a X + b Y + c Z| beyond 2^(cut_bits-1) - 1.
+  const int64_t dmax = g::max_signed(p.cut_bits);
+  const int32_t cmax = static_cast<int32_t>((int64_t{1} << (w.cut_coef_bits - 1)) - 1);
+  for (int sign : {1, -1})
+    for (int64_t lo : {dmax - 3, dmax, -dmax - 1})
+      for (int64_t falloff : {int64_t{0}, int64_t{10}, int64_t{1} << (p.cut_bits - 1)}) {
+        Config c;
+        c.cut_enabled = true;
+        c.cut.a = c.cut.b = c.cut.c = sign > 0 ? cmax : -cmax - 1;
+        c.cut.dmin = sign > 0 ? lo : -dmax - 1;
+        c.cut.dmax = sign > 0 ? dmax : std::min(lo, -dmax + 3);
+        c.cut.falloff = falloff;
+        c.cut.inv_falloff = inv_falloff(falloff, p);
+        c.cut.keep_inside = rnd.chance(0.5);
+        b.configure(c);
+        for (int i = 0; i < 200; ++i) {
+          CompIn in = random_sample(rnd, w, w.pos_max());
+          if (i < 100) in.x = in.y = in.z = static_cast<int32_t>(w.pos_max() - rnd.range(0, 3));
+          b.step(true, in);
+        }
+      }
+  EXPECT_TRUE(b.result());
+}
+
+template <class M>
+void composite_ties_and_extremes(const Widths& w, const std::string& name) {
+  CompositeBench<M> b(w, name);
+  Random rnd(704);
+  const int64_t amax = w.amax(), vmax = w.vmax();
+  const uint16_t aedge[] = {0, 1, static_cast<uint16_t>(amax / 2), static_cast<uint16_t>(amax - 1),
+                            static_cast<uint16_t>(amax)};
+  const uint16_t vedge[] = {0, 1, static_cast<uint16_t>(vmax / 2), static_cast<uint16_t>(vmax - 1),
+                            static_cast<uint16_t>(vmax)};
+  for (uint8_t mode : {0, 1, 2, 3})
+    for (bool crop : {false, true}) {
+      Config c;
+      c.mode_bits = mode;
+      c.mode = static_cast<g::BlendMode>(mode);
+      c.crop_enabled = crop;  // with cropping, every sample at x = 1 is invisible
+      const int32_t top = static_cast<int32_t>(w.pos_max());
+      c.crop.slab = {{{0, 0}, {0, top}, {0, top}}};
+      c.crop.mask = 0x80;
+      b.configure(c);
+      for (uint16_t acc_value : vedge)
+        for (int dv : {-1, 0, 1})
+          for (bool selected : {false, true})
+            for (uint16_t acc_a : aedge)
+              for (uint16_t alpha : aedge) {
+                CompIn in = random_sample(rnd, w, 63);
+                in.acc.value = acc_value;
+                in.s.value = static_cast<uint32_t>(std::clamp<int64_t>(acc_value + dv, 0, vmax));
+                in.acc.valid = selected;
+                in.acc.a = acc_a;
+                in.acc.r = in.acc.g = in.acc.b = aedge[rnd.range(0, 4)];
+                in.s.alpha = alpha;
+                in.s.rgb = {aedge[rnd.range(0, 4)], static_cast<uint32_t>(amax), 0};
+                in.x = static_cast<int32_t>(rnd.range(0, 1));
+                b.step(!rnd.chance(0.1), in);
+              }
+    }
+  EXPECT_TRUE(b.result());
+}
+
+// Crop and cut registers from the real host driver (permuted for the view),
+// positions and slice weights of every sample of the scene's slices.
+template <class M>
+void composite_host(const Widths& w, const std::string& name, const std::string& precision_json) {
+  CompositeBench<M> b(w, name);
+  Random rnd(705);
+  const std::string scenes[] = {
+      R"("cropping": {"x": [3, 15], "y": [5, 20], "combine": "cross"},
+         "cut_plane": {"normal": [1, 0, 1], "dmin": 10, "dmax": 16, "falloff": 3, "keep": "outside"})",
+      R"("cropping": {"z": [0, 9], "combine": "union", "invert": true}, "blend": "mip",
+         "cut_plane": {"normal": [0.2, -1, 0.4], "dmin": -2, "dmax": 9.5, "falloff": 0})",
+      R"("blend": "minip", "supersampling": 3,
+         "cut_plane": {"normal": [-1, 2, 3], "dmin": 5, "dmax": 5, "falloff": 12.5})",
+  };
+  for (const std::string& extra : scenes) {
+    const std::string json = R"({"volume": {"synthetic": "sphere", "size": [24, 20, 28]},)"
+                             R"( "view": {"rotate": [25, 140, 10], "ray_offset": [0.3, 0.7]}, )" +
+                             extra + precision_json + "}";
+    const g::Scene s = g::parse_scene(json, "test_composite scene");
+    const g::Volume vol = g::make_synthetic(s.volume, s.precision.voxel_bits);
+    const g::HostProgram h = g::program_host(s, vol);
+    const g::Registers& r = h.regs;
+    Config c;
+    c.mode = r.blend;
+    c.mode_bits = static_cast<uint8_t>(r.blend);
+    c.crop_enabled = r.crop_enabled;
+    c.crop = r.crop;
+    c.cut_enabled = r.cut_enabled;
+    c.cut = r.cut;
+    ASSERT_TRUE(c.cut_enabled);
+    // The host's values lie in the RTL's register domain.
+    const int64_t cmax = (int64_t{1} << (w.cut_coef_bits - 1)) - 1;
+    for (int32_t k : {c.cut.a, c.cut.b, c.cut.c}) ASSERT_LE(std::abs(int64_t{k}), cmax);
+    ASSERT_LE(std::abs(c.cut.dmin), g::max_signed(w.p.cut_bits));
+    ASSERT_LE(std::abs(c.cut.dmax), g::max_signed(w.p.cut_bits));
+    ASSERT_LT(c.cut.inv_falloff, uint64_t{1} << w.inv_bits());
+    b.configure(c);
+    for (int k = 0; k < r.sample_slices(); ++k) {
+      const g::SliceControl sc = g::slice_control(r, k);
+      for (int y = 0; y < r.dim[1]; ++y)
+        for (int x = 0; x < r.dim[0]; ++x) {
+          CompIn in = random_sample(rnd, w, 63);
+          in.x = x;
+          in.y = y;
+          in.z = sc.z_voxel;
+          in.wx = sc.wx;
+          in.wy = sc.wy;
+          in.wz = sc.wz;
+          b.step(!rnd.chance(0.1), in);
+        }
+    }
+  }
+  EXPECT_TRUE(b.result());
+}
+
+// ---------------------------------------------------------------------------
+
+TEST(RtlComposite, Random) { composite_random<Vcube4_composite>(kW, "cube4_composite", rtl::vector_count(1000000)); }
+
+TEST(RtlComposite, CropSlabBoundariesForEveryMaskBit) {
+  composite_crop_boundaries<Vcube4_composite>(kW, "cube4_composite");
+}
+
+TEST(RtlComposite, CutPlaneBoundaries) { composite_cut_boundaries<Vcube4_composite>(kW, "cube4_composite"); }
+
+TEST(RtlComposite, MipMinIpTiesAndAlphaExtremes) {
+  composite_ties_and_extremes<Vcube4_composite>(kW, "cube4_composite");
+}
+
+TEST(RtlComposite, HostDriverCropAndCut) { composite_host<Vcube4_composite>(kW, "cube4_composite", ""); }
+
+TEST(RtlComposite, OtherWidths) {
+  const Widths w = narrow_widths();
+  const std::string name = "cube4_composite (narrow widths)";
+  composite_random<Vcube4_composite_narrow>(w, name, 300000);
+  composite_crop_boundaries<Vcube4_composite_narrow>(w, name);
+  composite_cut_boundaries<Vcube4_composite_narrow>(w, name);
+  composite_ties_and_extremes<Vcube4_composite_narrow>(w, name);
+  composite_host<Vcube4_composite_narrow>(w, name, kNarrowPrecisionJson);
+}
+
+}  // namespace
