@@ -1,0 +1,116 @@
+// cube4_interp_ring: the interpolation units of p pipelines connected near-
+// neighbour in a ring (VolumePro §5.1, Fig. 11; Cube-4 §5 "m < n").
+//
+// Function: pipeline k (cube4_interp_unit) handles the voxels with
+// x = j*p + k of every partial beam j; it takes the x+1 column from pipeline
+// k+1's aligned link, and pipeline p-1 takes it from pipeline 0's link of the
+// next partial beam (the wrap; zero after a beam's last partial beam). The
+// stream control (valid, flags, weights, tag) is common and fans out to every
+// pipeline, where it travels with the data; voxel_i carries one voxel per
+// pipeline. Each pipeline emits the samples of its own columns:
+// sample_o[k] = S(j*p + k, y) of the pass, with its own valid and flags (all
+// pipelines run in lock step). Stream format, latency (4 cycles without
+// stalls; last sample 4 cycles after the last input) and preconditions: see
+// cube4_interp_unit and docs/rtl-interp.md. nx not a multiple of p is padded
+// by the stream with zero voxels (columns x >= nx produce samples of the
+// padding).
+//
+// Handshake: valid-only, no back-pressure. Reset: control only.
+//
+// Parameters:
+//   NumPipes              - p, pipelines (>= 1)
+//   VoxelBits, WeightBits - widths (Precision defaults 12, 8)
+//   TagBits               - tag travelling with the data
+//   MaxDim                - largest nx and ny the delay storage holds
+//   BeamDepth, SliceDepth - (derived) per-pipeline beam delay and slice store
+//                           entries: ceil(MaxDim / p) and MaxDim * that
+module cube4_interp_ring #(
+  parameter int unsigned  NumPipes   = 4,
+  parameter int unsigned  VoxelBits  = 12,
+  parameter int unsigned  WeightBits = 8,
+  parameter int unsigned  TagBits    = 8,
+  parameter int unsigned  MaxDim     = 256,
+  localparam int unsigned BeamDepth  = (MaxDim + NumPipes - 1) / NumPipes,
+  localparam int unsigned SliceDepth = MaxDim * BeamDepth
+) (
+  input  logic                          clk_i,
+  input  logic                          rst_ni,
+  // Voxel stream: common control, one voxel per pipeline ([k*VoxelBits +:]).
+  input  logic                          valid_i,
+  input  logic                          beam_start_i,
+  input  logic                          beam_end_i,
+  input  logic                          slice_start_i,
+  input  logic                          slice_end_i,
+  input  logic [NumPipes*VoxelBits-1:0] voxel_i,
+  input  logic [WeightBits:0]           wx_i,
+  input  logic [WeightBits:0]           wy_i,
+  input  logic [WeightBits:0]           wz_i,
+  input  logic [TagBits-1:0]            tag_i,
+  // Sample streams, pipeline k at bit k / [k*VoxelBits +:] / [k*TagBits +:].
+  output logic [NumPipes-1:0]           valid_o,
+  output logic [NumPipes-1:0]           beam_start_o,
+  output logic [NumPipes-1:0]           beam_end_o,
+  output logic [NumPipes-1:0]           slice_start_o,
+  output logic [NumPipes-1:0]           slice_end_o,
+  output logic [NumPipes*VoxelBits-1:0] sample_o,
+  output logic [NumPipes*TagBits-1:0]   tag_o
+);
+
+  localparam int unsigned LinkBits = 4 * VoxelBits;
+
+  // Links as packed vectors (yosys 0.23: no unpacked wire arrays).
+  logic [NumPipes*LinkBits-1:0] link, link_now;
+
+  for (genvar k = 0; k < NumPipes; k++) begin : g_pipe
+    localparam bit Last = k == NumPipes - 1;
+    logic [LinkBits-1:0] link_in;
+
+    if (Last) begin : g_wrap
+      assign link_in = link_now[0 +: LinkBits];
+    end else begin : g_next
+      assign link_in = link[(k+1)*LinkBits +: LinkBits];
+    end
+
+    cube4_interp_unit #(
+      .VoxelBits (VoxelBits),
+      .WeightBits(WeightBits),
+      .TagBits   (TagBits),
+      .BeamDepth (BeamDepth),
+      .SliceDepth(SliceDepth),
+      .WrapIn    (Last)
+    ) u_unit (
+      .clk_i        (clk_i),
+      .rst_ni       (rst_ni),
+      .valid_i      (valid_i),
+      .beam_start_i (beam_start_i),
+      .beam_end_i   (beam_end_i),
+      .slice_start_i(slice_start_i),
+      .slice_end_i  (slice_end_i),
+      .voxel_i      (voxel_i[k*VoxelBits +: VoxelBits]),
+      .wx_i         (wx_i),
+      .wy_i         (wy_i),
+      .wz_i         (wz_i),
+      .tag_i        (tag_i),
+      .link_o       (link[k*LinkBits +: LinkBits]),
+      .link_now_o   (link_now[k*LinkBits +: LinkBits]),
+      .link_i       (link_in),
+      .valid_o      (valid_o[k]),
+      .beam_start_o (beam_start_o[k]),
+      .beam_end_o   (beam_end_o[k]),
+      .slice_start_o(slice_start_o[k]),
+      .slice_end_o  (slice_end_o[k]),
+      .sample_o     (sample_o[k*VoxelBits +: VoxelBits]),
+      .tag_o        (tag_o[k*TagBits +: TagBits])
+    );
+  end
+
+  // Pipeline 0's aligned column has no left neighbour, and only pipeline
+  // 0's current column leaves its unit (the wrap).
+  logic unused_links;
+  if (NumPipes > 1) begin : g_unused
+    assign unused_links = ^{link[0 +: LinkBits], link_now[NumPipes*LinkBits-1:LinkBits]};
+  end else begin : g_unused_p1
+    assign unused_links = ^link;
+  end
+
+endmodule

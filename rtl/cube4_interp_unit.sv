@@ -1,0 +1,242 @@
+// cube4_interp_unit: one pipeline's interpolation unit with its delay
+// storage and near-neighbour links (VolumePro §3.1, §5.1; Cube-4 §5, partial
+// beams and beam extension). docs/rtl-interp.md describes the dataflow.
+//
+// Function: pipeline k of p receives, for every sample slice k_s, the voxel
+// slice the sample slice needs last, in beam order (beams y = 0 .. ny, beam
+// ny being the zero border), one partial beam j per valid cycle: voxel_i is
+// v(x, y, z_in) with x = j*p + k, z_in = z_voxel(k_s) if wz_i = 0 (the sample
+// slice lies on that voxel slice) and z_voxel(k_s) + 1 otherwise. The unit
+// emits, for every voxel (x, y+1) of beams 1 .. ny, the sample S(x, y) of
+// slice k_s: bit-exact golden trilinear() (cube4_trilinear) of
+//   v(x .. x+1, y .. y+1, z_voxel .. z_voxel+1), zero outside the volume.
+// The voxels come from:
+//   - the slice store: voxel slice z_voxel, written from the stream in the
+//     slice's wz = 0 pass, read in its wz > 0 passes (ny * ceil(nx/p) entries);
+//   - the beam delay: this pipeline's (front, back) voxel pair of beam y, one
+//     lap of ceil(nx/p) steps (the lap ends at beam_end_i);
+//   - the stream itself: beam y+1 of slice z_in;
+//   - the right neighbour (pipeline k+1) for the x+1 column: its registered
+//     link_o; or, for pipeline p-1 (WrapIn = 1), pipeline 0's link_now_o, the
+//     next partial beam's column (the ring wrap), which is why every pipeline
+//     holds its own column one valid cycle (the alignment register: Cube-4's
+//     beam extension). x+1 = nx (after the last partial beam of a beam) reads
+//     zero instead.
+// Voxel values in beam ny (slice_end_i) are ignored and taken as zero.
+//
+// Stream format (valid_i cycles, any number of idle cycles between them):
+//   beam_start_i / beam_end_i  : first / last partial beam of a beam
+//   slice_start_i / slice_end_i: beam 0 / beam ny (the zero beam) of a pass
+//   wx_i, wy_i, wz_i            : the sample slice's weights (golden
+//                                 slice_control()), constant over a pass
+//   tag_i                       : travels to tag_o with the sample (the weight
+//                                 generator's per-slice control for later units)
+// Output: valid_o with sample_o = S(x, y) in beam order (beams 0 .. ny-1 of
+// each pass), flags beam_start_o / beam_end_o (j = 0 / last), slice_start_o /
+// slice_end_o (y = 0 / ny - 1) and the tag of the input that produced it.
+//
+// Latency: the sample of input step t (voxel (x, y+1)) leaves the alignment
+// register in the next valid cycle t' (or at t + 1 if t ends a beam: it
+// needs no next column), enters cube4_trilinear then, and appears on
+// sample_o 3 cycles later: t + 4 without stalls; the last sample of a pass
+// appears 4 cycles after its last input. One sample per clock.
+// Handshake: valid-only, no back-pressure. Reset: control (valid, alignment
+// and slice-start state, delay pointers); data registers and RAMs are not
+// reset.
+//
+// Preconditions: every pass is complete (ny + 1 >= 2 beams of the same
+// ceil(nx/p) partial beams); ceil(nx/p) <= BeamDepth;
+// ny * ceil(nx/p) <= SliceDepth; the stream carries z_voxel whenever
+// wz = 0 (and z_voxel + 1 otherwise): golden z_weight(k) = 0 for k mod S = 0,
+// so every voxel slice pair starts with such a pass, which fills the store.
+//
+// Parameters:
+//   VoxelBits, WeightBits - as cube4_trilinear (Precision defaults 12, 8)
+//   TagBits               - width of the tag that travels with the data
+//   BeamDepth             - beam delay entries: max partial beams per beam
+//   SliceDepth            - slice store entries: max ny * partial beams
+//   WrapIn                - 1 for pipeline p-1: link_i is pipeline 0's
+//                           link_now_o (masked to zero at a beam's end)
+//   LinkBits              - (derived) width of a link: four voxels,
+//                           [0] front y, [1] front y+1, [2] back y, [3] back y+1
+module cube4_interp_unit #(
+  parameter int unsigned  VoxelBits  = 12,
+  parameter int unsigned  WeightBits = 8,
+  parameter int unsigned  TagBits    = 8,
+  parameter int unsigned  BeamDepth  = 64,
+  parameter int unsigned  SliceDepth = 16384,
+  parameter bit           WrapIn     = 1'b0,
+  localparam int unsigned LinkBits   = 4 * VoxelBits
+) (
+  input  logic                  clk_i,
+  input  logic                  rst_ni,
+  // Voxel stream.
+  input  logic                  valid_i,
+  input  logic                  beam_start_i,
+  input  logic                  beam_end_i,
+  input  logic                  slice_start_i,
+  input  logic                  slice_end_i,
+  input  logic [VoxelBits-1:0]  voxel_i,
+  input  logic [WeightBits:0]   wx_i,
+  input  logic [WeightBits:0]   wy_i,
+  input  logic [WeightBits:0]   wz_i,
+  input  logic [TagBits-1:0]    tag_i,
+  // Near-neighbour links.
+  output logic [LinkBits-1:0]   link_o,      // aligned column, to pipeline k-1
+  output logic [LinkBits-1:0]   link_now_o,  // this cycle's column (ring wrap)
+  input  logic [LinkBits-1:0]   link_i,      // x+1 column
+  // Sample stream.
+  output logic                  valid_o,
+  output logic                  beam_start_o,
+  output logic                  beam_end_o,
+  output logic                  slice_start_o,
+  output logic                  slice_end_o,
+  output logic [VoxelBits-1:0]  sample_o,
+  output logic [TagBits-1:0]    tag_o
+);
+
+  localparam int unsigned V             = VoxelBits;
+  // Latency of cube4_trilinear (its header): the flags and the tag travel
+  // beside it in a shift register of this length.
+  localparam int unsigned TriLatency    = 3;
+  localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
+  localparam int unsigned SliceDepthBits = $clog2(SliceDepth + 1);
+
+  // -------------------------------------------------------------------------
+  // Input: the voxel pair (front = slice z_voxel, back = slice z_voxel+1) of
+  // column x, beam y+1.
+  logic           on_slice;   // wz = 0: the stream carries slice z_voxel
+  logic           use_store;  // the front voxel comes from the slice store
+  logic [V-1:0]   vox, store_rdata, front_cur, back_cur;
+  logic [2*V-1:0] beam_rdata; // {back, front} of column x, beam y
+
+  assign on_slice  = wz_i == '0;
+  assign use_store = !on_slice && !slice_end_i;
+  assign vox       = slice_end_i ? '0 : voxel_i;
+  assign front_cur = use_store ? store_rdata : vox;
+  assign back_cur  = vox;
+
+  // Slice store: one entry per voxel of beams 0 .. ny-1, in stream order.
+  // Written in a wz = 0 pass, re-read in the wz > 0 passes after it; the
+  // zero beam holds the pointer at entry 0 for the next pass.
+  cube4_delay_ram #(
+    .Width   (V),
+    .MaxDepth(SliceDepth)
+  ) u_slice_store (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .depth_i  (SliceDepthBits'(SliceDepth)),
+    .clear_i  (valid_i && slice_end_i),
+    .advance_i(valid_i),
+    .last_i   (1'b0),
+    .write_i  (on_slice),
+    .wdata_i  (voxel_i),
+    .rdata_o  (store_rdata)
+  );
+
+  // Beam delay: one lap per beam (the lap ends with the beam).
+  cube4_delay_ram #(
+    .Width   (2 * V),
+    .MaxDepth(BeamDepth)
+  ) u_beam_delay (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .depth_i  (BeamDepthBits'(BeamDepth)),
+    .clear_i  (1'b0),
+    .advance_i(valid_i),
+    .last_i   (beam_end_i),
+    .write_i  (1'b1),
+    .wdata_i  ({back_cur, front_cur}),
+    .rdata_o  (beam_rdata)
+  );
+
+  // This cycle's column: [0] front y, [1] front y+1, [2] back y, [3] back y+1.
+  logic [LinkBits-1:0] col_d;
+  assign col_d      = {back_cur, beam_rdata[V +: V], front_cur, beam_rdata[0 +: V]};
+  assign link_now_o = col_d;
+
+  // -------------------------------------------------------------------------
+  // Alignment register: holds the column until the x+1 column is available
+  // (the next valid cycle), or one cycle if it ends a beam (x+1 = nx: zero).
+  logic                  valid_q, valid_d, fire;
+  logic [LinkBits-1:0]   col_q;
+  logic                  beam_start_q, beam_end_q, slice_start_q, slice_end_q;
+  logic [WeightBits:0]   wx_q, wy_q, wz_q;
+  logic [TagBits-1:0]    tag_q;
+  logic                  second_q, second_d;  // the column's beam is beam 1
+
+  assign fire    = valid_q && (valid_i || beam_end_q);
+  assign valid_d = valid_i || (valid_q && !fire);
+  // At the end of a beam the next beam's first output is slice_start iff the
+  // beam that ended was beam 0.
+  assign second_d = (fire && beam_end_q) ? slice_start_q : second_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      valid_q  <= 1'b0;
+      second_q <= 1'b0;
+    end else begin
+      valid_q  <= valid_d;
+      second_q <= second_d;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (valid_i) begin
+      col_q         <= col_d;
+      beam_start_q  <= beam_start_i;
+      beam_end_q    <= beam_end_i;
+      slice_start_q <= slice_start_i;
+      slice_end_q   <= slice_end_i;
+      wx_q          <= wx_i;
+      wy_q          <= wy_i;
+      wz_q          <= wz_i;
+      tag_q         <= tag_i;
+    end
+  end
+  assign link_o = col_q;
+
+  // -------------------------------------------------------------------------
+  // Trilinear interpolation of the eight voxels: this column gives the even
+  // voxels (x), the neighbour's the odd ones (x+1).
+  logic [LinkBits-1:0]    nb;
+  logic [8*V-1:0]         voxels;
+  logic                   tri_valid;
+
+  assign nb = (WrapIn && beam_end_q) ? '0 : link_i;
+  for (genvar l = 0; l < 4; l++) begin : g_voxels
+    assign voxels[(2*l)*V +: V]   = col_q[l*V +: V];
+    assign voxels[(2*l+1)*V +: V] = nb[l*V +: V];
+  end
+  // Beam 0 only fills the beam delay: no samples.
+  assign tri_valid = fire && !slice_start_q;
+
+  cube4_trilinear #(
+    .VoxelBits (VoxelBits),
+    .WeightBits(WeightBits)
+  ) u_trilinear (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (tri_valid),
+    .voxels_i(voxels),
+    .wx_i    (wx_q),
+    .wy_i    (wy_q),
+    .wz_i    (wz_q),
+    .valid_o (valid_o),
+    .sample_o(sample_o)
+  );
+
+  // Flags and tag beside the trilinear pipeline (data: not reset). Packed:
+  // yosys 0.23 does not take assignments to unpacked arrays of this kind.
+  localparam int unsigned SideBits = 4 + TagBits;
+  logic [TriLatency*SideBits-1:0] side_q;
+
+  always_ff @(posedge clk_i) begin
+    side_q <= {side_q[(TriLatency-1)*SideBits-1:0],
+               tag_q, slice_end_q, second_q, beam_end_q, beam_start_q};
+  end
+
+  assign {tag_o, slice_end_o, slice_start_o, beam_end_o, beam_start_o} =
+      side_q[(TriLatency-1)*SideBits +: SideBits];
+
+endmodule
