@@ -184,7 +184,10 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
           gather_2x2(ahead, x, y, c.ahead_x, c.ahead_y, n.ahead);
         }
         const ShadedSample s = shade_sample(r, c, x, y, n, faces.get());
-        if (probe) probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
+        if (probe) {
+          probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
+          probe->shaded(x, y, c, s);
+        }
         out = blend(r.blend, out, s, r.p);
       }
     }

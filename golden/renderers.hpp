@@ -48,6 +48,9 @@ struct RenderStats {
 struct SampleProbe {
   virtual ~SampleProbe() = default;
   virtual void sample(int x, int y, const SliceControl& c, uint32_t value, const Gradient& g) = 0;
+  // The same sample after classification, shading, cropping and cut plane:
+  // what the compositor receives (for compositor testbenches).
+  virtual void shaded(int /*x*/, int /*y*/, const SliceControl& /*c*/, const ShadedSample& /*s*/) {}
 };
 
 BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* stats = nullptr,
