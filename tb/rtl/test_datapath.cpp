@@ -540,6 +540,19 @@ constexpr int clog2(int v) {
 // cube4_skew_addr's default IndexBits.
 constexpr int skew_index_bits(int p) { return 3 * kDimBits + 4 - clog2(p + 1); }
 
+// The golden skew functions are constexpr: a few values by hand (8x6x5 on
+// p = 4 pads to 8x8x8, B_x = 2; x fastest, index = x/4 + 2*(y + 8*z)).
+constexpr g::SkewLayout kL865{{8, 6, 5}, 4};
+static_assert(kL865.words_per_module() == 128);
+static_assert(g::skew_address(kL865, 5, 2, 1) == g::SkewAddress{0, 1 + 2 * (2 + 8 * 1)});
+// Object x backwards (n = 8): pipeline 0 of partial beam 0 reads x = 7.
+static_assert(g::beam_access(kL865, g::SkewTraversal{{0, 1, 2}, {true, false, false}}, 0, 0, 0).lane[0] ==
+              g::SkewAddress{3, 1});
+// Object y as beam axis, backwards (n = 6, P = 8): partial beam 1 is y = 1, 0, 7, 6.
+static_assert(g::beam_access(kL865, g::SkewTraversal{{1, 2, 0}, {true, false, false}}, 0, 0, 1).lane[2] ==
+              g::SkewAddress{3, 2 * 7});
+static_assert(g::beam_access(kL865, g::SkewTraversal{{1, 2, 0}, {true, false, false}}, 0, 0, 1).rotation == 1);
+
 // For a padded layout, the voxel stored at each (module, index): checks that
 // skew_address() is a bijection onto p modules of words_per_module() words.
 struct Inverse {

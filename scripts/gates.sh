@@ -1,0 +1,157 @@
+#!/usr/bin/env bash
+# Gate counts of the RTL units (first version): synthesises every module of
+# rtl/ (a file named after the module it defines) with yosys at its default
+# parameters, plus extra parameter sets (cube4_trilinear at WeightBits 6 and
+# 10), and prints a markdown table to stdout.
+#
+# Flow per module: read_verilog -sv rtl/*.sv; chparam; synth -flatten up to
+# `fine` (coarse synthesis; memories stay $mem cells: memory -nomap); the
+# rest of synth's fine stage without memory_map (opt, techmap, opt);
+# dffunmap (enable and sync-reset flip-flops become plain ones plus gates);
+# abc -g AND,NAND,OR,NOR,XOR,XNOR,MUX; opt_clean; stat; stat -tech cmos.
+#
+# Columns:
+#   cells       gate-level cells after abc -g (gates + flip-flops, no memories)
+#   FFs         flip-flop bits
+#   NAND2-eq    sum of cell weights, ~ typical 45 nm X1 standard-cell area
+#               relative to NAND2: NOT 0.67, NAND2/NOR2 1, AND2/OR2 1.33,
+#               XOR2/XNOR2 2, MUX2 2.33, DFF 5.67, DFF with async reset 6.67
+#   transistors yosys `stat -tech cmos` estimate (static CMOS, DFF = 16), plus
+#               20 per async-reset flip-flop (not in yosys's table)
+#   memory      $mem cells, depth x width (bits), counted apart from logic
+#
+# Usage: scripts/gates.sh [module ...]   (default: every module of rtl/)
+set -u
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+command -v yosys >/dev/null || { echo "gates: yosys not found" >&2; exit 2; }
+command -v python3 >/dev/null || { echo "gates: python3 not found" >&2; exit 2; }
+
+all=(rtl/*.sv)
+pkgs=() mods=()
+for f in "${all[@]}"; do
+  if grep -qE '^[[:space:]]*package[[:space:]]' "$f"; then pkgs+=("$f"); else mods+=("$f"); fi
+done
+readlist="${pkgs[*]} ${mods[*]}"
+
+# Units: every module named after its file, unless given.
+units=()
+if [ $# -gt 0 ]; then
+  units=("$@")
+else
+  for f in "${mods[@]}"; do
+    n=$(basename "$f" .sv)
+    grep -qE "^[[:space:]]*module[[:space:]]+${n}\b" "$f" && units+=("$n")
+  done
+fi
+
+# Extra parameter sets: "<module> <Name=value>,<Name=value>".
+extra=(
+  "cube4_trilinear WeightBits=6"
+  "cube4_trilinear WeightBits=10"
+)
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# synth_one <module> <params or "">: writes $tmp/<tag>.{mem,gates,cmos}.json
+runs=()
+synth_one() {
+  local m=$1 params=$2 tag chp="" p
+  tag="$m${params:+_${params//[=,]/_}}"
+  for p in ${params//,/ }; do chp="$chp chparam -set ${p%%=*} ${p#*=} $m;"; done
+  if ! yosys -q -l "$tmp/$tag.log" -p "read_verilog -sv $readlist; $chp
+      synth -top $m -flatten -run :fine; write_json $tmp/$tag.mem.json;
+      opt -fast -full; techmap; opt -fast; dffunmap;
+      abc -g AND,NAND,OR,NOR,XOR,XNOR,MUX; opt_clean;
+      tee -q -o $tmp/$tag.gates.json stat -json;
+      tee -q -o $tmp/$tag.cmos.json stat -tech cmos -json" >/dev/null 2>&1; then
+    echo "gates: yosys failed on $m ${params}" >&2
+    grep -iE 'error' "$tmp/$tag.log" | head -5 >&2
+    return 1
+  fi
+  runs+=("$m|$params|$tag")
+}
+
+status=0
+for u in "${units[@]}"; do
+  synth_one "$u" "" || status=1
+  for e in "${extra[@]}"; do
+    [ "${e%% *}" = "$u" ] && { synth_one "$u" "${e#* }" || status=1; }
+  done
+done
+
+python3 - "$tmp" "${runs[@]}" <<'EOF'
+import json, re, sys
+
+tmp = sys.argv[1]
+weights = {  # NAND2 equivalents
+    "$_NOT_": 0.67, "$_BUF_": 0.0, "$_NAND_": 1.0, "$_NOR_": 1.0, "$_AND_": 1.33, "$_OR_": 1.33,
+    "$_XOR_": 2.0, "$_XNOR_": 2.0, "$_MUX_": 2.33,
+    "$_DFF_P_": 5.67, "$_DFF_N_": 5.67,
+    "$_DFF_PN0_": 6.67, "$_DFF_PN1_": 6.67, "$_DFF_NN0_": 6.67, "$_DFF_NN1_": 6.67,
+    "$_DFF_PP0_": 6.67, "$_DFF_PP1_": 6.67,
+}
+async_ff = {t for t in weights if re.match(r"\$_DFF_[PN][PN][01]_$", t)}
+
+def parameters(module, overrides):
+    """Numeric default parameters from rtl/<module>.sv's header, with overrides."""
+    vals = {}
+    try:
+        src = open(f"rtl/{module}.sv").read()
+        start = src.index(f"module {module}")
+        header = src[start:src.index(");", start)]
+        for name, val in re.findall(r"\bparameter\s+(?:int\s+unsigned\s+|int\s+|bit\s+)?(\w+)\s*=\s*(\d+)\s*[,)\n]", header):
+            vals[name] = val
+    except (OSError, ValueError):
+        pass
+    for kv in filter(None, overrides.split(",")):
+        k, v = kv.split("=")
+        vals[k] = v + "*"
+    return ", ".join(f"{k}={v}" for k, v in vals.items()) or "-"
+
+print("| module | parameters | cells | FFs | NAND2-eq | transistors | memory |")
+print("|---|---|---:|---:|---:|---:|---|")
+unknown_all = set()
+for run in sys.argv[2:]:
+    module, params, tag = run.split("|")
+    g = json.load(open(f"{tmp}/{tag}.gates.json"))["design"]["num_cells_by_type"]
+    c = json.load(open(f"{tmp}/{tag}.cmos.json"))["design"]
+    cells = ffs = 0
+    nand2 = 0.0
+    n_async = 0
+    for t, n in g.items():
+        if t.startswith("$mem"):
+            continue
+        cells += n
+        if t.startswith("$_DFF") or t.startswith("$_SDFF") or t.startswith("$_DLATCH"):
+            ffs += n
+        if t in async_ff:
+            n_async += n
+        if t in weights:
+            nand2 += weights[t] * n
+        else:
+            unknown_all.add(t)
+            nand2 += n  # counted as one NAND2 each, flagged below
+    tr = str(c.get("estimated_num_transistors", "?"))
+    base = int(tr.rstrip("+")) if tr.rstrip("+").isdigit() else 0
+    transistors = f"{base + 20 * n_async}"
+    mems = []
+    mj = json.load(open(f"{tmp}/{tag}.mem.json"))
+    for mod in mj["modules"].values():
+        for name, cell in mod.get("cells", {}).items():
+            if cell["type"].startswith("$mem"):
+                p = cell["parameters"]
+                w, d = int(p["WIDTH"], 2), int(p["SIZE"], 2)
+                mems.append(f"{d}x{w} ({d * w} b)")
+    print(f"| {module} | {parameters(module, params)} | {cells} | {ffs} | {nand2:,.0f} | "
+          f"{int(transistors):,} | {', '.join(mems) or '-'} |")
+print()
+print("NAND2-eq weights: NOT 0.67, NAND2/NOR2 1, AND2/OR2 1.33, XOR2/XNOR2 2, MUX2 2.33, "
+      "DFF 5.67, DFF with async reset 6.67 (typical 45 nm X1 cell areas / NAND2). "
+      "Transistors: yosys stat -tech cmos, plus 20 per async-reset DFF. Memories not in cells/NAND2-eq. "
+      "* = parameter overridden.")
+if unknown_all:
+    print(f"Cell types without a weight (counted as 1 NAND2 each): {', '.join(sorted(unknown_all))}")
+EOF
+exit $status

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Lint of every rtl/*.sv, the RTL acceptance rule of ARCHITECTURE.md:
+#   1. verilator --lint-only -Wall -Irtl <file>: no warning, no error;
+#   2. yosys: read_verilog -sv of all rtl/*.sv (packages first), then
+#      synth -top <module> for every file that defines the module it is
+#      named after (every such module must synthesise with its default
+#      parameters), then check -assert: no warning, no error.
+# By default synth runs up to its `fine` label (front end, elaboration,
+# proc, coarse synthesis, memory inference: everything the source decides,
+# ~0.5 s a module); --full runs all of synth, whose fine/abc stages map the
+# LUT memories to flip-flops and take minutes on this machine (the complete
+# logic synthesis, memories kept, is what scripts/gates.sh runs).
+# Prints each problem and a one-line summary; exits 1 on any problem.
+# Usage: scripts/lint_rtl.sh [--full] [file.sv ...]   (default: rtl/*.sv)
+set -u
+synth_run="-run :fine"
+if [ "${1:-}" = "--full" ]; then synth_run=""; shift; fi
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+
+command -v verilator >/dev/null || { echo "lint_rtl: verilator not found" >&2; exit 2; }
+command -v yosys >/dev/null || { echo "lint_rtl: yosys not found" >&2; exit 2; }
+
+if [ $# -gt 0 ]; then files=("$@"); else files=(rtl/*.sv); fi
+all=(rtl/*.sv)
+[ -e "${all[0]}" ] || { echo "lint_rtl: no rtl/*.sv" >&2; exit 2; }
+
+# Packages go first in yosys's read (qualified names need the package).
+pkgs=() mods=()
+for f in "${all[@]}"; do
+  if grep -qE '^[[:space:]]*package[[:space:]]' "$f"; then pkgs+=("$f"); else mods+=("$f"); fi
+done
+readlist="${pkgs[*]} ${mods[*]}"
+# Files named on the command line outside rtl/ are read too.
+for f in "${files[@]}"; do
+  case " ${all[*]} " in *" $f "*) ;; *) readlist="$readlist $f" ;; esac
+done
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+problems=0 linted=0 synthesised=0
+
+for f in "${files[@]}"; do
+  name=$(basename "$f" .sv)
+  # 1. Verilator.
+  if ! verilator --lint-only -Wall -Irtl "$f" >"$tmp/v.log" 2>&1 || [ -s "$tmp/v.log" ]; then
+    echo "FAIL verilator $f"
+    sed 's/^/    /' "$tmp/v.log" | head -40
+    problems=$((problems + 1))
+  fi
+  linted=$((linted + 1))
+  # 2. yosys, for files that define the module they are named after.
+  grep -qE "^[[:space:]]*module[[:space:]]+${name}\b" "$f" || continue
+  if ! yosys -q -l "$tmp/y.log" -p "read_verilog -sv $readlist; synth -top $name $synth_run; check -assert" >/dev/null 2>&1 ||
+     grep -qiE '^(warning|error)|^ERROR' "$tmp/y.log"; then
+    echo "FAIL yosys synth -top $name"
+    grep -iE 'warning|error' "$tmp/y.log" | sort | uniq | sed 's/^/    /' | head -40
+    problems=$((problems + 1))
+  fi
+  synthesised=$((synthesised + 1))
+done
+
+if [ "$problems" -eq 0 ]; then
+  echo "lint_rtl: OK: ${linted} files Verilator -Wall clean, ${synthesised} modules through yosys synth${synth_run:+ ($synth_run)} without warnings"
+  exit 0
+fi
+echo "lint_rtl: FAILED: ${problems} problems (${linted} files linted, ${synthesised} modules synthesised)"
+exit 1
