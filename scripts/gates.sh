@@ -49,6 +49,10 @@ fi
 extra=(
   "cube4_trilinear WeightBits=6"
   "cube4_trilinear WeightBits=10"
+  "cube4_shader AlphaBits=8"
+  "cube4_shader AlphaBits=16"
+  "cube4_composite AlphaBits=8"
+  "cube4_composite AlphaBits=16"
 )
 
 tmp=$(mktemp -d)
