@@ -1,0 +1,826 @@
+// RTL tests of the gradient unit with its sample storage and near-neighbour
+// links: cube4_gradient_ring (p = 1, 2, 4, 5 pipelines) against the golden
+// renderer.
+//
+// Two ways in:
+//   - chain: the permuted volume streamed into a verilated
+//     cube4_interp_ring (docs/rtl-interp.md order, K + 1 passes: the last is
+//     the zero slice), whose outputs drive the gradient ring wire for wire:
+//     voxels -> samples -> gradients, proving the two rings fit;
+//   - direct: the golden samples (from a SampleProbe) streamed straight into
+//     the gradient ring, with random gaps, and exactly the B idle cycles
+//     after each slice that the ring's zero beam needs (the chain always
+//     leaves exactly B).
+// Every gradient (and the sample, position, flags and tag beside it) of
+// every pipeline is compared with golden render_fixed()'s (regs.gradient
+// forced on; the probe gives every sample's value and gradient), in the
+// exact cycle the model of docs/rtl-gradient.md predicts. A failure prints
+// the first mismatch: cycle, pipeline, frame, x, y, slice, expected, got.
+// Nothing here re-implements the gradient.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Vcube4_gradient_ring.h"
+#include "Vcube4_gradient_ring_p1.h"
+#include "Vcube4_gradient_ring_p2.h"
+#include "Vcube4_gradient_ring_p5.h"
+#include "Vcube4_interp_ring_g1.h"
+#include "Vcube4_interp_ring_g2.h"
+#include "Vcube4_interp_ring_g4.h"
+#include "Vcube4_interp_ring_g5.h"
+#include "golden/host_driver.hpp"
+#include "golden/permuted_volume.hpp"
+#include "golden/pipeline.hpp"
+#include "golden/renderers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+#include "tb/rtl/rtl_check.hpp"
+
+namespace {
+
+namespace g = cube4::golden;
+using cube4::rtl::Random;
+using cube4::rtl::get_bits;
+using cube4::rtl::put_bits;
+
+// Ring defaults (cube4_gradient_ring, cube4_interp_ring).
+constexpr int kVoxelBits = 12;
+constexpr int kWeightBits = 8;
+constexpr int kGradientBits = 8;
+constexpr int kSupersamplingBits = 4;
+constexpr int kUserTagBits = 8;
+constexpr int kCtrlBits = 4 * (kWeightBits + 1) + kSupersamplingBits + 1;
+constexpr int kTagBits = CUBE4_GRADIENT_TAG_BITS;  // rtl/groups/gradient.cmake
+static_assert(kTagBits == kCtrlBits + kUserTagBits, "gradient.cmake's tag width differs from the ring's");
+static_assert(kTagBits <= 64, "the test packs a tag into 64 bits");
+// Interpolation ring: a sample 4 cycles after its input step (docs/rtl-interp.md).
+constexpr int kInterpLatency = 4;
+// Gradient ring: a step fires with the next step (or one cycle later if it
+// ends a beam), then cube4_gradient's 3 cycles.
+constexpr int kGradientStages = 3;
+
+// Ring parameters, as in rtl/groups/gradient.cmake.
+struct RingParams {
+  int p;
+  int max_dim;
+  int beam_depth() const { return (max_dim + p - 1) / p; }
+  int slice_depth() const { return max_dim * beam_depth(); }
+  int dim_bits() const {
+    int b = 0;
+    while ((1 << b) < max_dim + p) ++b;
+    return b;
+  }
+};
+constexpr RingParams kRingP1{1, 24}, kRingP2{2, 16}, kRingP4{4, 256}, kRingP5{5, 12};
+
+struct Timer {
+  std::string what;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  explicit Timer(std::string w) : what(std::move(w)) {}
+  ~Timer() {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
+  }
+};
+
+// ===========================================================================
+// Golden frames.
+
+struct Frame {
+  std::string name;
+  g::Volume vol;
+  g::Registers regs;
+  std::unique_ptr<g::PermutedVolume> pv;  // refers to vol
+  int nx = 0, ny = 0, nz = 0, S = 1, K = 0;
+  std::vector<uint32_t> samples;      // [(k * ny + y) * nx + x]
+  std::vector<g::Gradient> gradients;
+  size_t index(int k, int y, int x) const { return (static_cast<size_t>(k) * ny + y) * nx + x; }
+};
+
+struct Collect : g::SampleProbe {
+  Frame& f;
+  std::vector<int> count;
+  bool control_ok = true;
+  explicit Collect(Frame& fr) : f(fr), count(fr.samples.size(), 0) {}
+  void sample(int x, int y, const g::SliceControl& c, uint32_t value, const g::Gradient& gr) override {
+    const size_t i = f.index(c.k, y, x);
+    f.samples[i] = value;
+    f.gradients[i] = gr;
+    ++count[i];
+    // The tag the test sends is built from slice_control(): it must be what
+    // the renderer used.
+    const g::SliceControl e = g::slice_control(f.regs, c.k);
+    auto same = [](const g::Realign& a, const g::Realign& b) { return a.base == b.base && a.weight == b.weight; };
+    if (e.wx != c.wx || e.wy != c.wy || e.wz != c.wz || e.z_voxel != c.z_voxel || !same(e.behind_x, c.behind_x) ||
+        !same(e.behind_y, c.behind_y) || !same(e.ahead_x, c.ahead_x) || !same(e.ahead_y, c.ahead_y))
+      control_ok = false;
+  }
+};
+
+std::string direction_json(const std::array<double, 3>& d, const std::array<double, 3>& up) {
+  std::ostringstream s;
+  s << R"({"direction": [)" << d[0] << ", " << d[1] << ", " << d[2] << R"(], "up": [)" << up[0] << ", " << up[1]
+    << ", " << up[2] << "]}";
+  return s.str();
+}
+
+const Frame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
+                   const std::array<double, 3>& up, int S, int seed) {
+  static std::map<std::string, std::unique_ptr<Frame>> cache;
+  std::ostringstream js;
+  js << R"({"volume": {"synthetic": "noise", "size": [)" << size[0] << ", " << size[1] << ", " << size[2]
+     << R"(], "seed": )" << seed << R"(}, "view": )" << direction_json(dir, up) << R"(, "supersampling": )" << S
+     << R"(, "shading": false})";
+  const std::string json = js.str();
+  auto& slot = cache[json];
+  if (slot) return *slot;
+  auto f = std::make_unique<Frame>();
+  const g::Scene scene = g::parse_scene(json, "test_gradient_ring.json");
+  f->vol = g::load_volume(scene.volume, scene.precision.voxel_bits, ".");
+  f->regs = g::program_host(scene, f->vol).regs;
+  f->regs.gradient = true;  // the probe then sees every sample's gradient
+  EXPECT_EQ(f->regs.p.voxel_bits, kVoxelBits);
+  EXPECT_EQ(f->regs.p.weight_bits, kWeightBits);
+  EXPECT_EQ(f->regs.p.gradient_bits, kGradientBits);
+  std::ostringstream n;
+  n << name << " size " << size[0] << "x" << size[1] << "x" << size[2] << " S=" << S;
+  f->name = n.str();
+  f->pv = std::make_unique<g::PermutedVolume>(f->vol, f->regs.perm, f->regs.flip);
+  f->nx = f->regs.dim[0];
+  f->ny = f->regs.dim[1];
+  f->nz = f->regs.dim[2];
+  EXPECT_EQ(f->pv->dim(), f->regs.dim);
+  f->S = f->regs.supersampling;
+  f->K = f->regs.sample_slices();
+  f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, 0);
+  f->gradients.assign(f->samples.size(), g::Gradient{});
+  Collect probe(*f);
+  g::render_fixed(f->vol, f->regs, nullptr, {}, &probe);
+  for (int c : probe.count)
+    if (c != 1) ADD_FAILURE() << f->name << ": the golden probe saw a sample " << c << " times";
+  EXPECT_TRUE(probe.control_ok) << f->name << ": probe slice control differs from slice_control()";
+  slot = std::move(f);
+  return *slot;
+}
+
+// The user tag of slice k of frame fi (any value; it must come back).
+uint32_t user_tag(int fi, int k) { return static_cast<uint32_t>(k + 61 * fi) & ((1u << kUserTagBits) - 1); }
+
+// The gradient ring's tag for input slice k (k = K: the zero slice, whose
+// slice control is junk: the ring must not use it).
+uint64_t slice_tag(const Frame& f, int fi, int k, Random& rng) {
+  uint64_t t = 0;
+  int pos = 0;
+  auto put = [&](uint64_t v, int w) {
+    t |= (v & ((uint64_t{1} << w) - 1)) << pos;
+    pos += w;
+  };
+  if (k < f.K) {
+    const g::SliceControl c = g::slice_control(f.regs, k);
+    for (const g::Realign& r : {c.behind_x, c.behind_y, c.ahead_x, c.ahead_y}) {
+      EXPECT_TRUE(r.base == 0 || r.base == -1);
+      EXPECT_LT(r.weight, 1u << kWeightBits);
+      put(r.weight, kWeightBits);
+      put(r.base < 0 ? 1 : 0, 1);
+    }
+    put(static_cast<uint64_t>(f.S), kSupersamplingBits);
+    put(0, 1);
+  } else {
+    put(rng.bits(4 * (kWeightBits + 1)), 4 * (kWeightBits + 1));
+    put(rng.bits(kSupersamplingBits), kSupersamplingBits);
+    put(1, 1);  // ZeroSlice
+  }
+  put(user_tag(fi, k), kUserTagBits);
+  return t;
+}
+
+// ===========================================================================
+// Streams.
+
+// One cycle of the interpolation ring's input (chain mode).
+struct VoxelBeat {
+  bool valid = false, beam_start = false, beam_end = false, slice_start = false, slice_end = false;
+  uint32_t wx = 0, wy = 0, wz = 0;
+  uint64_t tag = 0;
+  std::vector<uint32_t> voxel;  // one per pipeline
+};
+
+// A sample entering the gradient ring (one partial beam, every pipeline).
+struct SampleIn {
+  uint64_t cycle;
+  int frame, k, y, j;  // k: input slice 0 .. K (K = the zero slice)
+  bool beam_start, beam_end, slice_start, slice_end;
+  uint64_t tag;
+  std::vector<uint32_t> sample;  // direct mode: one per pipeline
+};
+
+// A gradient every pipeline must emit in `cycle` (pipeline q: x = j*p + q).
+struct Expect {
+  uint64_t cycle;
+  int frame, k, y, j;  // k: sample slice of the gradient
+  bool beam_start, beam_end, slice_start, slice_end;
+};
+
+struct StreamOptions {
+  bool chain = true;     // through the interpolation ring, else golden samples directly
+  double stall = 0;      // probability of idle cycles before a partial beam (and after a slice)
+  int max_gap = 3;       // 1 .. max_gap idle cycles each time
+  bool junk = false;     // junk values wherever the rings must ignore them
+};
+
+struct Stream {
+  std::vector<VoxelBeat> beats;  // chain: the interpolation ring's input, one per cycle
+  std::vector<SampleIn> in;      // the gradient ring's input samples, by cycle
+  std::vector<Expect> expects;   // the gradient ring's outputs, by cycle
+  uint64_t voxel_valid = 0, expected_voxel_valid = 0;
+  uint64_t sample_valid = 0, expected_sample_valid = 0, zero_steps = 0;
+  uint64_t last_voxel = 0, last_sample = 0, last_output = 0, end = 0;
+  int last_B = 1;
+  uint64_t frame_gap = 0;  // chain: idle cycles added between frames
+  std::string error;  // the stream breaks the ring's preconditions
+};
+
+Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamOptions& opt, Random& rng) {
+  Stream s;
+  if (opt.chain) {
+    auto junk = [&] {
+      VoxelBeat b;
+      b.beam_start = rng.chance(0.5);
+      b.beam_end = rng.chance(0.5);
+      b.slice_start = rng.chance(0.5);
+      b.slice_end = rng.chance(0.5);
+      b.wx = rng.range(0, 256);
+      b.wy = rng.range(0, 256);
+      b.wz = rng.chance(0.5) ? 0 : rng.range(0, 256);
+      b.tag = rng.bits(kTagBits);
+      for (int q = 0; q < p; ++q) b.voxel.push_back(rng.bits(kVoxelBits));
+      return b;
+    };
+    std::vector<SampleIn> pending;  // with the index of the beat that produces them
+    for (size_t fi = 0; fi < frames.size(); ++fi) {
+      const Frame& f = *frames[fi];
+      const int B = (f.nx + p - 1) / p;
+      // Within a frame the interpolation ring's beam 0 of the next pass (B
+      // cycles without samples) is the gradient ring's zero beam. A frame
+      // with shorter beams than the one before needs the difference as idle
+      // cycles in front (the stream former's job).
+      if (fi > 0) {
+        const int B_prev = (frames[fi - 1]->nx + p - 1) / p;
+        for (int i = B; i < B_prev; ++i) {
+          s.beats.push_back(junk());
+          ++s.frame_gap;
+        }
+      }
+      s.expected_voxel_valid += static_cast<uint64_t>(f.ny + 1) * B * (f.K + 1);
+      for (int k = 0; k <= f.K; ++k) {
+        // Pass K is the zero slice: voxel slice nz (no memory read), wz = 0.
+        const g::SliceControl c = g::slice_control(f.regs, k);
+        const int z_in = k == f.K ? f.nz : (c.wz == 0 ? c.z_voxel : c.z_voxel + 1);
+        const uint64_t tag = slice_tag(f, static_cast<int>(fi), k, rng);
+        for (int y = 0; y <= f.ny; ++y)
+          for (int j = 0; j < B; ++j) {
+            if (opt.stall > 0 && rng.chance(opt.stall)) {
+              const int gap = static_cast<int>(rng.range(1, opt.max_gap));
+              for (int i = 0; i < gap; ++i) s.beats.push_back(junk());
+            }
+            VoxelBeat b;
+            b.valid = true;
+            b.beam_start = j == 0;
+            b.beam_end = j == B - 1;
+            b.slice_start = y == 0;
+            b.slice_end = y == f.ny;
+            b.wx = k == f.K && opt.junk ? rng.range(0, 256) : c.wx;
+            b.wy = k == f.K && opt.junk ? rng.range(0, 256) : c.wy;
+            b.wz = k == f.K ? 0 : c.wz;
+            b.tag = tag;
+            for (int q = 0; q < p; ++q) {
+              uint32_t v = f.pv->at(j * p + q, y, z_in);  // zero outside the volume
+              if (opt.junk && (y == f.ny || k == f.K)) v = rng.bits(kVoxelBits);
+              b.voxel.push_back(v);
+            }
+            s.beats.push_back(b);
+            ++s.voxel_valid;
+            if (y > 0)
+              pending.push_back({s.beats.size() - 1, static_cast<int>(fi), k, y - 1, j, j == 0, j == B - 1, y == 1,
+                                 y == f.ny, tag, {}});
+          }
+      }
+    }
+    s.last_voxel = s.beats.size() - 1;
+    // The interpolation ring's output cycle of each sample (docs/rtl-interp.md).
+    std::vector<uint64_t> next_valid(s.beats.size(), 0);
+    uint64_t nv = ~uint64_t{0};
+    for (size_t i = s.beats.size(); i-- > 0;) {
+      next_valid[i] = nv;
+      if (s.beats[i].valid) nv = i;
+    }
+    for (SampleIn& e : pending) {
+      const uint64_t t = e.cycle;
+      e.cycle = (e.beam_end ? t + 1 : next_valid[t]) + (kInterpLatency - 1);
+    }
+    s.in = std::move(pending);
+  } else {
+    uint64_t cycle = 0;
+    for (size_t fi = 0; fi < frames.size(); ++fi) {
+      const Frame& f = *frames[fi];
+      const int B = (f.nx + p - 1) / p;
+      for (int k = 0; k <= f.K; ++k) {
+        const uint64_t tag = slice_tag(f, static_cast<int>(fi), k, rng);
+        for (int y = 0; y < f.ny; ++y)
+          for (int j = 0; j < B; ++j) {
+            if (opt.stall > 0 && rng.chance(opt.stall)) cycle += rng.range(1, opt.max_gap);
+            SampleIn e{cycle++, static_cast<int>(fi), k, y, j, j == 0, j == B - 1, y == 0, y == f.ny - 1, tag, {}};
+            for (int q = 0; q < p; ++q) {
+              const int x = j * p + q;
+              uint32_t v = 0;  // padding columns: zero (as the interpolation ring makes them)
+              if (k < f.K && x < f.nx) v = f.samples[f.index(k, y, x)];
+              if (k == f.K && opt.junk) v = static_cast<uint32_t>(rng.bits(kVoxelBits));
+              e.sample.push_back(v);
+            }
+            s.in.push_back(std::move(e));
+          }
+        // The zero beam's B cycles, and sometimes more.
+        cycle += B;
+        if (opt.stall > 0 && rng.chance(opt.stall)) cycle += rng.range(1, opt.max_gap);
+      }
+    }
+  }
+  for (const Frame* f : frames)
+    s.expected_sample_valid += static_cast<uint64_t>(f->ny) * ((f->nx + p - 1) / p) * (f->K + 1);
+  s.sample_valid = s.in.size();
+  s.last_sample = s.in.back().cycle;
+
+  // The gradient ring's steps: every input sample, and after a slice's last
+  // one the B steps of the zero beam (beam ny), one per cycle.
+  struct Step {
+    uint64_t cycle;
+    int frame, k, y, j;
+    bool beam_end;
+  };
+  std::vector<Step> steps;
+  for (size_t i = 0; i < s.in.size(); ++i) {
+    const SampleIn& e = s.in[i];
+    if (!steps.empty() && e.cycle <= steps.back().cycle && s.error.empty()) {
+      std::ostringstream o;
+      o << "input sample at cycle " << e.cycle << " (frame " << e.frame << ", slice " << e.k << ", y " << e.y
+        << ", j " << e.j << ") falls into the zero beam of the slice before (ends at cycle " << steps.back().cycle
+        << ")";
+      s.error = o.str();
+    }
+    steps.push_back({e.cycle, e.frame, e.k, e.y, e.j, e.beam_end});
+    if (e.slice_end && e.beam_end) {
+      const Frame& f = *frames[e.frame];
+      const int B = (f.nx + p - 1) / p;
+      for (int j = 0; j < B; ++j) steps.push_back({e.cycle + 1 + j, e.frame, e.k, f.ny, j, j == B - 1});
+      s.zero_steps += B;
+      s.last_B = B;
+    }
+  }
+  // Step (k, y', j) with k >= 1, y' >= 1 gives the gradient of (j*p + q, y'-1)
+  // of slice k-1: it fires with the next step (or a cycle later at a beam's
+  // end) and appears kGradientStages cycles after that.
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const Step& st = steps[i];
+    if (st.k == 0 || st.y == 0) continue;
+    const Frame& f = *frames[st.frame];
+    const int B = (f.nx + p - 1) / p;
+    const uint64_t fire = st.beam_end ? st.cycle + 1 : steps[i + 1].cycle;
+    s.expects.push_back({fire + kGradientStages, st.frame, st.k - 1, st.y - 1, st.j, st.j == 0, st.j == B - 1,
+                         st.y == 1, st.y == f.ny});
+  }
+  s.last_output = s.expects.back().cycle;
+  s.end = s.last_output + 8;
+  return s;
+}
+
+// ===========================================================================
+// Running a ring.
+
+struct RunResult {
+  bool ok = true;
+  std::string report;
+  uint64_t checked = 0, gradients_checked = 0, last_output = 0;
+  uint64_t voxel_valid = 0, sample_valid = 0;
+  bool overrun = false;
+};
+
+template <class G, class I>
+RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<const Frame*>& frames,
+              const Stream& s, Random& rng) {
+  RunResult r;
+  cube4::rtl::reset(m);
+  if (interp) cube4::rtl::reset(*interp);
+  const int D = rp.dim_bits();
+  auto fail = [&](uint64_t cycle, int pipe, const Expect* e, const std::string& what, const std::string& detail) {
+    if (!r.ok) return;
+    r.ok = false;
+    std::ostringstream o;
+    o << "first mismatch at cycle " << cycle << ", pipeline " << pipe << ": " << what;
+    if (e) {
+      const Frame& f = *frames[e->frame];
+      o << "\n  frame " << e->frame << " (" << f.name << ", dim " << f.nx << "x" << f.ny << "x" << f.nz
+        << "), gradient of x=" << e->j * p + pipe << " y=" << e->y << " slice k=" << e->k;
+    }
+    if (!detail.empty()) o << "\n  " << detail;
+    r.report = o.str();
+  };
+  size_t ii = 0, ei = 0;
+  for (uint64_t cycle = 0; cycle < s.end; ++cycle) {
+    const SampleIn* in = ii < s.in.size() && s.in[ii].cycle == cycle ? &s.in[ii] : nullptr;
+    if (interp) {
+      VoxelBeat idle;
+      const VoxelBeat* b = &idle;
+      if (cycle < s.beats.size()) {
+        b = &s.beats[cycle];
+      } else {
+        idle.wz = rng.range(0, 256);
+        idle.tag = rng.bits(kTagBits);
+        for (int q = 0; q < p; ++q) idle.voxel.push_back(rng.bits(kVoxelBits));
+      }
+      I& v = *interp;
+      v.valid_i = b->valid;
+      v.beam_start_i = b->beam_start;
+      v.beam_end_i = b->beam_end;
+      v.slice_start_i = b->slice_start;
+      v.slice_end_i = b->slice_end;
+      v.wx_i = b->wx;
+      v.wy_i = b->wy;
+      v.wz_i = b->wz;
+      v.tag_i = b->tag;
+      for (int q = 0; q < p; ++q) put_bits(v.voxel_i, q * kVoxelBits, kVoxelBits, b->voxel[q]);
+      if (b->valid) ++r.voxel_valid;
+      cube4::rtl::settle(v);
+      // The interpolation ring's outputs drive the gradient ring as they are.
+      m.valid_i = v.valid_o;
+      m.beam_start_i = v.beam_start_o;
+      m.beam_end_i = v.beam_end_o;
+      m.slice_start_i = v.slice_start_o;
+      m.slice_end_i = v.slice_end_o;
+      m.sample_i = v.sample_o;
+      m.tag_i = v.tag_o;
+      // Its timing and samples, as docs/rtl-interp.md promises (checked here
+      // only to tell an interpolation fault from a gradient one).
+      for (int q = 0; q < p; ++q) {
+        const bool valid = get_bits(v.valid_o, q, 1);
+        if (valid != (in != nullptr)) {
+          fail(cycle, q, nullptr, "interpolation ring valid_o differs from its documented timing", "");
+          continue;
+        }
+        if (!in) continue;
+        const Frame& f = *frames[in->frame];
+        const int x = in->j * p + q;
+        if (in->k < f.K && x < f.nx) {
+          const uint32_t exp = f.samples[f.index(in->k, in->y, x)];
+          const uint32_t got = static_cast<uint32_t>(get_bits(v.sample_o, q * kVoxelBits, kVoxelBits));
+          if (exp != got)
+            fail(cycle, q, nullptr, "interpolation ring sample differs",
+                 "x=" + std::to_string(x) + " y=" + std::to_string(in->y) + " k=" + std::to_string(in->k) +
+                     " expected " + std::to_string(exp) + " got " + std::to_string(got));
+        }
+      }
+    } else {
+      // Direct: junk on every input while valid_i is low.
+      const bool v = in != nullptr;
+      for (int q = 0; q < p; ++q) {
+        put_bits(m.valid_i, q, 1, v);
+        put_bits(m.beam_start_i, q, 1, v ? in->beam_start : rng.chance(0.5));
+        put_bits(m.beam_end_i, q, 1, v ? in->beam_end : rng.chance(0.5));
+        put_bits(m.slice_start_i, q, 1, v ? in->slice_start : rng.chance(0.5));
+        put_bits(m.slice_end_i, q, 1, v ? in->slice_end : rng.chance(0.5));
+        put_bits(m.sample_i, q * kVoxelBits, kVoxelBits, v ? in->sample[q] : rng.bits(kVoxelBits));
+        put_bits(m.tag_i, q * kTagBits, kTagBits, v ? in->tag : rng.bits(kTagBits));
+      }
+    }
+    if (in) {
+      ++r.sample_valid;
+      ++ii;
+    }
+    cube4::rtl::settle(m);
+
+    const Expect* e = ei < s.expects.size() && s.expects[ei].cycle == cycle ? &s.expects[ei] : nullptr;
+    for (int q = 0; q < p; ++q) {
+      const bool valid = get_bits(m.valid_o, q, 1);
+      if (!e) {
+        if (valid) fail(cycle, q, nullptr, "valid_o high with no gradient due", "");
+        continue;
+      }
+      if (!valid) {
+        fail(cycle, q, e, "valid_o low, a gradient was due", "");
+        continue;
+      }
+      const Frame& f = *frames[e->frame];
+      const int x = e->j * p + q;
+      const bool real = x < f.nx;  // else a padding column: sample 0, gradient not defined
+      const size_t i = real ? f.index(e->k, e->y, x) : 0;
+      const uint32_t exp_sample = real ? f.samples[i] : 0;
+      const g::Gradient exp_g = real ? f.gradients[i] : g::Gradient{};
+      const uint32_t exp_tag = user_tag(e->frame, e->k);
+      const uint32_t sample = static_cast<uint32_t>(get_bits(m.sample_o, q * kVoxelBits, kVoxelBits));
+      const g::Gradient got_g{
+          static_cast<int32_t>(cube4::rtl::sign_extend(get_bits(m.gx_o, q * kGradientBits, kGradientBits), kGradientBits)),
+          static_cast<int32_t>(cube4::rtl::sign_extend(get_bits(m.gy_o, q * kGradientBits, kGradientBits), kGradientBits)),
+          static_cast<int32_t>(cube4::rtl::sign_extend(get_bits(m.gz_o, q * kGradientBits, kGradientBits), kGradientBits))};
+      const int gx = static_cast<int>(get_bits(m.x_o, q * D, D)), gy = static_cast<int>(get_bits(m.y_o, q * D, D));
+      const uint32_t tag = static_cast<uint32_t>(get_bits(m.tag_o, q * kUserTagBits, kUserTagBits));
+      const bool bs = get_bits(m.beam_start_o, q, 1), be = get_bits(m.beam_end_o, q, 1);
+      const bool ss = get_bits(m.slice_start_o, q, 1), se = get_bits(m.slice_end_o, q, 1);
+      const bool same = sample == exp_sample && (!real || got_g == exp_g) && gx == x && gy == e->y &&
+                        tag == exp_tag && bs == e->beam_start && be == e->beam_end && ss == e->slice_start &&
+                        se == e->slice_end;
+      if (!same) {
+        std::ostringstream d;
+        d << "expected: g=(" << exp_g.x << "," << exp_g.y << "," << exp_g.z << ")" << (real ? "" : " (padding: any)")
+          << " sample=" << exp_sample << " x=" << x << " y=" << e->y << " tag=" << exp_tag
+          << " flags bs/be/ss/se=" << e->beam_start << e->beam_end << e->slice_start << e->slice_end
+          << "\n  got:      g=(" << got_g.x << "," << got_g.y << "," << got_g.z << ") sample=" << sample
+          << " x=" << gx << " y=" << gy << " tag=" << tag << " flags bs/be/ss/se=" << bs << be << ss << se;
+        fail(cycle, q, e, "output differs", d.str());
+      } else {
+        ++r.checked;
+        if (real) ++r.gradients_checked;
+      }
+      if (real) r.last_output = cycle;
+    }
+    if (e) ++ei;
+    if (interp) cube4::rtl::rise(*interp);
+    cube4::rtl::rise(m);
+  }
+  if (ei != s.expects.size())
+    fail(s.end, 0, &s.expects[ei], std::to_string(s.expects.size() - ei) + " gradients never appeared", "");
+  r.overrun = m.overrun_o;
+  return r;
+}
+
+// Streams the frames back to back through ring G (chain: behind ring I) and
+// checks everything.
+template <class G, class I>
+void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
+                uint64_t salt, uint64_t* gradients_checked = nullptr) {
+  std::string what;
+  for (const Frame* f : frames) {
+    what += (what.empty() ? "" : " + ") + f->name;
+    const int B = (f->nx + rp.p - 1) / rp.p;
+    ASSERT_LE(B, rp.beam_depth()) << f->name << ": the beam does not fit the ring's beam delay";
+    ASSERT_LE(B * f->ny, rp.slice_depth()) << f->name << ": the slice does not fit the ring's slice delay";
+    ASSERT_LE(f->S, (1 << kSupersamplingBits) - 1);
+  }
+  SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.chain ? ", chain" : ", direct") +
+               (opt.stall > 0 ? ", stalls" : ", no stalls") + (opt.junk ? ", junk" : "") + ": " + what);
+  Random rng(salt);
+  const Stream s = make_stream(frames, rp.p, opt, rng);
+  ASSERT_TRUE(s.error.empty()) << s.error;
+  auto m = std::make_unique<G>();
+  std::unique_ptr<I> interp = opt.chain ? std::make_unique<I>() : nullptr;
+  const RunResult r = run(*m, interp.get(), rp.p, rp, frames, s, rng);
+  m->final();
+  if (interp) interp->final();
+  EXPECT_TRUE(r.ok) << r.report;
+  EXPECT_FALSE(r.overrun) << "overrun_o set";
+  if (!r.ok) return;
+  // Every sample of every frame has its gradient, once per pipeline column;
+  // the columns x < nx equal golden.
+  uint64_t expected = 0, golden = 0;
+  for (const Frame* f : frames) {
+    expected += static_cast<uint64_t>(f->K) * f->ny * ((f->nx + rp.p - 1) / rp.p) * rp.p;
+    golden += f->samples.size();
+  }
+  EXPECT_EQ(r.checked, expected);
+  EXPECT_EQ(r.gradients_checked, golden);
+  // Cycle counts: ny * B * (K + 1) input samples per frame (the zero slice
+  // included; chain: (ny + 1) * B * (K + 1) voxel cycles), B zero-beam steps
+  // per slice, and the last gradient B + 4 cycles after the last sample
+  // (chain: B + 8 after the last voxel).
+  EXPECT_EQ(r.sample_valid, s.expected_sample_valid);
+  EXPECT_EQ(s.sample_valid, s.expected_sample_valid);
+  if (opt.chain) {
+    EXPECT_EQ(r.voxel_valid, s.expected_voxel_valid);
+    EXPECT_EQ(r.last_output, s.last_voxel + s.last_B + kInterpLatency + 1 + kGradientStages);
+  }
+  EXPECT_EQ(r.last_output, s.last_sample + s.last_B + 1 + kGradientStages);
+  uint64_t zero_steps = 0;
+  for (const Frame* f : frames) zero_steps += static_cast<uint64_t>((f->nx + rp.p - 1) / rp.p) * (f->K + 1);
+  EXPECT_EQ(s.zero_steps, zero_steps);
+  if (gradients_checked) *gradients_checked += golden;
+}
+
+struct View {
+  const char* name;
+  std::array<double, 3> dir, up;
+};
+// The six base planes exactly, each tilted off axis (every weight and every
+// realign base moves: the x-1/x+1 and y-1/y+1 paths and both ring wraps
+// matter), 45-degree views and an oblique one.
+const std::vector<View> kViews = {
+    {"+x", {1, 0, 0}, {0, 1, 0}},          {"-x", {-1, 0, 0}, {0, 1, 0}},
+    {"+y", {0, 1, 0}, {0, 0, 1}},          {"-y", {0, -1, 0}, {0, 0, 1}},
+    {"+z", {0, 0, 1}, {0, 1, 0}},          {"-z", {0, 0, -1}, {0, 1, 0}},
+    {"+x tilted", {1, 0.3, -0.45}, {0, 1, 0}},   {"-x tilted", {-1, -0.2, 0.35}, {0, 1, 0}},
+    {"+y tilted", {0.25, 1, 0.4}, {0, 0, 1}},    {"-y tilted", {-0.4, -1, -0.3}, {0, 0, 1}},
+    {"+z tilted", {0.35, -0.3, 1}, {0, 1, 0}},   {"-z tilted", {-0.3, 0.45, -1}, {0, 1, 0}},
+    {"45 xz", {1, 0, 1}, {0, 1, 0}},       {"45 xyz", {-1, 1, 1}, {0, 1, 0}},
+    {"oblique", {0.7, -0.6, 1}, {0, 1, 0}},
+};
+// Volume sizes (every permutation appears across the views; all fit p = 5
+// with MaxDim 12).
+const std::array<std::array<int, 3>, 3> kSizes = {{{9, 7, 6}, {12, 5, 8}, {7, 11, 10}}};
+
+// Every view, S = 1, 2, 3: chained without stalls, chained with stalls and
+// junk, direct with random gaps and junk.
+template <class G, class I>
+void ring_matrix(const RingParams& rp) {
+  Timer t("p=" + std::to_string(rp.p) + " matrix");
+  uint64_t gradients = 0, saturated = 0;
+  int runs = 0;
+  // Coverage: each realign field (behind x/y, ahead x/y) with base 0 and -1.
+  std::array<std::array<int, 2>, 4> bases{};
+  for (size_t v = 0; v < kViews.size(); ++v)
+    for (int S : {1, 2, 3}) {
+      const Frame& f = frame(kViews[v].name, kSizes[(v + S) % kSizes.size()], kViews[v].dir, kViews[v].up, S,
+                             static_cast<int>(3 + v));
+      for (int k = 0; k < f.K; ++k) {
+        const g::SliceControl c = g::slice_control(f.regs, k);
+        const g::Realign r[4] = {c.behind_x, c.behind_y, c.ahead_x, c.ahead_y};
+        for (int i = 0; i < 4; ++i) ++bases[i][r[i].base < 0];
+      }
+      for (const g::Gradient& gr : f.gradients)
+        for (int comp : {gr.x, gr.y, gr.z}) saturated += std::abs(comp) == (1 << (kGradientBits - 1)) - 1;
+      for (int mode = 0; mode < 3; ++mode) {
+        StreamOptions opt;
+        opt.chain = mode < 2;
+        opt.stall = mode == 0 ? 0 : 0.3;
+        opt.junk = mode > 0;
+        check_ring<G, I>(rp, {&f}, opt, 1000 * rp.p + 10 * v + S + 100 * mode, &gradients);
+        ++runs;
+        if (::testing::Test::HasFailure()) return;
+      }
+    }
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_GT(bases[i][0], 0) << "realign field " << i << " never has base 0";
+    EXPECT_GT(bases[i][1], 0) << "realign field " << i << " never has base -1";
+  }
+  std::printf("  p=%d: %d runs, %llu golden gradients matched in all (slices with base -1: behind x %d y %d, "
+              "ahead x %d y %d; saturated components %llu)\n",
+              rp.p, runs, static_cast<unsigned long long>(gradients), bases[0][1], bases[1][1], bases[2][1],
+              bases[3][1], static_cast<unsigned long long>(saturated));
+}
+
+TEST(RtlGradientRing, P1MatchesGoldenGradients) {
+  ring_matrix<Vcube4_gradient_ring_p1, Vcube4_interp_ring_g1>(kRingP1);
+}
+TEST(RtlGradientRing, P2MatchesGoldenGradients) {
+  ring_matrix<Vcube4_gradient_ring_p2, Vcube4_interp_ring_g2>(kRingP2);
+}
+TEST(RtlGradientRing, P4MatchesGoldenGradients) {
+  ring_matrix<Vcube4_gradient_ring, Vcube4_interp_ring_g4>(kRingP4);
+}
+TEST(RtlGradientRing, P5MatchesGoldenGradients) {
+  ring_matrix<Vcube4_gradient_ring_p5, Vcube4_interp_ring_g5>(kRingP5);
+}
+
+// Frames back to back without a reset (different sizes, permutations and
+// S: the first slice of each frame re-primes the storage), chained and
+// direct, with and without stalls, every p.
+TEST(RtlGradientRing, BackToBackFrames) {
+  Timer t("back-to-back frames");
+  const Frame& a = frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 21);
+  const Frame& b = frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 22);
+  const Frame& c = frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 1, 23);
+  const Frame& d = frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24);
+  const std::vector<const Frame*> frames = {&a, &b, &c, &d};
+  for (int mode = 0; mode < 4; ++mode) {
+    StreamOptions opt;
+    opt.chain = mode < 2;
+    opt.stall = mode % 2 ? 0.25 : 0;
+    opt.junk = mode % 2;
+    check_ring<Vcube4_gradient_ring_p1, Vcube4_interp_ring_g1>(kRingP1, frames, opt, 71 + 10 * mode);
+    check_ring<Vcube4_gradient_ring_p2, Vcube4_interp_ring_g2>(kRingP2, frames, opt, 72 + 10 * mode);
+    check_ring<Vcube4_gradient_ring, Vcube4_interp_ring_g4>(kRingP4, frames, opt, 74 + 10 * mode);
+    check_ring<Vcube4_gradient_ring_p5, Vcube4_interp_ring_g5>(kRingP5, frames, opt, 75 + 10 * mode);
+  }
+}
+
+// Slices that fill the slice delay to its last entry (ny * ceil(nx/p) =
+// SliceDepth) and beams that fill the beam delay (ceil(nx/p) = BeamDepth);
+// tiny volumes (one beam, one partial beam, one slice).
+TEST(RtlGradientRing, FullStorageAndTinyVolumes) {
+  Timer t("full storage, tiny volumes");
+  const Frame& f2 = frame("+z tilted", {16, 16, 3}, {0.2, 0.3, 1}, {0, 1, 0}, 2, 31);
+  ASSERT_EQ((f2.nx + 1) / 2 * f2.ny, kRingP2.slice_depth());
+  const Frame& f5 = frame("-z tilted", {15, 12, 3}, {0.3, -0.2, -1}, {0, 1, 0}, 3, 32);
+  ASSERT_EQ((f5.nx + 4) / 5 * f5.ny, kRingP5.slice_depth());
+  const Frame& f1 = frame("+z tilted", {24, 24, 2}, {0.45, 0.2, 1}, {0, 1, 0}, 2, 33);
+  ASSERT_EQ(f1.nx * f1.ny, kRingP1.slice_depth());
+  for (int mode = 0; mode < 3; ++mode) {
+    StreamOptions opt;
+    opt.chain = mode < 2;
+    opt.stall = mode ? 0.3 : 0;
+    opt.junk = mode > 0;
+    check_ring<Vcube4_gradient_ring_p2, Vcube4_interp_ring_g2>(kRingP2, {&f2}, opt, 81 + 10 * mode);
+    check_ring<Vcube4_gradient_ring_p5, Vcube4_interp_ring_g5>(kRingP5, {&f5}, opt, 85 + 10 * mode);
+    check_ring<Vcube4_gradient_ring_p1, Vcube4_interp_ring_g1>(kRingP1, {&f1}, opt, 82 + 10 * mode);
+  }
+  const std::vector<std::array<int, 3>> tiny = {{1, 1, 1}, {1, 3, 2}, {4, 1, 3}, {2, 2, 1}, {5, 1, 1}};
+  for (size_t i = 0; i < tiny.size(); ++i)
+    for (int S : {1, 2}) {
+      const Frame& f = frame("tiny +z tilted", tiny[i], {0.3, -0.4, 1}, {0, 1, 0}, S, static_cast<int>(40 + i));
+      for (bool chain : {true, false}) {
+        StreamOptions opt;
+        opt.chain = chain;
+        opt.stall = 0.2;
+        opt.junk = true;
+        check_ring<Vcube4_gradient_ring_p1, Vcube4_interp_ring_g1>(kRingP1, {&f}, opt, 600 + i);
+        check_ring<Vcube4_gradient_ring_p2, Vcube4_interp_ring_g2>(kRingP2, {&f}, opt, 610 + i);
+        check_ring<Vcube4_gradient_ring, Vcube4_interp_ring_g4>(kRingP4, {&f}, opt, 620 + i);
+        check_ring<Vcube4_gradient_ring_p5, Vcube4_interp_ring_g5>(kRingP5, {&f}, opt, 630 + i);
+      }
+    }
+}
+
+// Random scenes: direction, volume size, S up to VolumePro's 8, gap rate
+// and length; every ring, chained and direct.
+TEST(RtlGradientRing, RandomScenes) {
+  Timer t("random scenes");
+  Random rng(0x6AD1E);
+  const long n = cube4::rtl::vector_count(1000000) >= 1000000 ? 24 : 4;
+  uint64_t gradients = 0;
+  for (long i = 0; i < n; ++i) {
+    std::array<double, 3> dir;
+    for (double& d : dir) d = static_cast<double>(rng.range(-100, 100)) / 100.0;
+    dir[rng.range(0, 2)] = rng.chance(0.5) ? 1.0 : -1.0;  // never all zero
+    const bool up_z = std::abs(dir[1]) >= std::abs(dir[0]) && std::abs(dir[1]) >= std::abs(dir[2]);
+    const std::array<double, 3> up = up_z ? std::array<double, 3>{0, 0, 1} : std::array<double, 3>{0, 1, 0};
+    const std::array<int, 3> size = {static_cast<int>(rng.range(1, 12)), static_cast<int>(rng.range(1, 12)),
+                                      static_cast<int>(rng.range(1, 12))};
+    const int S = static_cast<int>(rng.range(1, 8));
+    const Frame& f = frame("random " + std::to_string(i), size, dir, up, S, static_cast<int>(100 + i));
+    StreamOptions opt;
+    opt.chain = rng.chance(0.5);
+    opt.stall = rng.chance(0.5) ? 0 : static_cast<double>(rng.range(1, 60)) / 100.0;
+    opt.max_gap = static_cast<int>(rng.range(1, 5));
+    opt.junk = rng.chance(0.5);
+    check_ring<Vcube4_gradient_ring_p1, Vcube4_interp_ring_g1>(kRingP1, {&f}, opt, 200 + i, &gradients);
+    check_ring<Vcube4_gradient_ring_p2, Vcube4_interp_ring_g2>(kRingP2, {&f}, opt, 300 + i, &gradients);
+    check_ring<Vcube4_gradient_ring, Vcube4_interp_ring_g4>(kRingP4, {&f}, opt, 400 + i, &gradients);
+    check_ring<Vcube4_gradient_ring_p5, Vcube4_interp_ring_g5>(kRingP5, {&f}, opt, 500 + i, &gradients);
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::printf("  %ld random scenes, each through p = 1, 2, 4, 5: %llu golden gradients matched\n", n,
+              static_cast<unsigned long long>(gradients));
+}
+
+// A larger volume through the default chain (p = 4, 256^3 storage).
+TEST(RtlGradientRing, LargerVolumeP4) {
+  Timer t("larger volume, p=4");
+  for (int S : {1, 4}) {
+    const Frame& f = frame("oblique", {37, 30, 14}, {0.55, 0.4, -1}, {0, 1, 0}, S, 41);
+    StreamOptions opt;
+    opt.stall = 0.1;
+    check_ring<Vcube4_gradient_ring, Vcube4_interp_ring_g4>(kRingP4, {&f}, opt, 90 + S);
+  }
+}
+
+// A sample inside the zero beam is a protocol error: it is ignored and
+// overrun_o goes high (and stays until reset).
+TEST(RtlGradientRing, OverrunFlag) {
+  auto m = std::make_unique<Vcube4_gradient_ring_p2>();
+  cube4::rtl::reset(*m);
+  Random rng(0x0E);
+  // One slice of 2 beams x 3 partial beams, then a sample one cycle after
+  // its end (the zero beam needs 3).
+  auto drive = [&](bool valid, bool bs, bool be, bool ss, bool se) {
+    m->valid_i = valid ? 3 : 0;
+    m->beam_start_i = bs ? 3 : 0;
+    m->beam_end_i = be ? 3 : 0;
+    m->slice_start_i = ss ? 3 : 0;
+    m->slice_end_i = se ? 3 : 0;
+    m->sample_i = rng.bits(2 * kVoxelBits);
+    put_bits(m->tag_i, 0, kTagBits, 0);
+    put_bits(m->tag_i, kTagBits, kTagBits, 0);
+    cube4::rtl::settle(*m);
+    cube4::rtl::rise(*m);
+  };
+  for (int y = 0; y < 2; ++y)
+    for (int j = 0; j < 3; ++j) drive(true, j == 0, j == 2, y == 0, y == 1);
+  cube4::rtl::settle(*m);
+  EXPECT_FALSE(m->overrun_o);
+  drive(false, false, false, false, false);
+  drive(true, true, false, true, false);
+  cube4::rtl::settle(*m);
+  EXPECT_TRUE(m->overrun_o);
+  for (int i = 0; i < 5; ++i) drive(false, false, false, false, false);
+  EXPECT_TRUE(m->overrun_o);
+  cube4::rtl::reset(*m);
+  EXPECT_FALSE(m->overrun_o);
+  m->final();
+}
+
+}  // namespace
