@@ -1,0 +1,389 @@
+// cube4_composite_unit: one pipeline's compositing unit with its ray storage
+// and ray alignment (VolumePro §3.6 and Fig. 4: Ray Slice FIFO, Ray Beam
+// FIFO, Ray Shift Register and the Ray Alignment multiplexers; §5.1: the
+// shift registers as near-neighbour links). docs/rtl-composite.md describes
+// the dataflow.
+//
+// Function: pipeline k of p receives, for every sample slice, the shaded
+// samples of its columns x = j*p + k in beam order (beams y = 0 .. ny-1,
+// partial beams j = 0 .. B-1, B = ceil(nx/p)), and blends each into the
+// partially composited ray it continues (cube4_composite, instantiated
+// unchanged: cropping, cut plane, blend). Golden render_fixed():
+//   - the ray at (x, y) of slice k continues the ray at (x - dx, y - dy) of
+//     slice k-1 ((dx, dy) of slice k, each 0 or 1), or starts empty when
+//     that lies outside the slice (x - dx < 0 or y - dy < 0) and in the
+//     first slice of a frame;
+//   - a ray of slice k is final when it has no successor in slice k+1
+//     (x + dx' >= nx or y + dy' >= ny, (dx', dy') of slice k+1) or k is the
+//     last slice: it is emitted on the pixel port as base-plane pixel
+//     (u, v) = (x + last_ix - ix, y + last_iy - iy) (ix, iy: the DDA integer
+//     offsets of slice k; last_ix, last_iy: those of the last slice). Every
+//     ray is emitted exactly once, as its last sample is composited, so the
+//     port carries at most one pixel per cycle. (Golden writes a side-face
+//     ray while compositing slice k+1; the pixel and its value are the same.)
+// The four candidates of the previous slice come from:
+//   (x, y)     : the ray slice store (own entry, read before it is rewritten);
+//   (x, y-1)   : the ray beam delay (the store's output, one beam later);
+//   (x-1, .)   : pipeline k-1's candidate (link_i), selected by dy there;
+//                for pipeline 0 (WrapIn) pipeline p-1's candidate of the
+//                previous partial beam, held in the wrap register (the Ray
+//                Shift Register of the rightmost pipeline, Fig. 11).
+// Padding columns (x >= nx, when p does not divide nx) are composited like
+// the others but never emitted; nothing reads their rays.
+//
+// Storage order (the brief's hazard): the store is single-buffered, in
+// place. A slice-k sample of ray (x, y) is composited AccDelay cycles after
+// it enters; in that cycle the store entry of (x, y) is read (it still holds
+// slice k-1), the candidate at (x, y-1) comes from the beam delay (a copy of
+// slice k-1 made when that entry was read, one beam earlier, before it was
+// overwritten), the (x-1, .) candidates are the neighbour's reads of the same
+// step (or the wrap register's copy of the previous step), and the slice-k
+// result is written into the entry of (x, y) one cycle later. So every read
+// of slice k-1 precedes the write of slice k to the same entry, and no
+// slice-k result is ever a candidate. When the previous step wrote the entry
+// being read in the cycle before (a slice of one step: ny = 1, nx <= p,
+// back to back), its result is bypassed from cube4_composite's output.
+//
+// Stream (valid_i cycles; any number of idle cycles between them; all
+// pipelines of a ring get the same control):
+//   beam_start_i / beam_end_i   : partial beam j = 0 / j = B-1
+//   slice_start_i / slice_end_i : beam y = 0 / y = ny-1
+//   first_slice_i / last_slice_i: slice 0 / slice K-1 of a frame
+//   dx_i, dy_i                  : the slice's offset change since the
+//                                 previous slice (golden SliceControl dx, dy)
+//   next_dx_i, next_dy_i        : the next slice's (ignored in the last slice)
+//   ix_i, iy_i                  : the slice's DDA integer offsets
+//   x_i, y_i, z_i               : the sample's position (z = voxel slice
+//                                 z_voxel), wx_i, wy_i, wz_i: slice weights
+//   nx_i, last_ix_i, last_iy_i  : the frame's permuted nx and the last slice's
+//                                 offsets; sampled with each valid_i (only at
+//                                 the input), so they may change between two
+//                                 frames without a gap
+//   red_i, green_i, blue_i, alpha_i, value_i: the shaded sample before
+//                                 cropping and the cut plane (not premultiplied)
+// The frame registers of cube4_composite (blend mode, crop, cut) may change
+// only while no sample is in flight (Latency cycles after the last input).
+//
+// Latency: a sample's pixel (if its ray ends there) appears on pixel_*_o
+// Latency = 7 cycles after it enters (cube4_composite's latency); the ray
+// storage steps AccDelay = 6 cycles after the input. One sample per clock.
+// Handshake: valid-only, no back-pressure. Reset: control only (valid
+// delays, store pointers); data registers and RAMs are not reset.
+//
+// Preconditions: every slice is complete (ny beams of the same B partial
+// beams); B <= BeamDepth; ny * B <= SliceDepth; dx, dy, next_dx, next_dy as
+// golden (a change of the DDA offset by 0 or 1 per slice).
+//
+// Parameters:
+//   VoxelBits, WeightBits, AlphaBits, CutBits, CutInvShift, PosBits,
+//   CutCoefBits           - as cube4_composite (golden Precision defaults)
+//   BeamDepth             - ray beam delay entries: max partial beams per beam
+//   SliceDepth            - ray slice store entries: max ny * partial beams
+//   WrapIn                - 1 for pipeline 0: link_i is pipeline p-1's link_o
+//                           of the same step, registered here (the ring wrap)
+//   AccBits               - (derived) a ray: {selected, value, alpha, blue,
+//                           green, red}, golden RayAcc
+module cube4_composite_unit #(
+  parameter int unsigned  VoxelBits   = 12,
+  parameter int unsigned  WeightBits  = 8,
+  parameter int unsigned  AlphaBits   = 12,
+  parameter int unsigned  CutBits     = 32,
+  parameter int unsigned  CutInvShift = 24,
+  parameter int unsigned  PosBits     = 16,
+  parameter int unsigned  CutCoefBits = 12,
+  parameter int unsigned  BeamDepth   = 64,
+  parameter int unsigned  SliceDepth  = 16384,
+  parameter bit           WrapIn      = 1'b0,
+  localparam int unsigned AccBits     = 4 * AlphaBits + VoxelBits + 1
+) (
+  input  logic                             clk_i,
+  input  logic                             rst_ni,
+  // Frame registers of cube4_composite.
+  input  logic [1:0]                       blend_mode_i,
+  input  logic                             crop_enabled_i,
+  input  logic [PosBits-1:0]               crop_x_lo_i,
+  input  logic [PosBits-1:0]               crop_x_hi_i,
+  input  logic [PosBits-1:0]               crop_y_lo_i,
+  input  logic [PosBits-1:0]               crop_y_hi_i,
+  input  logic [PosBits-1:0]               crop_z_lo_i,
+  input  logic [PosBits-1:0]               crop_z_hi_i,
+  input  logic [7:0]                       crop_mask_i,
+  input  logic                             cut_enabled_i,
+  input  logic signed [CutCoefBits-1:0]    cut_a_i,
+  input  logic signed [CutCoefBits-1:0]    cut_b_i,
+  input  logic signed [CutCoefBits-1:0]    cut_c_i,
+  input  logic signed [CutBits-1:0]        cut_dmin_i,
+  input  logic signed [CutBits-1:0]        cut_dmax_i,
+  input  logic [CutBits-1:0]               cut_falloff_i,
+  input  logic [AlphaBits+CutInvShift-1:0] cut_inv_falloff_i,
+  input  logic                             cut_keep_inside_i,
+  // Frame values sampled with valid_i.
+  input  logic [PosBits-1:0]               nx_i,
+  input  logic [PosBits-1:0]               last_ix_i,
+  input  logic [PosBits-1:0]               last_iy_i,
+  // Sample stream.
+  input  logic                             valid_i,
+  input  logic                             beam_start_i,
+  input  logic                             beam_end_i,
+  input  logic                             slice_start_i,
+  input  logic                             slice_end_i,
+  input  logic                             first_slice_i,
+  input  logic                             last_slice_i,
+  input  logic                             dx_i,
+  input  logic                             dy_i,
+  input  logic                             next_dx_i,
+  input  logic                             next_dy_i,
+  input  logic [PosBits-1:0]               ix_i,
+  input  logic [PosBits-1:0]               iy_i,
+  input  logic [PosBits-1:0]               x_i,
+  input  logic [PosBits-1:0]               y_i,
+  input  logic [PosBits-1:0]               z_i,
+  input  logic [WeightBits-1:0]            wx_i,
+  input  logic [WeightBits-1:0]            wy_i,
+  input  logic [WeightBits-1:0]            wz_i,
+  input  logic [AlphaBits-1:0]             red_i,
+  input  logic [AlphaBits-1:0]             green_i,
+  input  logic [AlphaBits-1:0]             blue_i,
+  input  logic [AlphaBits-1:0]             alpha_i,
+  input  logic [VoxelBits-1:0]             value_i,
+  // Near-neighbour links: this step's candidate of column x (to pipeline
+  // k+1), and pipeline k-1's (or, WrapIn, pipeline p-1's) candidate.
+  output logic [AccBits-1:0]               link_o,
+  input  logic [AccBits-1:0]               link_i,
+  // Finished base-plane pixels.
+  output logic                             pixel_valid_o,
+  output logic [PosBits-1:0]               pixel_u_o,
+  output logic [PosBits-1:0]               pixel_v_o,
+  output logic [AlphaBits-1:0]             pixel_red_o,
+  output logic [AlphaBits-1:0]             pixel_green_o,
+  output logic [AlphaBits-1:0]             pixel_blue_o,
+  output logic [AlphaBits-1:0]             pixel_alpha_o
+);
+
+  localparam int unsigned A              = AlphaBits;
+  // cube4_composite's timing (its header): the predecessor enters AccDelay
+  // cycles after the sample, the result leaves Latency cycles after it.
+  localparam int unsigned AccDelay       = 6;
+  localparam int unsigned Latency        = 7;
+  localparam int unsigned CtrlBits       = 7;
+  localparam int unsigned ExitBits       = 1 + 2 * PosBits;
+  localparam int unsigned PtrBits        = (SliceDepth > 1) ? $clog2(SliceDepth) : 1;
+  localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
+
+  // -------------------------------------------------------------------------
+  // Input stage: whether the sample's ray ends here, and its pixel address.
+  logic                 exit_d;
+  logic [PosBits:0]     x_next;
+  logic [PosBits-1:0]   u_d, v_d;
+  assign x_next = {1'b0, x_i} + (PosBits+1)'(1);
+  assign exit_d = (x_i < nx_i)
+               && (last_slice_i
+                   || (next_dx_i && x_next == {1'b0, nx_i})
+                   || (next_dy_i && slice_end_i));
+  assign u_d    = x_i + last_ix_i - ix_i;
+  assign v_d    = y_i + last_iy_i - iy_i;
+
+  // Delay lines beside cube4_composite (packed: yosys 0.23). The ray-storage
+  // control reaches stage AccDelay, the exit flag and pixel address the
+  // output. Only the valid delay is reset.
+  logic [AccDelay-1:0]          step_q;
+  logic [AccDelay*CtrlBits-1:0] ctrl_q;
+  logic [Latency*ExitBits-1:0]  exit_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      step_q <= '0;
+    end else begin
+      step_q <= {step_q[AccDelay-2:0], valid_i};
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    ctrl_q <= {ctrl_q[(AccDelay-1)*CtrlBits-1:0],
+               first_slice_i, slice_start_i, slice_end_i, beam_start_i, beam_end_i, dx_i, dy_i};
+    exit_q <= {exit_q[(Latency-1)*ExitBits-1:0], exit_d, u_d, v_d};
+  end
+
+  // Stage AccDelay: one step of the ray storage per sample.
+  logic step, first_a, slice_start_a, slice_end_a, beam_start_a, beam_end_a, dx_a, dy_a;
+  assign step = step_q[AccDelay-1];
+  assign {first_a, slice_start_a, slice_end_a, beam_start_a, beam_end_a, dx_a, dy_a} =
+      ctrl_q[(AccDelay-1)*CtrlBits +: CtrlBits];
+
+  // -------------------------------------------------------------------------
+  // Compositing datapath; its result is the ray of this slice.
+  logic [AccBits-1:0] pred, result;
+  logic               result_valid;
+  logic [A-1:0]       res_red, res_green, res_blue, res_alpha;
+  logic [VoxelBits-1:0] res_value;
+  logic               res_selected;
+
+  cube4_composite #(
+    .VoxelBits  (VoxelBits),
+    .WeightBits (WeightBits),
+    .AlphaBits  (AlphaBits),
+    .CutBits    (CutBits),
+    .CutInvShift(CutInvShift),
+    .PosBits    (PosBits),
+    .CutCoefBits(CutCoefBits)
+  ) u_composite (
+    .clk_i            (clk_i),
+    .rst_ni           (rst_ni),
+    .blend_mode_i     (blend_mode_i),
+    .crop_enabled_i   (crop_enabled_i),
+    .crop_x_lo_i      (crop_x_lo_i),
+    .crop_x_hi_i      (crop_x_hi_i),
+    .crop_y_lo_i      (crop_y_lo_i),
+    .crop_y_hi_i      (crop_y_hi_i),
+    .crop_z_lo_i      (crop_z_lo_i),
+    .crop_z_hi_i      (crop_z_hi_i),
+    .crop_mask_i      (crop_mask_i),
+    .cut_enabled_i    (cut_enabled_i),
+    .cut_a_i          (cut_a_i),
+    .cut_b_i          (cut_b_i),
+    .cut_c_i          (cut_c_i),
+    .cut_dmin_i       (cut_dmin_i),
+    .cut_dmax_i       (cut_dmax_i),
+    .cut_falloff_i    (cut_falloff_i),
+    .cut_inv_falloff_i(cut_inv_falloff_i),
+    .cut_keep_inside_i(cut_keep_inside_i),
+    .valid_i          (valid_i),
+    .red_i            (red_i),
+    .green_i          (green_i),
+    .blue_i           (blue_i),
+    .alpha_i          (alpha_i),
+    .value_i          (value_i),
+    .x_i              (x_i),
+    .y_i              (y_i),
+    .z_i              (z_i),
+    .wx_i             (wx_i),
+    .wy_i             (wy_i),
+    .wz_i             (wz_i),
+    .acc_red_i        (pred[0 +: A]),
+    .acc_green_i      (pred[A +: A]),
+    .acc_blue_i       (pred[2*A +: A]),
+    .acc_alpha_i      (pred[3*A +: A]),
+    .acc_value_i      (pred[4*A +: VoxelBits]),
+    .acc_selected_i   (pred[4*A+VoxelBits]),
+    .valid_o          (result_valid),
+    .red_o            (res_red),
+    .green_o          (res_green),
+    .blue_o           (res_blue),
+    .alpha_o          (res_alpha),
+    .value_o          (res_value),
+    .selected_o       (res_selected)
+  );
+  assign result = {res_selected, res_value, res_alpha, res_blue, res_green, res_red};
+
+  // -------------------------------------------------------------------------
+  // Ray slice store: one ray per column of the slice, in stream order, in
+  // place. The entry of a step is read in the step's cycle (the read
+  // register follows the read pointer every clock) and rewritten with the
+  // step's result one cycle later (write address = read pointer of the step).
+  // Not a cube4_delay_ram: its write lags its read by a cycle, so it needs
+  // two pointers. The lap ends with the slice (pointer back to entry 0).
+  logic [AccBits-1:0] mem_q [SliceDepth];
+  logic [PtrBits-1:0] rptr_q, rptr_d, waddr_q;
+  logic [AccBits-1:0] rdata_q, rdata_d, own_slice;
+  logic               lap_end;
+
+  assign lap_end = (slice_end_a && beam_end_a) || (rptr_q == PtrBits'(SliceDepth - 1));
+  always_comb begin
+    rptr_d = rptr_q;
+    if (step) begin
+      rptr_d = lap_end ? '0 : rptr_q + PtrBits'(1);
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      rptr_q <= '0;
+    end else begin
+      rptr_q <= rptr_d;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (step) begin
+      waddr_q <= rptr_q;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (result_valid) begin
+      mem_q[waddr_q] <= result;
+    end
+  end
+
+  // Read port: the next step's entry, every clock, write data forwarded.
+  assign rdata_d = (result_valid && waddr_q == rptr_d) ? result : mem_q[rptr_d];
+  always_ff @(posedge clk_i) begin
+    rdata_q <= rdata_d;
+  end
+  // Bypass: the entry was written in this very cycle by the step before
+  // (a lap of one step, back to back).
+  assign own_slice = (result_valid && waddr_q == rptr_q) ? result : rdata_q;
+
+  // -------------------------------------------------------------------------
+  // Ray beam delay: the store's output of this column one beam (one lap of
+  // B steps, ended by beam_end) later: the previous slice's ray at (x, y-1).
+  logic [AccBits-1:0] own_beam;
+
+  cube4_delay_ram #(
+    .Width   (AccBits),
+    .MaxDepth(BeamDepth)
+  ) u_beam_delay (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .depth_i  (BeamDepthBits'(BeamDepth)),
+    .clear_i  (1'b0),
+    .advance_i(step),
+    .last_i   (beam_end_a),
+    .write_i  (1'b1),
+    .wdata_i  (own_slice),
+    .rdata_o  (own_beam)
+  );
+
+  // -------------------------------------------------------------------------
+  // Ray alignment. dy picks the row here (and in every pipeline, for the
+  // link); dx picks this column or the left neighbour's.
+  logic [AccBits-1:0] own_cand, left_cand;
+  logic               no_pred;
+
+  assign own_cand = dy_a ? own_beam : own_slice;
+  assign link_o   = own_cand;
+
+  if (WrapIn) begin : g_wrap
+    // Pipeline 0: the left column is pipeline p-1's of the previous partial
+    // beam (the previous step of the same beam).
+    logic [AccBits-1:0] wrap_q;
+    always_ff @(posedge clk_i) begin
+      if (step) begin
+        wrap_q <= link_i;
+      end
+    end
+    assign left_cand = wrap_q;
+  end else begin : g_left
+    assign left_cand = link_i;
+  end
+
+  // No predecessor: the first slice, y - dy < 0, or x - dx < 0 (x = 0 is
+  // pipeline 0's first partial beam).
+  assign no_pred = first_a || (dy_a && slice_start_a) || (dx_a && WrapIn && beam_start_a);
+  assign pred    = no_pred ? '0 : (dx_a ? left_cand : own_cand);
+
+  // -------------------------------------------------------------------------
+  // Pixel port: the finished rays, straight from the compositing datapath.
+  logic               exit_o;
+  logic [PosBits-1:0] u_o, v_o;
+  assign {exit_o, u_o, v_o} = exit_q[(Latency-1)*ExitBits +: ExitBits];
+
+  assign pixel_valid_o = result_valid && exit_o;
+  assign pixel_u_o     = u_o;
+  assign pixel_v_o     = v_o;
+  assign pixel_red_o   = res_red;
+  assign pixel_green_o = res_green;
+  assign pixel_blue_o  = res_blue;
+  assign pixel_alpha_o = res_alpha;
+
+endmodule

@@ -1,0 +1,790 @@
+// RTL tests of the compositing unit with its ray storage and ray alignment:
+// cube4_composite_ring (p = 1, 2, 4, 5 pipelines) against the golden
+// renderer's base plane.
+//
+// Each scene is built with the golden host driver. Its shaded samples come
+// from golden render_fixed() itself: a SampleProbe collects every sample's
+// ShadedSample from a render with cropping and the cut plane switched off
+// (shade_sample() applies them last, so these are exactly the samples the
+// compositor receives: rgb, α, value before cropping and cut plane; the
+// ring applies both from the frame registers). The samples are streamed
+// into the verilated ring cycle by cycle, slice by slice, beam by beam,
+// partial beam by partial beam, with the slice control of golden
+// slice_control(); the pixels the ring emits are collected into a base
+// plane, which must equal golden render_fixed()'s (with cropping and cut
+// plane) bit for bit in all four channels. Besides, every pixel must appear
+// exactly in the cycle the unit's contract gives (7 cycles after the
+// sample that ends its ray; which samples end a ray is golden ray_leaves()
+// of the next slice, or the last slice), on the sample's pipeline, once.
+// Random idle cycles between partial beams, junk on every input while
+// valid_i is low and junk samples in the padding columns (x >= nx) check
+// that only valid_i and real columns matter. Nothing here re-implements the
+// compositing.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "Vcube4_composite_ring.h"
+#include "Vcube4_composite_ring_p1.h"
+#include "Vcube4_composite_ring_p2.h"
+#include "Vcube4_composite_ring_p5.h"
+#include "golden/host_driver.hpp"
+#include "golden/pipeline.hpp"
+#include "golden/renderers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+#include "tb/rtl/rtl_check.hpp"
+
+namespace {
+
+namespace g = cube4::golden;
+using cube4::rtl::Random;
+using cube4::rtl::get_bits;
+using cube4::rtl::put_bits;
+
+// Ring parameters, as in rtl/groups/composite.cmake.
+struct RingParams {
+  int p;
+  int max_dim;
+  int beam_depth() const { return (max_dim + p - 1) / p; }
+  int slice_depth() const { return max_dim * beam_depth(); }
+};
+constexpr RingParams kRingP1{1, 24}, kRingP2{2, 16}, kRingP4{4, 256}, kRingP5{5, 12};
+// The ring's default widths (golden Precision defaults; cube4_composite's
+// PosBits and CutCoefBits).
+constexpr int kVoxelBits = 12, kWeightBits = 8, kAlphaBits = 12, kCutBits = 32, kPosBits = 16, kCutCoefBits = 12;
+constexpr int kInvBits = kAlphaBits + g::kCutInvShift;
+// From a sample to the pixel of the ray it ends.
+constexpr int kLatency = 7;
+
+struct Timer {
+  std::string what;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  explicit Timer(std::string w) : what(std::move(w)) {}
+  ~Timer() {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
+  }
+};
+
+// ===========================================================================
+// Scenes and the golden results.
+
+struct Sample {
+  uint32_t r = 0, g = 0, b = 0, a = 0, value = 0;
+};
+
+struct Frame {
+  std::string name;
+  g::Registers regs;
+  g::BasePlane golden;  // render_fixed(), with cropping and cut plane
+  int nx = 0, ny = 0, nz = 0, S = 1, K = 0;
+  int last_ix = 0, last_iy = 0;
+  std::vector<g::SliceControl> ctrl;  // per sample slice
+  std::vector<Sample> samples;        // [(k * ny + y) * nx + x], before cropping and cut plane
+  const Sample& at(int k, int x, int y) const { return samples[(static_cast<size_t>(k) * ny + y) * nx + x]; }
+  // Coverage: pixels that are not zero, pixels that cropping and the cut
+  // plane change, slices with dx = 1 / dy = 1.
+  int lit_pixels = 0, clipped_pixels = 0, dx_slices = 0, dy_slices = 0;
+};
+
+// Every shaded sample of the render, once.
+struct Collect : g::SampleProbe {
+  Frame& f;
+  std::vector<int> count;
+  bool all_visible = true;
+  explicit Collect(Frame& fr) : f(fr), count(fr.samples.size(), 0) {}
+  void sample(int, int, const g::SliceControl&, uint32_t, const g::Gradient&) override {}
+  void shaded(int x, int y, const g::SliceControl& c, const g::ShadedSample& s) override {
+    const size_t i = (static_cast<size_t>(c.k) * f.ny + y) * f.nx + x;
+    f.samples[i] = {s.rgb[0], s.rgb[1], s.rgb[2], s.alpha, s.value};
+    ++count[i];
+    if (!s.visible) all_visible = false;
+  }
+};
+
+std::string vec_json(const std::array<double, 3>& d) {
+  std::ostringstream s;
+  s << "[" << d[0] << ", " << d[1] << ", " << d[2] << "]";
+  return s.str();
+}
+
+// What is rendered, besides volume and view: blend mode, shading, cropping,
+// cut plane (JSON members of the scene).
+struct Effects {
+  const char* name;
+  const char* json;
+};
+// Low opacities and coloured transfer functions, so every sample of a ray
+// leaves a trace in the composited pixel.
+const char* kTransfer =
+    R"("transfer": {"color": [[0, 1, 0.2, 0], [0.5, 0, 1, 0.3], [1, 0.1, 0, 1]],)"
+    R"( "opacity": [[0, 0.02], [0.4, 0.1], [1, 0.35]]})";
+const std::vector<Effects> kEffects = {
+    {"composite shaded", R"("shading": true)"},
+    {"mip", R"("shading": false, "blend": "mip")"},
+    {"minip", R"("shading": false, "blend": "minip")"},
+    {"composite cropped", R"("shading": true, "cropping": {"x": [2, 8], "y": [1, 9], "combine": "cross"})"},
+    {"composite cut plane",
+     R"("shading": false, "cut_plane": {"normal": [1, 0.5, 1], "dmin": 5, "dmax": 9, "falloff": 2.5})"},
+    {"mip cropped and cut",
+     R"("shading": false, "blend": "mip", "cropping": {"z": [1, 4], "x": [3, 20], "combine": "union", "invert": true},)"
+     R"( "cut_plane": {"normal": [-0.3, 1, 0.2], "dmin": 2, "dmax": 5, "falloff": 1.5, "keep": "outside"})"},
+    {"minip cut plane",
+     R"("shading": false, "blend": "minip", "cut_plane": {"normal": [0.2, 0.1, 1], "dmin": 1, "dmax": 4, "falloff": 0})"},
+};
+
+struct VolumeSpec {
+  const char* kind;  // "sphere" or "noise"
+  std::array<int, 3> size;
+  int seed;
+};
+
+const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const std::array<double, 3>& up, int S,
+                   const Effects& fx, const std::string& view_name) {
+  static std::map<std::string, std::unique_ptr<Frame>> cache;
+  std::ostringstream js;
+  js << R"({"volume": {"synthetic": ")" << vs.kind << R"(", "size": [)" << vs.size[0] << ", " << vs.size[1] << ", "
+     << vs.size[2] << "]";
+  if (std::string(vs.kind) == "noise") js << R"(, "seed": )" << vs.seed;
+  js << R"(}, "view": {"direction": )" << vec_json(dir) << R"(, "up": )" << vec_json(up) << R"(, "ray_offset": [0.3, 0.6]})"
+     << R"(, "supersampling": )" << S << ", " << kTransfer << ", " << fx.json << "}";
+  const std::string json = js.str();
+  auto& slot = cache[json];
+  if (slot) return *slot;
+  auto f = std::make_unique<Frame>();
+  const g::Scene scene = g::parse_scene(json, "test_composite_ring.json");
+  const g::Volume vol = g::load_volume(scene.volume, scene.precision.voxel_bits, ".");
+  f->regs = g::program_host(scene, vol).regs;
+  std::ostringstream n;
+  n << fx.name << ", " << vs.kind << " " << vs.size[0] << "x" << vs.size[1] << "x" << vs.size[2] << ", view "
+    << view_name << ", S=" << S;
+  f->name = n.str();
+  const g::Registers& r = f->regs;
+  f->nx = r.dim[0];
+  f->ny = r.dim[1];
+  f->nz = r.dim[2];
+  f->S = r.supersampling;
+  f->K = r.sample_slices();
+  f->last_ix = r.x_offset(f->K - 1).integer;
+  f->last_iy = r.y_offset(f->K - 1).integer;
+  for (int k = 0; k < f->K; ++k) f->ctrl.push_back(g::slice_control(r, k));
+  // The golden base plane, and the samples the compositor receives.
+  f->golden = g::render_fixed(vol, r);
+  g::Registers open = r;
+  open.crop_enabled = false;
+  open.cut_enabled = false;
+  f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, Sample{});
+  Collect probe(*f);
+  const g::BasePlane unclipped = g::render_fixed(vol, open, nullptr, {}, &probe);
+  for (size_t i = 0; i < f->golden.rgba.size(); i += 4) {
+    bool lit = false, clipped = false;
+    for (int c = 0; c < 4; ++c) {
+      lit |= f->golden.rgba[i + c] != 0;
+      clipped |= f->golden.rgba[i + c] != unclipped.rgba[i + c];
+    }
+    f->lit_pixels += lit;
+    f->clipped_pixels += clipped;
+  }
+  for (const g::SliceControl& c : f->ctrl) {
+    f->dx_slices += c.dx;
+    f->dy_slices += c.dy;
+  }
+  for (int c : probe.count)
+    if (c != 1) ADD_FAILURE() << f->name << ": the golden probe saw a sample " << c << " times";
+  EXPECT_TRUE(probe.all_visible) << f->name << ": a sample is invisible without cropping and cut plane";
+  // The stream's preconditions: offsets that move by 0 or 1 per slice, in
+  // the RTL's position range.
+  for (const g::SliceControl& c : f->ctrl) {
+    EXPECT_TRUE(c.dx == 0 || c.dx == 1) << f->name << ": dx = " << c.dx << " in slice " << c.k;
+    EXPECT_TRUE(c.dy == 0 || c.dy == 1) << f->name << ": dy = " << c.dy << " in slice " << c.k;
+    EXPECT_TRUE(c.ix >= 0 && c.iy >= 0 && c.ix <= f->last_ix && c.iy <= f->last_iy) << f->name;
+  }
+  EXPECT_EQ(f->golden.width, f->nx + f->last_ix);
+  EXPECT_EQ(f->golden.height, f->ny + f->last_iy);
+  slot = std::move(f);
+  return *slot;
+}
+
+// ===========================================================================
+// The stream.
+
+// Frame registers of the compositor (changed only while nothing is in flight).
+struct Config {
+  uint8_t mode = 0;
+  bool crop_enabled = false;
+  g::CropRegs crop;
+  bool cut_enabled = false;
+  g::CutRegs cut;
+  bool operator==(const Config& o) const {
+    return mode == o.mode && crop_enabled == o.crop_enabled && crop.slab == o.crop.slab && crop.mask == o.crop.mask &&
+           cut_enabled == o.cut_enabled && cut.a == o.cut.a && cut.b == o.cut.b && cut.c == o.cut.c &&
+           cut.dmin == o.cut.dmin && cut.dmax == o.cut.dmax && cut.falloff == o.cut.falloff &&
+           cut.inv_falloff == o.cut.inv_falloff && cut.keep_inside == o.cut.keep_inside;
+  }
+};
+
+Config config_of(const g::Registers& r) {
+  Config c;
+  c.mode = static_cast<uint8_t>(r.blend);
+  c.crop_enabled = r.crop_enabled;
+  c.crop = r.crop;
+  c.cut_enabled = r.cut_enabled;
+  c.cut = r.cut;
+  return c;
+}
+
+// One cycle of the input stream.
+struct Beat {
+  bool valid = false, beam_start = false, beam_end = false, slice_start = false, slice_end = false;
+  bool first_slice = false, last_slice = false, dx = false, dy = false, next_dx = false, next_dy = false;
+  uint32_t ix = 0, iy = 0, x = 0, y = 0, z = 0, wx = 0, wy = 0, wz = 0;
+  uint32_t nx = 0, last_ix = 0, last_iy = 0;
+  int config = 0;  // index into Stream::configs
+  int frame = -1, k = -1;  // of a valid beat, for reports
+  std::vector<Sample> sample;  // one per pipeline
+};
+
+// A pixel pipeline `pipe` must emit in `cycle`.
+struct Expect {
+  uint64_t cycle;
+  int pipe, frame, k, x, y, u, v;
+};
+
+struct StreamOptions {
+  double stall = 0;  // probability of idle cycles before a partial beam
+  int max_gap = 3;   // 1 .. max_gap idle cycles each time
+};
+
+struct Stream {
+  std::vector<Beat> beats;
+  std::vector<Config> configs;
+  std::vector<Expect> expects;  // by cycle, then pipeline
+  uint64_t valid_beats = 0, idle_beats = 0, expected_valid = 0;
+  uint64_t last_input = 0;
+};
+
+Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamOptions& opt, Random& rng) {
+  Stream s;
+  auto junk_sample = [&] {
+    return Sample{static_cast<uint32_t>(rng.bits(kAlphaBits)), static_cast<uint32_t>(rng.bits(kAlphaBits)),
+                  static_cast<uint32_t>(rng.bits(kAlphaBits)), static_cast<uint32_t>(rng.bits(kAlphaBits)),
+                  static_cast<uint32_t>(rng.bits(kVoxelBits))};
+  };
+  auto junk = [&](int config) {
+    Beat b;
+    b.valid = false;
+    for (bool* f : {&b.beam_start, &b.beam_end, &b.slice_start, &b.slice_end, &b.first_slice, &b.last_slice, &b.dx,
+                    &b.dy, &b.next_dx, &b.next_dy})
+      *f = rng.chance(0.5);
+    for (uint32_t* v : {&b.ix, &b.iy, &b.x, &b.y, &b.z, &b.nx, &b.last_ix, &b.last_iy})
+      *v = static_cast<uint32_t>(rng.bits(kPosBits));
+    for (uint32_t* v : {&b.wx, &b.wy, &b.wz}) *v = static_cast<uint32_t>(rng.bits(kWeightBits));
+    b.config = config;
+    for (int q = 0; q < p; ++q) b.sample.push_back(junk_sample());
+    return b;
+  };
+  for (size_t fi = 0; fi < frames.size(); ++fi) {
+    const Frame& f = *frames[fi];
+    const Config cfg = config_of(f.regs);
+    if (s.configs.empty() || !(s.configs.back() == cfg)) {
+      // New compositor registers: drain the samples in flight first.
+      if (!s.configs.empty())
+        for (int i = 0; i < kLatency; ++i) s.beats.push_back(junk(static_cast<int>(s.configs.size()) - 1));
+      if (!s.configs.empty()) s.idle_beats += kLatency;
+      s.configs.push_back(cfg);
+    }
+    const int config = static_cast<int>(s.configs.size()) - 1;
+    const int B = (f.nx + p - 1) / p;
+    s.expected_valid += static_cast<uint64_t>(f.K) * f.ny * B;
+    for (int k = 0; k < f.K; ++k) {
+      const g::SliceControl& c = f.ctrl[k];
+      const bool last = k == f.K - 1;
+      const int next_dx = last ? static_cast<int>(rng.bits(1)) : f.ctrl[k + 1].dx;  // ignored in the last slice
+      const int next_dy = last ? static_cast<int>(rng.bits(1)) : f.ctrl[k + 1].dy;
+      for (int y = 0; y < f.ny; ++y)
+        for (int j = 0; j < B; ++j) {
+          if (opt.stall > 0 && rng.chance(opt.stall)) {
+            const int gap = static_cast<int>(rng.range(1, opt.max_gap));
+            for (int i = 0; i < gap; ++i) s.beats.push_back(junk(config));
+            s.idle_beats += gap;
+          }
+          Beat b;
+          b.valid = true;
+          b.beam_start = j == 0;
+          b.beam_end = j == B - 1;
+          b.slice_start = y == 0;
+          b.slice_end = y == f.ny - 1;
+          b.first_slice = k == 0;
+          b.last_slice = last;
+          b.dx = c.dx;
+          b.dy = c.dy;
+          b.next_dx = next_dx;
+          b.next_dy = next_dy;
+          b.ix = static_cast<uint32_t>(c.ix);
+          b.iy = static_cast<uint32_t>(c.iy);
+          b.x = static_cast<uint32_t>(j * p);
+          b.y = static_cast<uint32_t>(y);
+          b.z = static_cast<uint32_t>(c.z_voxel);
+          b.wx = c.wx;
+          b.wy = c.wy;
+          b.wz = c.wz;
+          b.nx = static_cast<uint32_t>(f.nx);
+          b.last_ix = static_cast<uint32_t>(f.last_ix);
+          b.last_iy = static_cast<uint32_t>(f.last_iy);
+          b.config = config;
+          b.frame = static_cast<int>(fi);
+          b.k = k;
+          for (int q = 0; q < p; ++q) {
+            const int x = j * p + q;
+            b.sample.push_back(x < f.nx ? f.at(k, x, y) : junk_sample());  // padding: any value
+          }
+          s.beats.push_back(b);
+          ++s.valid_beats;
+          // The rays this step ends (golden: no successor in slice k+1, or
+          // the last slice), pixel (x - ix(k) + ix_last, y - iy(k) + iy_last).
+          for (int q = 0; q < p; ++q) {
+            const int x = j * p + q;
+            if (x >= f.nx) continue;
+            if (!last && !g::ray_leaves(x, y, f.ctrl[k + 1].dx, f.ctrl[k + 1].dy, f.nx, f.ny)) continue;
+            s.expects.push_back({s.beats.size() - 1 + kLatency, q, static_cast<int>(fi), k, x, y,
+                                 x - c.ix + f.last_ix, y - c.iy + f.last_iy});
+          }
+        }
+    }
+  }
+  s.last_input = s.beats.size() - 1;
+  return s;
+}
+
+// ===========================================================================
+// Running a ring.
+
+struct RunResult {
+  bool ok = true;
+  std::string report;
+  uint64_t pixels = 0, last_pixel = 0;
+  std::vector<g::BasePlane> planes;  // what the ring emitted, per frame
+};
+
+template <class M>
+void drive_config(M& m, const Config& c) {
+  auto put = [](auto& port, int64_t v, int bits) { put_bits(port, 0, bits, static_cast<uint64_t>(v)); };
+  put(m.blend_mode_i, c.mode, 2);
+  m.crop_enabled_i = c.crop_enabled;
+  put(m.crop_x_lo_i, c.crop.slab[0][0], kPosBits);
+  put(m.crop_x_hi_i, c.crop.slab[0][1], kPosBits);
+  put(m.crop_y_lo_i, c.crop.slab[1][0], kPosBits);
+  put(m.crop_y_hi_i, c.crop.slab[1][1], kPosBits);
+  put(m.crop_z_lo_i, c.crop.slab[2][0], kPosBits);
+  put(m.crop_z_hi_i, c.crop.slab[2][1], kPosBits);
+  put(m.crop_mask_i, c.crop.mask, 8);
+  m.cut_enabled_i = c.cut_enabled;
+  put(m.cut_a_i, c.cut.a, kCutCoefBits);
+  put(m.cut_b_i, c.cut.b, kCutCoefBits);
+  put(m.cut_c_i, c.cut.c, kCutCoefBits);
+  put(m.cut_dmin_i, c.cut.dmin, kCutBits);
+  put(m.cut_dmax_i, c.cut.dmax, kCutBits);
+  put(m.cut_falloff_i, c.cut.falloff, kCutBits);
+  put(m.cut_inv_falloff_i, static_cast<int64_t>(c.cut.inv_falloff), kInvBits);
+  m.cut_keep_inside_i = c.cut.keep_inside;
+}
+
+template <class M>
+RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const Stream& s, Random& rng) {
+  RunResult r;
+  for (const Frame* f : frames) {
+    g::BasePlane bp;
+    bp.width = f->golden.width;
+    bp.height = f->golden.height;
+    bp.bits = f->golden.bits;
+    bp.rgba.assign(f->golden.rgba.size(), 0);
+    r.planes.push_back(std::move(bp));
+  }
+  std::vector<std::vector<uint8_t>> written(frames.size());
+  for (size_t i = 0; i < frames.size(); ++i)
+    written[i].assign(static_cast<size_t>(frames[i]->golden.width) * frames[i]->golden.height, 0);
+
+  m.valid_i = 0;
+  drive_config(m, s.configs.front());
+  cube4::rtl::reset(m);
+  auto fail = [&](const std::string& text) {
+    if (!r.ok) return;
+    r.ok = false;
+    r.report = text;
+  };
+  auto rgba_str = [](const uint16_t* px) {
+    std::ostringstream o;
+    o << "(" << px[0] << ", " << px[1] << ", " << px[2] << ", " << px[3] << ")";
+    return o.str();
+  };
+  size_t ei = 0;
+  const uint64_t end = s.beats.size() + 2 * kLatency;
+  Beat idle;
+  for (uint64_t cycle = 0; cycle < end; ++cycle) {
+    const Beat* b = &idle;
+    if (cycle < s.beats.size()) {
+      b = &s.beats[cycle];
+    } else {
+      idle.valid = false;
+      idle.config = static_cast<int>(s.configs.size()) - 1;
+      idle.x = static_cast<uint32_t>(rng.bits(kPosBits));
+      idle.sample.assign(p, Sample{static_cast<uint32_t>(rng.bits(kAlphaBits)), 0, 0, 0, 0});
+    }
+    drive_config(m, s.configs[b->config]);
+    m.valid_i = b->valid;
+    m.beam_start_i = b->beam_start;
+    m.beam_end_i = b->beam_end;
+    m.slice_start_i = b->slice_start;
+    m.slice_end_i = b->slice_end;
+    m.first_slice_i = b->first_slice;
+    m.last_slice_i = b->last_slice;
+    m.dx_i = b->dx;
+    m.dy_i = b->dy;
+    m.next_dx_i = b->next_dx;
+    m.next_dy_i = b->next_dy;
+    m.ix_i = b->ix;
+    m.iy_i = b->iy;
+    m.x_i = b->x;
+    m.y_i = b->y;
+    m.z_i = b->z;
+    m.wx_i = b->wx;
+    m.wy_i = b->wy;
+    m.wz_i = b->wz;
+    m.nx_i = b->nx;
+    m.last_ix_i = b->last_ix;
+    m.last_iy_i = b->last_iy;
+    for (int q = 0; q < p; ++q) {
+      const Sample& smp = b->sample[q];
+      put_bits(m.red_i, q * kAlphaBits, kAlphaBits, smp.r);
+      put_bits(m.green_i, q * kAlphaBits, kAlphaBits, smp.g);
+      put_bits(m.blue_i, q * kAlphaBits, kAlphaBits, smp.b);
+      put_bits(m.alpha_i, q * kAlphaBits, kAlphaBits, smp.a);
+      put_bits(m.value_i, q * kVoxelBits, kVoxelBits, smp.value);
+    }
+    cube4::rtl::settle(m);
+
+    for (int q = 0; q < p; ++q) {
+      const Expect* e =
+          ei < s.expects.size() && s.expects[ei].cycle == cycle && s.expects[ei].pipe == q ? &s.expects[ei] : nullptr;
+      const bool valid = get_bits(m.pixel_valid_o, q, 1);
+      // The sample that entered kLatency cycles ago, for reports.
+      const Beat* src = cycle >= static_cast<uint64_t>(kLatency) && cycle - kLatency < s.beats.size()
+                            ? &s.beats[cycle - kLatency]
+                            : nullptr;
+      std::ostringstream where;
+      where << "cycle " << cycle << ", pipeline " << q;
+      if (src && src->valid)
+        where << ", sample of frame " << src->frame << " (" << frames[src->frame]->name << ") slice k=" << src->k
+              << " x=" << src->x + q << " y=" << src->y;
+      if (!valid) {
+        if (e) {
+          std::ostringstream o;
+          o << "pixel (u=" << e->u << ", v=" << e->v << ") of ray x=" << e->x << " y=" << e->y << " not emitted: "
+            << "pixel_valid_o low at " << where.str() << "; it was due from slice k=" << e->k;
+          fail(o.str());
+          ++ei;
+        }
+        continue;
+      }
+      const int u = static_cast<int>(get_bits(m.pixel_u_o, q * kPosBits, kPosBits));
+      const int v = static_cast<int>(get_bits(m.pixel_v_o, q * kPosBits, kPosBits));
+      const uint16_t got[4] = {static_cast<uint16_t>(get_bits(m.pixel_red_o, q * kAlphaBits, kAlphaBits)),
+                               static_cast<uint16_t>(get_bits(m.pixel_green_o, q * kAlphaBits, kAlphaBits)),
+                               static_cast<uint16_t>(get_bits(m.pixel_blue_o, q * kAlphaBits, kAlphaBits)),
+                               static_cast<uint16_t>(get_bits(m.pixel_alpha_o, q * kAlphaBits, kAlphaBits))};
+      if (!e) {
+        std::ostringstream o;
+        o << "pixel (u=" << u << ", v=" << v << ") = " << rgba_str(got) << " emitted with none due, at "
+          << where.str();
+        fail(o.str());
+        continue;
+      }
+      ++ei;
+      ++r.pixels;
+      r.last_pixel = cycle;
+      const Frame& f = *frames[e->frame];
+      if (u != e->u || v != e->v) {
+        std::ostringstream o;
+        o << "pixel address: expected (u=" << e->u << ", v=" << e->v << "), got (u=" << u << ", v=" << v
+          << ") at " << where.str() << ", emitted in slice k=" << e->k;
+        fail(o.str());
+        continue;
+      }
+      const size_t pix = static_cast<size_t>(v) * f.golden.width + u;
+      if (written[e->frame][pix]++) {
+        std::ostringstream o;
+        o << "pixel (u=" << u << ", v=" << v << ") emitted twice, the second time at " << where.str();
+        fail(o.str());
+      }
+      uint16_t* dst = &r.planes[e->frame].rgba[pix * 4];
+      for (int c = 0; c < 4; ++c) dst[c] = got[c];
+      const uint16_t* exp = &f.golden.rgba[pix * 4];
+      if (exp[0] != got[0] || exp[1] != got[1] || exp[2] != got[2] || exp[3] != got[3]) {
+        std::ostringstream o;
+        o << "first mismatching pixel (u=" << u << ", v=" << v << "): expected (r, g, b, a) = " << rgba_str(exp)
+          << ", got " << rgba_str(got) << "\n  emitted in slice k=" << e->k << " of " << f.K << " (ray x=" << e->x
+          << " y=" << e->y << "), " << where.str();
+        fail(o.str());
+      }
+    }
+    cube4::rtl::rise(m);
+  }
+  if (ei != s.expects.size()) {
+    const Expect& e = s.expects[ei];
+    std::ostringstream o;
+    o << s.expects.size() - ei << " pixels never appeared; first (u=" << e.u << ", v=" << e.v << ") of slice k=" << e.k
+      << ", due in cycle " << e.cycle;
+    fail(o.str());
+  }
+  // The whole base planes (pixels golden never writes stay zero in both).
+  for (size_t fi = 0; fi < frames.size() && r.ok; ++fi) {
+    const g::BasePlane& gb = frames[fi]->golden;
+    for (size_t i = 0; i < gb.rgba.size() / 4; ++i) {
+      const uint16_t* exp = &gb.rgba[i * 4];
+      const uint16_t* got = &r.planes[fi].rgba[i * 4];
+      if (exp[0] == got[0] && exp[1] == got[1] && exp[2] == got[2] && exp[3] == got[3]) continue;
+      std::ostringstream o;
+      o << "first mismatching pixel (u=" << i % gb.width << ", v=" << i / gb.width << ") of frame " << fi << " ("
+        << frames[fi]->name << "): expected " << rgba_str(exp) << ", got " << rgba_str(got)
+        << (written[fi][i] ? "" : " (never emitted)");
+      fail(o.str());
+      break;
+    }
+  }
+  return r;
+}
+
+// Streams the frames into ring M and checks everything.
+template <class M>
+void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
+                uint64_t salt, uint64_t* pixels_checked = nullptr) {
+  std::string what;
+  for (const Frame* f : frames) {
+    what += (what.empty() ? "" : " + ") + f->name;
+    const int B = (f->nx + rp.p - 1) / rp.p;
+    ASSERT_LE(B, rp.beam_depth()) << f->name << ": the beam does not fit the ring's ray beam delay";
+    ASSERT_LE(B * f->ny, rp.slice_depth()) << f->name << ": the slice does not fit the ring's ray slice store";
+  }
+  SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.stall > 0 ? ", stalls" : ", no stalls") + ": " + what);
+  Random rng(salt);
+  const Stream s = make_stream(frames, rp.p, opt, rng);
+  auto m = std::make_unique<M>();
+  const RunResult r = run_ring(*m, rp.p, frames, s, rng);
+  m->final();
+  EXPECT_TRUE(r.ok) << r.report;
+  if (!r.ok) return;
+  // Cycle counts: K * ny * ceil(nx/p) input cycles per frame plus the idle
+  // ones; every ray emitted once; the last pixel (the last sample's ray)
+  // kLatency cycles after the last input.
+  uint64_t rays = 0;
+  for (const Frame* f : frames) {
+    // Rays: one per base-plane pixel that some ray reaches.
+    uint64_t n = 0;
+    for (int k = 0; k < f->K; ++k) {
+      const bool last = k == f->K - 1;
+      for (int y = 0; y < f->ny; ++y)
+        for (int x = 0; x < f->nx; ++x)
+          n += last || g::ray_leaves(x, y, f->ctrl[k + 1].dx, f->ctrl[k + 1].dy, f->nx, f->ny);
+    }
+    rays += n;
+  }
+  EXPECT_EQ(s.valid_beats, s.expected_valid);
+  EXPECT_EQ(s.beats.size(), s.valid_beats + s.idle_beats);
+  EXPECT_EQ(r.pixels, rays);
+  EXPECT_EQ(r.last_pixel, s.last_input + kLatency);
+  if (pixels_checked) *pixels_checked += r.pixels;
+}
+
+struct View {
+  const char* name;
+  std::array<double, 3> dir, up;
+};
+// The six base planes exactly (dx = dy = 0 in every slice: only the (x, y)
+// candidate), each tilted (dx and dy both occur: the x-1 and y-1 paths and
+// the ring wrap), 45-degree views (ties between axes: a change in every
+// slice) and an oblique view.
+const std::vector<View> kViews = {
+    {"+x", {1, 0, 0}, {0, 1, 0}},          {"-x", {-1, 0, 0}, {0, 1, 0}},
+    {"+y", {0, 1, 0}, {0, 0, 1}},          {"-y", {0, -1, 0}, {0, 0, 1}},
+    {"+z", {0, 0, 1}, {0, 1, 0}},          {"-z", {0, 0, -1}, {0, 1, 0}},
+    {"+x tilted", {1, 0.3, -0.45}, {0, 1, 0}},   {"-x tilted", {-1, -0.2, 0.35}, {0, 1, 0}},
+    {"+y tilted", {0.25, 1, 0.4}, {0, 0, 1}},    {"-y tilted", {-0.4, -1, -0.3}, {0, 0, 1}},
+    {"+z tilted", {0.35, -0.3, 1}, {0, 1, 0}},   {"-z tilted", {-0.3, 0.45, -1}, {0, 1, 0}},
+    {"45 xz", {1, 0, 1}, {0, 1, 0}},       {"45 xyz", {-1, 1, 1}, {0, 1, 0}},
+    {"oblique", {0.7, -0.6, 1}, {0, 1, 0}},
+};
+// Volumes (each fits the smallest ring, p = 5 with MaxDim 12, in every
+// permutation).
+const std::vector<VolumeSpec> kVolumes = {
+    {"sphere", {12, 12, 12}, 0}, {"noise", {9, 7, 5}, 3}, {"noise", {7, 11, 6}, 4}};
+
+// Every view, S = 1, 2, 3, each with an effect set and a volume, without and
+// with stalls.
+template <class M>
+void ring_matrix(const RingParams& rp) {
+  Timer t("p=" + std::to_string(rp.p) + " matrix");
+  uint64_t pixels = 0, lit = 0, clipped = 0, dx = 0, dy = 0;
+  int runs = 0;
+  for (size_t v = 0; v < kViews.size(); ++v)
+    for (int S : {1, 2, 3}) {
+      const Effects& fx = kEffects[(v * 3 + S) % kEffects.size()];
+      const VolumeSpec& vs = kVolumes[(v + S) % kVolumes.size()];
+      const Frame& f = frame(vs, kViews[v].dir, kViews[v].up, S, fx, kViews[v].name);
+      lit += f.lit_pixels;
+      clipped += f.clipped_pixels;
+      dx += f.dx_slices;
+      dy += f.dy_slices;
+      if (std::string(fx.json).find("cut") != std::string::npos ||
+          std::string(fx.json).find("crop") != std::string::npos) {
+        EXPECT_GT(f.clipped_pixels, 0) << f.name << ": cropping and cut plane change no pixel";
+      }
+      for (bool stalls : {false, true}) {
+        StreamOptions opt;
+        opt.stall = stalls ? 0.3 : 0;
+        check_ring<M>(rp, {&f}, opt, 1000 * rp.p + 10 * v + S + (stalls ? 5 : 0), &pixels);
+        ++runs;
+        if (::testing::Test::HasFailure()) return;
+      }
+    }
+  std::printf("  p=%d: %d runs, %llu golden base-plane pixels matched (per pass over the views: %llu not zero, "
+              "%llu changed by cropping or cut plane; slices with dx = 1: %llu, dy = 1: %llu)\n",
+              rp.p, runs, static_cast<unsigned long long>(pixels), static_cast<unsigned long long>(lit),
+              static_cast<unsigned long long>(clipped), static_cast<unsigned long long>(dx),
+              static_cast<unsigned long long>(dy));
+  EXPECT_GT(lit, pixels / 4);
+  EXPECT_GT(dx, 0u);
+  EXPECT_GT(dy, 0u);
+}
+
+TEST(RtlCompositeRing, P1MatchesGoldenBasePlane) { ring_matrix<Vcube4_composite_ring_p1>(kRingP1); }
+TEST(RtlCompositeRing, P2MatchesGoldenBasePlane) { ring_matrix<Vcube4_composite_ring_p2>(kRingP2); }
+TEST(RtlCompositeRing, P4MatchesGoldenBasePlane) { ring_matrix<Vcube4_composite_ring>(kRingP4); }
+TEST(RtlCompositeRing, P5MatchesGoldenBasePlane) { ring_matrix<Vcube4_composite_ring_p5>(kRingP5); }
+
+void all_rings_check(const std::vector<const Frame*>& frames, const StreamOptions& opt, uint64_t salt) {
+  check_ring<Vcube4_composite_ring_p1>(kRingP1, frames, opt, salt + 1);
+  check_ring<Vcube4_composite_ring_p2>(kRingP2, frames, opt, salt + 2);
+  check_ring<Vcube4_composite_ring>(kRingP4, frames, opt, salt + 4);
+  check_ring<Vcube4_composite_ring_p5>(kRingP5, frames, opt, salt + 5);
+}
+
+// Frames back to back without a reset: with the same compositor registers
+// no idle cycle at all between frames (nx, the offsets and the slice
+// control change with the data); with different registers the stream
+// drains for 7 cycles between them.
+TEST(RtlCompositeRing, BackToBackFrames) {
+  Timer t("back-to-back frames");
+  const Effects& shaded = kEffects[0];
+  const Effects& mip = kEffects[1];
+  const Frame& a = frame(kVolumes[0], {0.35, -0.3, 1}, {0, 1, 0}, 2, shaded, "+z tilted");
+  const Frame& b = frame(kVolumes[1], {-0.4, -1, -0.3}, {0, 0, 1}, 3, shaded, "-y tilted");
+  const Frame& c = frame(kVolumes[2], {0.7, -0.6, 1}, {0, 1, 0}, 1, shaded, "oblique");
+  const Frame& d = frame(kVolumes[1], {-1, -0.2, 0.35}, {0, 1, 0}, 2, shaded, "-x tilted");
+  const Frame& e = frame(kVolumes[2], {1, 0, 1}, {0, 1, 0}, 1, mip, "45 xz");
+  const Frame& h = frame(kVolumes[0], {-0.3, 0.45, -1}, {0, 1, 0}, 1, kEffects[5], "-z tilted");
+  for (double stall : {0.0, 0.25}) {
+    StreamOptions opt;
+    opt.stall = stall;
+    all_rings_check({&a, &b, &c, &d}, opt, 70);
+    all_rings_check({&a, &e, &h, &b, &e}, opt, 80);
+    if (::testing::Test::HasFailure()) return;
+  }
+}
+
+// Slices of one to a few steps: ny = 1 with nx <= p makes a lap of a single
+// step, where the predecessor was written in the cycle before it is read
+// (the bypass); single beams (no y-1 candidate) and single columns.
+TEST(RtlCompositeRing, TinySlices) {
+  Timer t("tiny slices");
+  const std::vector<VolumeSpec> vols = {{"noise", {1, 1, 6}, 11}, {"noise", {2, 1, 5}, 12}, {"noise", {1, 3, 4}, 13},
+                                        {"noise", {3, 2, 7}, 14}, {"noise", {6, 1, 3}, 15}, {"noise", {1, 1, 1}, 16}};
+  int runs = 0;
+  for (size_t i = 0; i < vols.size(); ++i)
+    for (size_t v : {size_t{4}, size_t{6}, size_t{10}, size_t{13}, size_t{14}})
+      for (int S : {1, 3}) {
+        const Frame& f =
+            frame(vols[i], kViews[v].dir, kViews[v].up, S, kEffects[(i + v + S) % kEffects.size()], kViews[v].name);
+        for (double stall : {0.0, 0.3}) {
+          StreamOptions opt;
+          opt.stall = stall;
+          all_rings_check({&f}, opt, 300 + 20 * i + v + S);
+          ++runs;
+          if (::testing::Test::HasFailure()) return;
+        }
+      }
+  std::printf("  %d runs, each through p = 1, 2, 4, 5\n", runs);
+}
+
+// Slices that fill the ray slice store to its last entry (ny * ceil(nx/p) =
+// SliceDepth) and beams that fill the beam delay (ceil(nx/p) = BeamDepth).
+TEST(RtlCompositeRing, FullStorage) {
+  Timer t("full storage");
+  const Frame& f2 = frame({"sphere", {16, 16, 3}, 0}, {0.2, 0.3, 1}, {0, 1, 0}, 2, kEffects[0], "+z tilted");
+  ASSERT_EQ((f2.nx + 1) / 2 * f2.ny, kRingP2.slice_depth());
+  const Frame& f5 = frame({"noise", {15, 12, 3}, 32}, {0.3, -0.2, -1}, {0, 1, 0}, 3, kEffects[4], "-z tilted");
+  ASSERT_EQ((f5.nx + 4) / 5 * f5.ny, kRingP5.slice_depth());
+  const Frame& f1 = frame({"noise", {24, 24, 2}, 33}, {0.45, 0.2, 1}, {0, 1, 0}, 2, kEffects[2], "+z tilted");
+  ASSERT_EQ(f1.nx * f1.ny, kRingP1.slice_depth());
+  for (double stall : {0.0, 0.3}) {
+    StreamOptions opt;
+    opt.stall = stall;
+    check_ring<Vcube4_composite_ring_p2>(kRingP2, {&f2}, opt, 81);
+    check_ring<Vcube4_composite_ring_p5>(kRingP5, {&f5}, opt, 85);
+    check_ring<Vcube4_composite_ring_p1>(kRingP1, {&f1}, opt, 82);
+  }
+}
+
+// Random scenes: direction, volume size (within every ring's storage), S up
+// to VolumePro's 8, effects, stall rate; every ring.
+TEST(RtlCompositeRing, RandomScenes) {
+  Timer t("random scenes");
+  Random rng(0xC0317E);
+  const long n = cube4::rtl::vector_count(1000000) >= 1000000 ? 80 : 4;
+  for (long i = 0; i < n; ++i) {
+    std::array<double, 3> dir;
+    for (double& d : dir) d = static_cast<double>(rng.range(-100, 100)) / 100.0;
+    dir[rng.range(0, 2)] = rng.chance(0.5) ? 1.0 : -1.0;  // never all zero
+    const bool up_z = std::abs(dir[1]) >= std::abs(dir[0]) && std::abs(dir[1]) >= std::abs(dir[2]);
+    const std::array<double, 3> up = up_z ? std::array<double, 3>{0, 0, 1} : std::array<double, 3>{0, 1, 0};
+    const VolumeSpec vs{rng.chance(0.3) ? "sphere" : "noise",
+                        {static_cast<int>(rng.range(1, 12)), static_cast<int>(rng.range(1, 12)),
+                         static_cast<int>(rng.range(1, 12))},
+                        static_cast<int>(100 + i)};
+    const int S = static_cast<int>(rng.range(1, 8));
+    const Frame& f =
+        frame(vs, dir, up, S, kEffects[rng.range(0, static_cast<int64_t>(kEffects.size()) - 1)], "random " + std::to_string(i));
+    StreamOptions opt;
+    opt.stall = rng.chance(0.5) ? 0 : static_cast<double>(rng.range(1, 60)) / 100.0;
+    opt.max_gap = static_cast<int>(rng.range(1, 5));
+    all_rings_check({&f}, opt, 500 + 10 * i);
+    if (::testing::Test::HasFailure()) return;
+  }
+  std::printf("  %ld random scenes, each through p = 1, 2, 4, 5\n", n);
+}
+
+// A larger volume through the default ring (p = 4, 256^3 storage), up to
+// VolumePro's 8-fold supersampling, every blend mode, with cropping and cut
+// plane.
+TEST(RtlCompositeRing, LargerVolumeP4) {
+  Timer t("larger volume, p=4");
+  const VolumeSpec vs{"sphere", {37, 30, 14}, 0};
+  int i = 0;
+  for (int S : {1, 4, 8})
+    for (size_t fx : {size_t{0}, size_t{5}, size_t{2}}) {
+      const Frame& f = frame(vs, {0.55, 0.4, -1}, {0, 1, 0}, S, kEffects[fx], "oblique");
+      StreamOptions opt;
+      opt.stall = 0.1;
+      check_ring<Vcube4_composite_ring>(kRingP4, {&f}, opt, 90 + i++);
+    }
+}
+
+}  // namespace
