@@ -21,10 +21,10 @@ for line in table.splitlines():
         rows[cells[0]] = cells
 def num(s): return float(s.replace(",", "")) if s not in ("", "-") else 0.0
 def mem_bits(s): return sum(int(b) for b in re.findall(r"\((\d+) b\)", s))
-# One pipeline at the default widths: the streaming interpolation unit (its
-# trilinear datapath and voxel storage included), the gradient datapath and
-# magnitude, the shader and the compositor datapath.
-pipeline = ["cube4_interp_unit", "cube4_gradient", "cube4_magnitude", "cube4_shader", "cube4_composite"]
+# One pipeline at the default widths: the streaming units with their storage
+# (interpolation, gradient, compositing; each contains its datapath), the
+# gradient magnitude and the shader.
+pipeline = ["cube4_interp_unit", "cube4_gradient_unit", "cube4_magnitude", "cube4_shader", "cube4_composite_unit"]
 have = [m for m in pipeline if m in rows]
 missing = [m for m in pipeline if m not in rows]
 cells = sum(num(rows[m][2]) for m in have)
@@ -45,8 +45,9 @@ print(f"| five pipelines (Cube-4 prototype) | {5*cells:,.0f} | {5*nand2:,.0f} | 
 print()
 if missing:
     print("Not yet in the total: " + ", ".join(missing) + ".")
-print("Not in the total: the gradient unit's sample storage and the compositor's ray storage and "
-      "alignment (written as separate units), the address generator (one per chip, "
-      "`cube4_skew_addr` above), the host interface and pixel memory.")
+print("Not in the total: the address generator (one per chip, `cube4_skew_addr` above), the "
+      "stream former and weight generator, the host interface and pixel memory. The storage "
+      "units are sized for 256-voxel volumes (MaxDim 256) with p = 4; the vg500 kept its "
+      "on-chip storage to 2 Mbit with sectioning (VolumePro §5.4), which is not modelled.")
 PY
 echo "gates_doc: docs/gates.md updated" >&2

@@ -750,7 +750,7 @@ TEST(RtlGradientRing, FullStorageAndTinyVolumes) {
 TEST(RtlGradientRing, RandomScenes) {
   Timer t("random scenes");
   Random rng(0x6AD1E);
-  const long n = cube4::rtl::vector_count(1000000) >= 1000000 ? 24 : 4;
+  const long n = cube4::rtl::vector_count(1000000) >= 1000000 ? 120 : 4;
   uint64_t gradients = 0;
   for (long i = 0; i < n; ++i) {
     std::array<double, 3> dir;

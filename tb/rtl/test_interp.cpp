@@ -538,7 +538,7 @@ TEST(RtlInterpRing, FullStorage) {
 TEST(RtlInterpRing, RandomScenes) {
   Timer t("random scenes");
   Random rng(0x5CE4E);
-  const long n = cube4::rtl::vector_count(1000000) >= 1000000 ? 40 : 4;
+  const long n = cube4::rtl::vector_count(1000000) >= 1000000 ? 200 : 4;
   uint64_t samples = 0;
   for (long i = 0; i < n; ++i) {
     std::array<double, 3> dir;
