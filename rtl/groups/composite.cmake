@@ -10,30 +10,9 @@ cube4_rtl_test(test_rtl_composite_ring
   SOURCES ${_composite_ring_sources}
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_composite_ring.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 
-# cube4_composite_ring_variant(<prefix> PARAMS <Name=value>...): verilate
-# cube4_composite_ring once more into test_rtl_composite_ring as class
-# <prefix>, with its parameters overridden (-G); same flags as cube4_rtl_test.
-function(cube4_composite_ring_variant prefix)
-  cmake_parse_arguments(A "" "" "PARAMS" ${ARGN})
-  set(gparams)
-  foreach(p ${A_PARAMS})
-    list(APPEND gparams -G${p})
-  endforeach()
-  set(srcs)
-  foreach(s ${_composite_ring_sources})
-    list(APPEND srcs ${CMAKE_CURRENT_SOURCE_DIR}/${s})
-  endforeach()
-  verilate(test_rtl_composite_ring
-    SOURCES ${srcs} ${CMAKE_CURRENT_SOURCE_DIR}/cube4_composite_ring.sv
-    TOP_MODULE cube4_composite_ring
-    PREFIX ${prefix}
-    INCLUDE_DIRS ${CMAKE_CURRENT_SOURCE_DIR}
-    VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -O3 ${gparams})
-endfunction()
-
 # Rings of 1, 2 and 5 pipelines; small MaxDim values let the tests fill the
 # ray slice store and the beam delay to their last entries
 # (test_composite_ring.cpp holds the same values).
-cube4_composite_ring_variant(Vcube4_composite_ring_p1 PARAMS NumPipes=1 MaxDim=24)
-cube4_composite_ring_variant(Vcube4_composite_ring_p2 PARAMS NumPipes=2 MaxDim=16)
-cube4_composite_ring_variant(Vcube4_composite_ring_p5 PARAMS NumPipes=5 MaxDim=12)
+cube4_rtl_variant(test_rtl_composite_ring cube4_composite_ring Vcube4_composite_ring_p1 SOURCES ${_composite_ring_sources} PARAMS NumPipes=1 MaxDim=24)
+cube4_rtl_variant(test_rtl_composite_ring cube4_composite_ring Vcube4_composite_ring_p2 SOURCES ${_composite_ring_sources} PARAMS NumPipes=2 MaxDim=16)
+cube4_rtl_variant(test_rtl_composite_ring cube4_composite_ring Vcube4_composite_ring_p5 SOURCES ${_composite_ring_sources} PARAMS NumPipes=5 MaxDim=12)

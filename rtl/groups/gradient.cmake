@@ -21,39 +21,18 @@ cube4_rtl_test(test_rtl_gradient_ring
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_gradient_ring.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 target_compile_definitions(test_rtl_gradient_ring PRIVATE CUBE4_GRADIENT_TAG_BITS=${_gradient_tag_bits})
 
-# cube4_gradient_variant(<top> <prefix> [SOURCES <file>...] [PARAMS <Name=value>...]):
-# verilate rtl/<top>.sv once more into test_rtl_gradient_ring as class
-# <prefix>, top-level parameters overridden (-G); same flags as cube4_rtl_test.
-function(cube4_gradient_variant top prefix)
-  cmake_parse_arguments(A "" "" "SOURCES;PARAMS" ${ARGN})
-  set(gparams)
-  foreach(p ${A_PARAMS})
-    list(APPEND gparams -G${p})
-  endforeach()
-  set(srcs)
-  foreach(s ${A_SOURCES})
-    list(APPEND srcs ${CMAKE_CURRENT_SOURCE_DIR}/${s})
-  endforeach()
-  verilate(test_rtl_gradient_ring
-    SOURCES ${srcs} ${CMAKE_CURRENT_SOURCE_DIR}/${top}.sv
-    TOP_MODULE ${top}
-    PREFIX ${prefix}
-    INCLUDE_DIRS ${CMAKE_CURRENT_SOURCE_DIR}
-    VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -O3 ${gparams})
-endfunction()
-
 # Pipelines and storage as in interp.cmake (test_gradient_ring.cpp holds the
 # same values); the small MaxDim of p = 2 and 5 lets a test fill the slice
 # delay to its last entry.
 foreach(_cfg "1;24" "2;16" "5;12")
   list(GET _cfg 0 _p)
   list(GET _cfg 1 _dim)
-  cube4_gradient_variant(cube4_gradient_ring Vcube4_gradient_ring_p${_p} SOURCES ${_gradient_sources}
+  cube4_rtl_variant(test_rtl_gradient_ring cube4_gradient_ring Vcube4_gradient_ring_p${_p} SOURCES ${_gradient_sources}
     PARAMS NumPipes=${_p} MaxDim=${_dim})
 endforeach()
 foreach(_cfg "1;24" "2;16" "4;256" "5;12")
   list(GET _cfg 0 _p)
   list(GET _cfg 1 _dim)
-  cube4_gradient_variant(cube4_interp_ring Vcube4_interp_ring_g${_p} SOURCES ${_gradient_interp_sources}
+  cube4_rtl_variant(test_rtl_gradient_ring cube4_interp_ring Vcube4_interp_ring_g${_p} SOURCES ${_gradient_interp_sources}
     PARAMS NumPipes=${_p} MaxDim=${_dim} TagBits=${_gradient_tag_bits})
 endforeach()

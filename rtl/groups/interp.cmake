@@ -11,36 +11,15 @@ cube4_rtl_test(test_rtl_interp
   SOURCES ${_interp_sources}
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 
-# cube4_interp_variant(<top> <prefix> [SOURCES <file>...] [PARAMS <Name=value>...]):
-# verilate rtl/<top>.sv once more into test_rtl_interp as class <prefix>,
-# with the top-level parameters overridden (-G); same flags as cube4_rtl_test.
-function(cube4_interp_variant top prefix)
-  cmake_parse_arguments(A "" "" "SOURCES;PARAMS" ${ARGN})
-  set(gparams)
-  foreach(p ${A_PARAMS})
-    list(APPEND gparams -G${p})
-  endforeach()
-  set(srcs)
-  foreach(s ${A_SOURCES})
-    list(APPEND srcs ${CMAKE_CURRENT_SOURCE_DIR}/${s})
-  endforeach()
-  verilate(test_rtl_interp
-    SOURCES ${srcs} ${CMAKE_CURRENT_SOURCE_DIR}/${top}.sv
-    TOP_MODULE ${top}
-    PREFIX ${prefix}
-    INCLUDE_DIRS ${CMAKE_CURRENT_SOURCE_DIR}
-    VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -O3 ${gparams})
-endfunction()
-
 # Rings of 1, 2 and 5 pipelines; the small MaxDim of p = 2 and p = 5 lets
 # the tests fill the slice store to the last entry (test_interp.cpp holds
 # the same values).
-cube4_interp_variant(cube4_interp_ring Vcube4_interp_ring_p1 SOURCES ${_interp_sources}
+cube4_rtl_variant(test_rtl_interp cube4_interp_ring Vcube4_interp_ring_p1 SOURCES ${_interp_sources}
   PARAMS NumPipes=1 MaxDim=24)
-cube4_interp_variant(cube4_interp_ring Vcube4_interp_ring_p2 SOURCES ${_interp_sources}
+cube4_rtl_variant(test_rtl_interp cube4_interp_ring Vcube4_interp_ring_p2 SOURCES ${_interp_sources}
   PARAMS NumPipes=2 MaxDim=16)
-cube4_interp_variant(cube4_interp_ring Vcube4_interp_ring_p5 SOURCES ${_interp_sources}
+cube4_rtl_variant(test_rtl_interp cube4_interp_ring Vcube4_interp_ring_p5 SOURCES ${_interp_sources}
   PARAMS NumPipes=5 MaxDim=12)
 # The delay RAM alone: a depth that is no power of two, and a single entry.
-cube4_interp_variant(cube4_delay_ram Vcube4_delay_ram_d13 PARAMS Width=10 MaxDepth=13)
-cube4_interp_variant(cube4_delay_ram Vcube4_delay_ram_d1 PARAMS Width=10 MaxDepth=1)
+cube4_rtl_variant(test_rtl_interp cube4_delay_ram Vcube4_delay_ram_d13 PARAMS Width=10 MaxDepth=13)
+cube4_rtl_variant(test_rtl_interp cube4_delay_ram Vcube4_delay_ram_d1 PARAMS Width=10 MaxDepth=1)

@@ -21,44 +21,23 @@ cube4_rtl_test(test_rtl_shader
         ${PROJECT_SOURCE_DIR}/tb/rtl/test_composite.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 
-# cube4_shader_variant(<top> <prefix> [SOURCES <file>...] [PARAMS <Name=value>...]):
-# verilate rtl/<top>.sv into test_rtl_shader as class <prefix>, with the
-# top-level parameters overridden (-G); same flags as cube4_rtl_test.
-function(cube4_shader_variant top prefix)
-  cmake_parse_arguments(A "" "" "SOURCES;PARAMS" ${ARGN})
-  set(gparams)
-  foreach(p ${A_PARAMS})
-    list(APPEND gparams -G${p})
-  endforeach()
-  set(srcs)
-  foreach(s ${A_SOURCES})
-    list(APPEND srcs ${CMAKE_CURRENT_SOURCE_DIR}/${s})
-  endforeach()
-  verilate(test_rtl_shader
-    SOURCES ${srcs} ${CMAKE_CURRENT_SOURCE_DIR}/${top}.sv
-    TOP_MODULE ${top}
-    PREFIX ${prefix}
-    INCLUDE_DIRS ${CMAKE_CURRENT_SOURCE_DIR}
-    VERILATOR_ARGS -Wall --x-assign unique --x-initial unique -O3 ${gparams})
-endfunction()
-
 # The five shade units as tops, default widths.
 foreach(u ${_shade_units})
-  cube4_shader_variant(${u} V${u})
+  cube4_rtl_variant(test_rtl_shader ${u} V${u})
 endforeach()
 
 # cube4_shader at other widths (tb/rtl/test_shader.cpp holds the same values):
 # wide: odd colour/alpha/GmLUT ratios, a 5x5 map face, 3 quotient bits per
 # divider stage; small: GmLUT wider than alpha, 2x2 map faces, no coefficient
 # fraction bits, 1 quotient bit per stage.
-cube4_shader_variant(cube4_shader Vcube4_shader_wide SOURCES ${_shade_sources}
+cube4_rtl_variant(test_rtl_shader cube4_shader Vcube4_shader_wide SOURCES ${_shade_sources}
   PARAMS VoxelBits=10 WeightBits=6 GradientBits=10 MagnitudeBits=9 ColorBits=5 AlphaBits=14
          GmlutBits=10 MapFaceRes=5 MapBits=20 MapFracBits=11 CoefBits=12 CoefFracBits=9
          EyeBits=10 DivBitsPerStage=3)
-cube4_shader_variant(cube4_shader Vcube4_shader_small SOURCES ${_shade_sources}
+cube4_rtl_variant(test_rtl_shader cube4_shader Vcube4_shader_small SOURCES ${_shade_sources}
   PARAMS VoxelBits=8 WeightBits=2 GradientBits=4 MagnitudeBits=4 ColorBits=8 AlphaBits=8
          GmlutBits=16 MapFaceRes=2 MapBits=8 MapFracBits=7 CoefBits=4 CoefFracBits=0
          EyeBits=4 DivBitsPerStage=1)
 # cube4_composite at other widths (tb/rtl/test_composite.cpp).
-cube4_shader_variant(cube4_composite Vcube4_composite_narrow
+cube4_rtl_variant(test_rtl_shader cube4_composite Vcube4_composite_narrow
   PARAMS VoxelBits=10 WeightBits=6 AlphaBits=14 CutBits=24 PosBits=12 CutCoefBits=12)
