@@ -536,7 +536,9 @@ void composite_cut_boundaries(const Widths& w, const std::string& name) {
               *weight[axis] = static_cast<uint32_t>(pos & wmask);
               b.step(true, in);
             }
-            if (falloff > 1) EXPECT_GT(b.coverage.cut_ramp, ramp_before) << "no sample in the fall-off ramp";
+            if (falloff > 1) {
+              EXPECT_GT(b.coverage.cut_ramp, ramp_before) << "no sample in the fall-off ramp";
+            }
           }
   // Saturated distances: |a X + b Y + c Z| beyond 2^(cut_bits-1) - 1.
   const int64_t dmax = g::max_signed(p.cut_bits);

@@ -51,7 +51,9 @@ TEST(Fixed, MulFracFullIsIdentityZeroIsZeroAndNeverGrows) {
     for (int64_t f = 0; f <= 4095; ++f) {
       const int64_t m = mul_frac(x, f, 12);
       ASSERT_LE(m, x);
-      if (f > 0) ASSERT_GE(m, mul_frac(x, f - 1, 12)) << "not monotonic at x=" << x << " f=" << f;
+      if (f > 0) {
+        ASSERT_GE(m, mul_frac(x, f - 1, 12)) << "not monotonic at x=" << x << " f=" << f;
+      }
       // Within one LSB of the exact product x*f/4095.
       ASSERT_LE(std::fabs(m - x * f / 4095.0), 1.0) << x << " " << f;
     }
@@ -289,7 +291,8 @@ TEST(Composite, MonotonicAndNeverPastFullOpacity) {
     for (int i = 0; i < 300; ++i) {
       ShadedSample s;
       s.alpha = gen() % 4096;
-      s.rgb = {gen() % 4096, gen() % 4096, gen() % 4096};
+      s.rgb = {static_cast<uint32_t>(gen() % 4096), static_cast<uint32_t>(gen() % 4096),
+               static_cast<uint32_t>(gen() % 4096)};
       const RayAcc next = blend_front_to_back(acc, s, kP);
       ASSERT_GE(next.a, acc.a);
       ASSERT_LE(next.a, 4095);
