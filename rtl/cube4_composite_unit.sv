@@ -284,7 +284,7 @@ module cube4_composite_unit #(
   // two pointers. The lap ends with the slice (pointer back to entry 0).
   logic [AccBits-1:0] mem_q [SliceDepth];
   logic [PtrBits-1:0] rptr_q, rptr_d, waddr_q;
-  logic [AccBits-1:0] rdata_q, rdata_d, own_slice;
+  logic [AccBits-1:0] rdata_q, own_slice;
   logic               lap_end;
 
   assign lap_end = (slice_end_a && beam_end_a) || (rptr_q == PtrBits'(SliceDepth - 1));
@@ -316,10 +316,16 @@ module cube4_composite_unit #(
   end
 
   // Read port: the next step's entry, every clock, write data forwarded.
-  assign rdata_d = (result_valid && waddr_q == rptr_d) ? result : mem_q[rptr_d];
+  // The RAM's own read is a plain registered read (so synthesis keeps it a
+  // RAM); the forwarding decision and data are registered beside it.
+  logic [AccBits-1:0] mem_rdata_q, fwd_data_q;
+  logic               fwd_q;
   always_ff @(posedge clk_i) begin
-    rdata_q <= rdata_d;
+    mem_rdata_q <= mem_q[rptr_d];
+    fwd_q       <= result_valid && waddr_q == rptr_d;
+    fwd_data_q  <= result;
   end
+  assign rdata_q = fwd_q ? fwd_data_q : mem_rdata_q;
   // Bypass: the entry was written in this very cycle by the step before
   // (a lap of one step, back to back).
   assign own_slice = (result_valid && waddr_q == rptr_q) ? result : rdata_q;

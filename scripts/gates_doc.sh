@@ -15,8 +15,7 @@ trap 'rm -f "$tmp"' EXIT
 units=()
 for f in "$here"/rtl/*.sv; do
   n=$(basename "$f" .sv)
-  # cube4_composite_unit: see the note printed below the table.
-  case $n in *_ring|cube4_composite_unit) ;; *) units+=("$n") ;; esac
+  case $n in *_ring) ;; *) units+=("$n") ;; esac
 done
 if [ $# -ge 1 ]; then cp "$1" "$tmp"; else "$here/scripts/gates.sh" "${units[@]}" > "$tmp"; fi
 python3 - "$tmp" "$(yosys -V | head -1)" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/gates.md" gates
@@ -33,9 +32,6 @@ def mem_bits(s): return sum(int(b) for b in re.findall(r"\((\d+) b\)", s))
 # (interpolation, gradient, compositing; each contains its datapath), the
 # gradient magnitude and the shader.
 pipeline = ["cube4_interp_unit", "cube4_gradient_unit", "cube4_magnitude", "cube4_shader", "cube4_composite_unit"]
-if "cube4_composite_unit" not in rows and "cube4_composite" in rows:
-    # Stand-in until the compositing unit synthesises in reasonable time.
-    pipeline[-1] = "cube4_composite"
 have = [m for m in pipeline if m in rows]
 missing = [m for m in pipeline if m not in rows]
 cells = sum(num(rows[m][2]) for m in have)
@@ -56,11 +52,6 @@ print(f"| five pipelines (Cube-4 prototype) | {5*cells:,.0f} | {5*nand2:,.0f} | 
 print()
 if missing:
     print("Not yet in the total: " + ", ".join(missing) + ".")
-if "cube4_composite_unit" not in rows:
-    print("The compositing unit with its ray storage (`cube4_composite_unit`) did not finish synthesis "
-          "within 8 minutes (its ray slice store is written inline and is probably not inferred as a "
-          "RAM, so yosys maps ~1 Mbit to flip-flops): the total uses its datapath `cube4_composite`; "
-          "add the ray storage, 1,003,328 RAM bits per pipeline for 256³ with p = 4 (docs/rtl-composite.md).")
 print("Not in the total: the address generator (one per chip, `cube4_skew_addr` above), the "
       "stream former and weight generator, the host interface and pixel memory. The storage "
       "units are sized for 256-voxel volumes (MaxDim 256) with p = 4; the vg500 kept its "
