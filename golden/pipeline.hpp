@@ -70,22 +70,20 @@ inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const
   return gradient_12n(n.left, n.right, n.up, n.down, behind, ahead, r.supersampling, r.p);
 }
 
-// Gradient, magnitude, classification, shading, cropping and cut plane of
-// the sample at (x, y) of slice c.k. Units the registers leave off are not
-// evaluated at all, exactly as the hardware would skip them. `faces`, if
+// Magnitude, classification and shading of a sample with value `centre` and
+// gradient `g` (Gradient{} when the gradient unit is off): the shading
+// unit's work (rtl/cube4_shade_unit.sv). Units the registers leave off are
+// not evaluated at all, exactly as the hardware would skip them. `faces`, if
 // given, replaces the cube-map divider by its table (same values).
-inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int x, int y,
-                                 const Neighbourhood& n, const FacePositionTable* faces = nullptr) {
+inline ShadedSample shade_classified(const Registers& r, uint32_t centre, const Gradient& g,
+                                     const FacePositionTable* faces = nullptr) {
   const Precision& p = r.p;
   const uint32_t one = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
   ShadedSample out;
-  out.value = n.centre;
-  const ClassEntry& e = classify(r.classification, n.centre);
+  out.value = centre;
+  const ClassEntry& e = classify(r.classification, centre);
   out.alpha = e.a;
   out.rgb = widen_color(e.r, e.g, e.b, p);
-
-  Gradient g;
-  if (r.gradient) g = sample_gradient(r, c, n);
   uint32_t gm = one;
   if (r.magnitude) gm = gm_unit(r.gm_lut[gradient_magnitude(g, p)], p);
   if (r.gm_opacity) out.alpha = modulate_alpha(out.alpha, gm, p);
@@ -101,16 +99,30 @@ inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int 
     }
     out.rgb = phong(out.rgb, id, is, r.gm_diffuse ? gm : one, r.gm_specular ? gm : one, r.coefs, p);
   }
-  if (r.crop_enabled) out.visible = crop_visible(x, y, c.z_voxel, r.crop);
-  if (r.cut_enabled) {
-    const int w = p.weight_bits;
-    const int64_t d = cut_distance(r.cut, (int64_t{x} << w) + c.wx, (int64_t{y} << w) + c.wy,
-                                   (int64_t{c.z_voxel} << w) + c.wz, p);
-    const uint32_t f = cut_factor(d, r.cut, p);
-    out.alpha = cut_alpha(out.alpha, f, p);
-    if (f == 0) out.visible = false;
-  }
   return out;
+}
+
+// Cropping and the cut plane of the shaded sample at (x, y) of slice c.k:
+// the compositing unit's first steps (rtl/cube4_composite.sv).
+inline ShadedSample crop_and_cut(const Registers& r, const SliceControl& c, int x, int y, ShadedSample s) {
+  if (r.crop_enabled) s.visible = crop_visible(x, y, c.z_voxel, r.crop);
+  if (r.cut_enabled) {
+    const int w = r.p.weight_bits;
+    const int64_t d = cut_distance(r.cut, (int64_t{x} << w) + c.wx, (int64_t{y} << w) + c.wy,
+                                   (int64_t{c.z_voxel} << w) + c.wz, r.p);
+    const uint32_t f = cut_factor(d, r.cut, r.p);
+    s.alpha = cut_alpha(s.alpha, f, r.p);
+    if (f == 0) s.visible = false;
+  }
+  return s;
+}
+
+// Gradient, magnitude, classification, shading, cropping and cut plane of
+// the sample at (x, y) of slice c.k: one pipeline's work on one sample.
+inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int x, int y,
+                                 const Neighbourhood& n, const FacePositionTable* faces = nullptr) {
+  const Gradient g = r.gradient ? sample_gradient(r, c, n) : Gradient{};
+  return crop_and_cut(r, c, x, y, shade_classified(r, n.centre, g, faces));
 }
 
 }  // namespace cube4::golden
