@@ -35,7 +35,8 @@
 // Parameters (defaults = golden Precision): VoxelBits, WeightBits,
 // GradientBits, MagnitudeBits, ColorBits, AlphaBits, GmlutBits, MapFaceRes,
 // MapBits, MapFracBits, CoefBits, CoefFracBits, EyeBits; DivBitsPerStage
-// (cube_coord divider).
+// (cube_coord divider); SideBits (side_i travels to side_o with the sample,
+// Latency cycles, for the system's per-sample position and tag).
 module cube4_shader #(
   parameter int unsigned VoxelBits       = 12,
   parameter int unsigned WeightBits      = 8,
@@ -50,7 +51,8 @@ module cube4_shader #(
   parameter int unsigned CoefBits        = 10,
   parameter int unsigned CoefFracBits    = 8,
   parameter int unsigned EyeBits         = 8,
-  parameter int unsigned DivBitsPerStage = 2
+  parameter int unsigned DivBitsPerStage = 2,
+  parameter int unsigned SideBits        = 1
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -97,7 +99,10 @@ module cube4_shader #(
   output logic [AlphaBits-1:0]                   green_o,
   output logic [AlphaBits-1:0]                   blue_o,
   output logic [AlphaBits-1:0]                   alpha_o,
-  output logic [VoxelBits-1:0]                   value_o
+  output logic [VoxelBits-1:0]                   value_o,
+  // Bits that travel with the sample (the system's position and slice tag).
+  input  logic [SideBits-1:0]                    side_i,
+  output logic [SideBits-1:0]                    side_o
 );
 
   localparam int unsigned CellBits   = $clog2(MapFaceRes);
@@ -257,11 +262,14 @@ module cube4_shader #(
   /////////////////////////////////////////////
   // The sample travels to the output (value_o); classify taps it at ClassDelay.
   logic [Latency*VoxelBits-1:0]        sample_delay_q;
+  logic [Latency*SideBits-1:0]         side_delay_q;
   logic [ClassDelay*MagnitudeBits-1:0] mag_delay_q;
   always_ff @(posedge clk_i) begin : sample_delay
     sample_delay_q[0 +: VoxelBits] <= sample_i;
+    side_delay_q[0 +: SideBits] <= side_i;
     for (int unsigned k = 1; k < Latency; k++) begin
       sample_delay_q[k*VoxelBits +: VoxelBits] <= sample_delay_q[(k-1)*VoxelBits +: VoxelBits];
+      side_delay_q[k*SideBits +: SideBits] <= side_delay_q[(k-1)*SideBits +: SideBits];
     end
     mag_delay_q[0 +: MagnitudeBits] <= grad_mag_i;
     for (int unsigned k = 1; k < ClassDelay; k++) begin
@@ -368,6 +376,7 @@ module cube4_shader #(
 
   assign alpha_o = alpha_delay_q[(LatPhong-1)*A +: A];
   assign value_o = sample_delay_q[(Latency-1)*VoxelBits +: VoxelBits];
+  assign side_o  = side_delay_q[(Latency-1)*SideBits +: SideBits];
 
   // The valid chain runs through the specular path; the other units' valid
   // outputs carry the same information at their own times.

@@ -1,0 +1,188 @@
+// cube4_shade_unit: one pipeline's shading stage as the system connects it,
+// the gradient unit's output in, the compositing unit's input out:
+//   |g|     = cube4_magnitude(g)                      (MagLatency cycles)
+//   shaded  = cube4_shader(sample, g, |g|)            (the shader's Latency)
+// The sample, the gradient and the side bits wait MagLatency cycles so that
+// they meet their magnitude at the shader; the shader carries the side bits
+// to its output. Equals golden shade_sample() without cropping and the cut
+// plane (those act in cube4_composite), given golden sample_gradient()'s g.
+//
+// Why a unit of its own: the magnitude feeds only the shader (GmLUT and the
+// α/colour modulation), so the two are one stage of the pipeline; the
+// system instantiates one per pipeline. It has no neighbour links.
+//
+// Latency: NrIterations + 1 + the shader's Latency (4 + 17 = 21 with the
+// defaults). Fully pipelined, valid-only handshake, valid_i travels to
+// valid_o. Frame registers and table write ports are the shader's (change
+// them only with no sample in flight).
+//
+// Parameters: those of cube4_shader and cube4_magnitude (NrIterations);
+// SideBits as in cube4_shader.
+module cube4_shade_unit #(
+  parameter int unsigned VoxelBits       = 12,
+  parameter int unsigned WeightBits      = 8,
+  parameter int unsigned GradientBits    = 8,
+  parameter int unsigned MagnitudeBits   = 8,
+  parameter int unsigned NrIterations    = 3,
+  parameter int unsigned ColorBits       = 8,
+  parameter int unsigned AlphaBits       = 12,
+  parameter int unsigned GmlutBits       = 8,
+  parameter int unsigned MapFaceRes      = 8,
+  parameter int unsigned MapBits         = 16,
+  parameter int unsigned MapFracBits     = 8,
+  parameter int unsigned CoefBits        = 10,
+  parameter int unsigned CoefFracBits    = 8,
+  parameter int unsigned EyeBits         = 8,
+  parameter int unsigned DivBitsPerStage = 2,
+  parameter int unsigned SideBits        = 1,
+  localparam int unsigned MapAddrBits    = $clog2(6 * MapFaceRes * MapFaceRes)
+) (
+  input  logic                              clk_i,
+  input  logic                              rst_ni,
+  // Frame registers (cube4_shader's).
+  input  logic                              magnitude_i,
+  input  logic                              shading_i,
+  input  logic                              specular_i,
+  input  logic                              gm_opacity_i,
+  input  logic                              gm_diffuse_i,
+  input  logic                              gm_specular_i,
+  input  logic [CoefBits-1:0]               ke_i,
+  input  logic [CoefBits-1:0]               kd_i,
+  input  logic [CoefBits-1:0]               ks_i,
+  input  logic [AlphaBits-1:0]              spec_red_i,
+  input  logic [AlphaBits-1:0]              spec_green_i,
+  input  logic [AlphaBits-1:0]              spec_blue_i,
+  input  logic signed [EyeBits-1:0]         eye_x_i,
+  input  logic signed [EyeBits-1:0]         eye_y_i,
+  input  logic signed [EyeBits-1:0]         eye_z_i,
+  // Host write ports (cube4_shader's).
+  input  logic                              class_we_i,
+  input  logic [VoxelBits-1:0]              class_waddr_i,
+  input  logic [3*ColorBits+AlphaBits-1:0]  class_wdata_i,
+  input  logic                              gmlut_we_i,
+  input  logic [MagnitudeBits-1:0]          gmlut_waddr_i,
+  input  logic [GmlutBits-1:0]              gmlut_wdata_i,
+  input  logic                              dmap_we_i,
+  input  logic [MapAddrBits-1:0]            dmap_waddr_i,
+  input  logic [MapBits-1:0]                dmap_wdata_i,
+  input  logic                              smap_we_i,
+  input  logic [MapAddrBits-1:0]            smap_waddr_i,
+  input  logic [MapBits-1:0]                smap_wdata_i,
+  // Gradient stream (the gradient unit's output; zero gradients when the
+  // gradient unit is off).
+  input  logic                              valid_i,
+  input  logic [VoxelBits-1:0]              sample_i,
+  input  logic signed [GradientBits-1:0]    grad_x_i,
+  input  logic signed [GradientBits-1:0]    grad_y_i,
+  input  logic signed [GradientBits-1:0]    grad_z_i,
+  input  logic [SideBits-1:0]               side_i,
+  // Shaded stream.
+  output logic                              valid_o,
+  output logic [AlphaBits-1:0]              red_o,
+  output logic [AlphaBits-1:0]              green_o,
+  output logic [AlphaBits-1:0]              blue_o,
+  output logic [AlphaBits-1:0]              alpha_o,
+  output logic [VoxelBits-1:0]              value_o,
+  output logic [SideBits-1:0]               side_o
+);
+
+  // cube4_magnitude's latency (its header).
+  localparam int unsigned MagLatency = NrIterations + 1;
+  localparam int unsigned Carried    = VoxelBits + 3 * GradientBits + SideBits;
+
+  logic                     mag_valid;
+  logic [MagnitudeBits-1:0] magnitude;
+
+  cube4_magnitude #(
+    .GradientBits  (GradientBits),
+    .MagnitudeBits (MagnitudeBits),
+    .NrIterations  (NrIterations)
+  ) u_magnitude (
+    .clk_i,
+    .rst_ni,
+    .valid_i,
+    .gx_i        (grad_x_i),
+    .gy_i        (grad_y_i),
+    .gz_i        (grad_z_i),
+    .valid_o     (mag_valid),
+    .magnitude_o (magnitude)
+  );
+
+  // Sample, gradient and side bits wait for their magnitude. Not reset: the
+  // magnitude's valid chain says when they mean something.
+  logic [MagLatency*Carried-1:0] carry_q;
+  always_ff @(posedge clk_i) begin : carry_delay
+    carry_q[0 +: Carried] <= {side_i, grad_z_i, grad_y_i, grad_x_i, sample_i};
+    for (int unsigned k = 1; k < MagLatency; k++) begin
+      carry_q[k*Carried +: Carried] <= carry_q[(k-1)*Carried +: Carried];
+    end
+  end
+
+  logic [VoxelBits-1:0]           sh_sample;
+  logic signed [GradientBits-1:0] sh_gx, sh_gy, sh_gz;
+  logic [SideBits-1:0]            sh_side;
+  assign {sh_side, sh_gz, sh_gy, sh_gx, sh_sample} = carry_q[(MagLatency-1)*Carried +: Carried];
+
+  cube4_shader #(
+    .VoxelBits       (VoxelBits),
+    .WeightBits      (WeightBits),
+    .GradientBits    (GradientBits),
+    .MagnitudeBits   (MagnitudeBits),
+    .ColorBits       (ColorBits),
+    .AlphaBits       (AlphaBits),
+    .GmlutBits       (GmlutBits),
+    .MapFaceRes      (MapFaceRes),
+    .MapBits         (MapBits),
+    .MapFracBits     (MapFracBits),
+    .CoefBits        (CoefBits),
+    .CoefFracBits    (CoefFracBits),
+    .EyeBits         (EyeBits),
+    .DivBitsPerStage (DivBitsPerStage),
+    .SideBits        (SideBits)
+  ) u_shader (
+    .clk_i,
+    .rst_ni,
+    .magnitude_i,
+    .shading_i,
+    .specular_i,
+    .gm_opacity_i,
+    .gm_diffuse_i,
+    .gm_specular_i,
+    .ke_i,
+    .kd_i,
+    .ks_i,
+    .spec_red_i,
+    .spec_green_i,
+    .spec_blue_i,
+    .eye_x_i,
+    .eye_y_i,
+    .eye_z_i,
+    .class_we_i,
+    .class_waddr_i,
+    .class_wdata_i,
+    .gmlut_we_i,
+    .gmlut_waddr_i,
+    .gmlut_wdata_i,
+    .dmap_we_i,
+    .dmap_waddr_i,
+    .dmap_wdata_i,
+    .smap_we_i,
+    .smap_waddr_i,
+    .smap_wdata_i,
+    .valid_i    (mag_valid),
+    .sample_i   (sh_sample),
+    .grad_x_i   (sh_gx),
+    .grad_y_i   (sh_gy),
+    .grad_z_i   (sh_gz),
+    .grad_mag_i (magnitude),
+    .valid_o,
+    .red_o,
+    .green_o,
+    .blue_o,
+    .alpha_o,
+    .value_o,
+    .side_i     (sh_side),
+    .side_o
+  );
+
+endmodule
