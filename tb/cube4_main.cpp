@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
+#include <sstream>
 #include <chrono>
 #include <vector>
 #include <cstdio>
@@ -19,6 +21,7 @@
 #include "tb/image_io.hpp"
 #include "tb/progress.hpp"
 #include "tb/report.hpp"
+#include "tb/system_report.hpp"
 
 namespace {
 
@@ -34,7 +37,54 @@ struct RenderArgs {
   double reference_step = 0.25;
   int repeat = 1;
   bool quiet = false;
+  int pipes = 0;           // 0: the scene's
+  int check = -1;          // -1: on for models with RTL units
+  std::string trace;       // FST file (RTL units)
+  std::vector<uint64_t> trace_window;  // first, last cycle
 };
+
+bool is_system_model(const std::string& m) { return m == "tlm" || m == "rtl" || m.rfind("mixed:", 0) == 0; }
+
+// --model tlm | rtl | mixed:UNIT,... (the listed units at RTL, the rest TLM).
+std::array<sysc::Level, sysc::kUnits> parse_levels(const std::string& model) {
+  std::array<sysc::Level, sysc::kUnits> l;
+  l.fill(model == "rtl" ? sysc::Level::Rtl : sysc::Level::Tlm);
+  if (model.rfind("mixed:", 0) != 0) return l;
+  std::stringstream list(model.substr(6));
+  std::string name;
+  int count = 0;
+  while (std::getline(list, name, ',')) {
+    bool found = false;
+    for (int u = 0; u < sysc::kUnits; ++u)
+      if (name == sysc::unit_name(static_cast<sysc::Unit>(u))) {
+        l[static_cast<size_t>(u)] = sysc::Level::Rtl;
+        found = true;
+      }
+    if (!found)
+      throw InputError("--model " + model + ": unknown unit '" + name + "' (units: interp, gradient, shade, composite)");
+    ++count;
+  }
+  if (count == 0) throw InputError("--model " + model + ": name at least one unit after 'mixed:'");
+  return l;
+}
+
+// First pixel where two base planes differ, as text (empty if equal).
+std::string first_pixel_difference(const golden::BasePlane& want, const golden::BasePlane& got) {
+  if (want.width != got.width || want.height != got.height)
+    return "base plane is " + std::to_string(got.width) + "x" + std::to_string(got.height) + ", golden's " +
+           std::to_string(want.width) + "x" + std::to_string(want.height);
+  for (size_t i = 0; i < want.rgba.size(); i += 4)
+    if (!std::equal(&want.rgba[i], &want.rgba[i] + 4, &got.rgba[i])) {
+      const size_t px = i / 4;
+      std::ostringstream m;
+      m << "pixel (" << px % static_cast<size_t>(want.width) << ", " << px / static_cast<size_t>(want.width)
+        << "): expected RGBA (" << want.rgba[i] << ", " << want.rgba[i + 1] << ", " << want.rgba[i + 2] << ", "
+        << want.rgba[i + 3] << "), got (" << got.rgba[i] << ", " << got.rgba[i + 1] << ", " << got.rgba[i + 2]
+        << ", " << got.rgba[i + 3] << ")";
+      return m.str();
+    }
+  return {};
+}
 
 struct Loaded {
   golden::Scene scene;
@@ -65,7 +115,30 @@ int run_render(const RenderArgs& a) {
     throw InputError("--baseplane: the reference model casts rays from image pixels and has no base plane");
   if (!(a.reference_step > 0 && a.reference_step <= 4))
     throw InputError("--reference-step " + std::to_string(a.reference_step) + " is out of range (0, 4]");
+  const bool system = is_system_model(a.model);
+  if (!system && a.model != "fixed" && a.model != "float" && a.model != "reference")
+    throw InputError("--model " + a.model + ": unknown model (fixed, float, reference, tlm, rtl, mixed:UNIT,...)");
+  if (!a.trace_window.empty() && (a.trace_window.size() != 2 || a.trace_window[0] > a.trace_window[1]))
+    throw InputError("--trace-window: give FIRST LAST cycles, FIRST <= LAST");
+  if (!a.trace.empty() && std::filesystem::path(a.trace).extension() != ".fst")
+    throw InputError("--trace '" + a.trace + "': the file must end in .fst");
   Loaded l = load(a.scene);
+  sysc::SystemConfig cfg;
+  std::optional<sysc::SystemResult> sys;
+  std::string check_failure;
+  if (system) {
+    cfg.p = a.pipes > 0 ? a.pipes : l.scene.pipelines;
+    cfg.levels = parse_levels(a.model);
+    cfg.check = a.check < 0 ? !cfg.all_tlm() : a.check == 1;
+    if (!a.trace.empty()) {
+      if (cfg.all_tlm()) throw InputError("--trace: the tlm model has no RTL unit to trace");
+      cfg.trace.file = a.trace;
+      if (a.trace_window.size() == 2) {
+        cfg.trace.first = a.trace_window[0];
+        cfg.trace.last = a.trace_window[1];
+      }
+    }
+  }
   tb::ProgressPrinter progress("render " + a.model, !a.quiet);
   auto cb = [&](double f) { progress(f); };
   golden::RenderStats stats;
@@ -77,7 +150,29 @@ int run_render(const RenderArgs& a) {
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
-    if (a.model == "fixed") {
+    if (system) {
+      try {
+        sys = sysc::run_frame(l.host.regs, l.volume, cfg, cb);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+      }
+      const golden::BasePlane& bp = sys->plane;
+      stats.samples = sys->samples;
+      image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
+      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      if (last) {
+        hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
+        if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp);
+        if (cfg.check) {
+          const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, l.host.regs), bp);
+          if (!diff.empty() || sys->mismatch) {
+            check_failure = diff.empty() ? "base plane equal, but " : diff + "; ";
+            check_failure += sys->mismatch ? "first unit output that differs: " + sys->mismatch->describe()
+                                           : "every unit stream matched: the compositing unit or pixel memory differs";
+          }
+        }
+      }
+    } else if (a.model == "fixed") {
       const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, &stats, cb);
       image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
       frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
@@ -122,10 +217,16 @@ int run_render(const RenderArgs& a) {
         {"output", a.output},
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
+    if (sys) r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
     if (!a.baseplane.empty()) r["baseplane"] = a.baseplane;
     if (hash) r["baseplane_hash_fnv1a64"] = tb::hex64(*hash);
     tb::write_json(a.report, r);
   }
+  if (!check_failure.empty()) {
+    std::fprintf(stderr, "cube4: check FAILED against the golden model: %s\n", check_failure.c_str());
+    return 3;
+  }
+  if (sys && !a.quiet) tb::print_system_summary(*sys, cfg, l.scene.clock_mhz);
   return 0;
 }
 
@@ -152,8 +253,10 @@ int main(int argc, char** argv) {
   RenderArgs ra;
   CLI::App* render = app.add_subcommand("render", "render a scene (default: shaded composite of brainsmall)");
   render->add_option("scene", ra.scene, "scene JSON file (docs/scene.md)");
-  render->add_option("--model", ra.model, "fixed (bit-exact golden), float, or reference (image-order)")
-      ->check(CLI::IsMember({"fixed", "float", "reference"}));
+  render->add_option("--model", ra.model,
+                     "fixed (bit-exact golden), float, reference (image-order), or the system model: tlm, rtl, "
+                     "mixed:UNIT,... (units interp, gradient, shade, composite at RTL, the rest TLM)")
+      ;
   render->add_option("-o,--output", ra.output, "final image, .png or .exr")->capture_default_str();
   render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact)");
   render->add_option("--report", ra.report, "write a JSON report");
@@ -161,6 +264,13 @@ int main(int argc, char** argv) {
   render->add_option("--repeat", ra.repeat, "render N times (benchmarking): the report gives min and median")
       ->check(CLI::Range(1, 100000));
   render->add_flag("-q,--quiet", ra.quiet, "no progress or summary on stderr");
+  render->add_option("--pipes", ra.pipes, "system model: pipelines p (default: the scene's)");
+  render->add_flag_callback("--check", [&ra] { ra.check = 1; },
+                            "system model: compare the base plane and every unit's stream with golden, bit-exact "
+                            "(default: on when a unit runs at RTL; exit 3 on a mismatch)");
+  render->add_flag_callback("--no-check", [&ra] { ra.check = 0; }, "system model: no comparison with golden");
+  render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
+  render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
   std::string info_scene;
   CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");
   info->add_option("scene", info_scene, "scene JSON file (default: the default scene)");

@@ -12,6 +12,8 @@
 #pragma once
 #include <verilated.h>
 
+#include "systemc/rtl/vl_bits.hpp"
+
 #include <cstdint>
 #include <cstdlib>
 #include <deque>
@@ -36,43 +38,6 @@ inline std::string format(const Fields& f) {
   std::ostringstream s;
   for (size_t i = 0; i < f.size(); ++i) s << (i ? " " : "") << f[i].name << '=' << f[i].value;
   return s.str();
-}
-
-// ---------------------------------------------------------------------------
-// Bit access to verilated ports: CData/SData/IData/QData or VlWide<N>.
-template <class T, std::enable_if_t<std::is_integral_v<T>, int> = 0>
-inline void put_bits(T& port, int lsb, int width, uint64_t v) {
-  const uint64_t mask = width >= 64 ? ~uint64_t{0} : (uint64_t{1} << width) - 1;
-  uint64_t p = static_cast<uint64_t>(port);
-  p = (p & ~(mask << lsb)) | ((v & mask) << lsb);
-  port = static_cast<T>(p);
-}
-template <std::size_t N>
-inline void put_bits(VlWide<N>& port, int lsb, int width, uint64_t v) {
-  for (int b = 0; b < width; ++b) {
-    const int bit = lsb + b;
-    const uint32_t m = uint32_t{1} << (bit % 32);
-    if (v >> b & 1) port[bit / 32] |= m; else port[bit / 32] &= ~m;
-  }
-}
-template <class T, std::enable_if_t<std::is_integral_v<T>, int> = 0>
-inline uint64_t get_bits(const T& port, int lsb, int width) {
-  const uint64_t mask = width >= 64 ? ~uint64_t{0} : (uint64_t{1} << width) - 1;
-  return static_cast<uint64_t>(port) >> lsb & mask;
-}
-template <std::size_t N>
-inline uint64_t get_bits(const VlWide<N>& port, int lsb, int width) {
-  uint64_t r = 0;
-  for (int b = 0; b < width; ++b) {
-    const int bit = lsb + b;
-    r |= uint64_t{port[bit / 32] >> (bit % 32) & 1u} << b;
-  }
-  return r;
-}
-inline int64_t sign_extend(uint64_t v, int bits) {
-  const uint64_t m = uint64_t{1} << (bits - 1);
-  v &= (m << 1) - 1;
-  return static_cast<int64_t>(v ^ m) - static_cast<int64_t>(m);
 }
 
 // ---------------------------------------------------------------------------

@@ -1,0 +1,64 @@
+// What travels between the units in a cycle-level run, one value per clock:
+// a "beat" is one partial beam (one lane per pipeline) with the control that
+// travels with it. The fields are those of the RTL streams
+// (docs/rtl-interp.md, rtl-gradient.md, rtl-composite.md); both levels of a
+// unit read and write the same beats, so any mix can be connected.
+#pragma once
+#include <array>
+#include <cstdint>
+
+namespace cube4::sysc {
+
+// Largest p of a cycle-level run (the RTL variants are built for a list of
+// p up to this, CUBE4_SYSTEM_PIPES); transaction-level runs take any p.
+constexpr int kMaxLanes = 16;
+
+struct BeamFlags {
+  bool beam_start = false, beam_end = false;    // partial beam j = 0, j = B-1
+  bool slice_start = false, slice_end = false;  // beam y = 0, last beam of the slice
+};
+
+// Stream former -> interpolation: one pass per sample slice (plus the zero
+// pass when the gradient unit runs), beams 0 .. ny (ny = the zero beam).
+struct VoxelBeat {
+  bool valid = false;
+  BeamFlags f;
+  uint32_t wx = 0, wy = 0, wz = 0;  // the pass's weights
+  uint64_t tag = 0;                 // stream tag (systemc/core/frame_plan.hpp)
+  std::array<uint16_t, kMaxLanes> voxel{};
+};
+
+// Interpolation -> gradient: samples S(j*p + k, y) of a pass, beams 0 .. ny-1.
+struct SampleBeat {
+  bool valid = false;
+  BeamFlags f;
+  uint64_t tag = 0;
+  std::array<uint16_t, kMaxLanes> sample{};
+};
+
+// Gradient -> shading: the centre sample, its gradient and its position.
+struct GradientBeat {
+  bool valid = false;
+  BeamFlags f;
+  int x = 0, y = 0;    // x of lane 0 (= j*p), beam y
+  uint32_t slice = 0;  // sample slice k
+  std::array<uint16_t, kMaxLanes> sample{};
+  std::array<int16_t, kMaxLanes> gx{}, gy{}, gz{};
+};
+
+// Shading -> compositing: shaded samples before cropping and the cut plane.
+struct ShadedBeat {
+  bool valid = false;
+  BeamFlags f;
+  int x = 0, y = 0;
+  uint32_t slice = 0;
+  std::array<uint16_t, kMaxLanes> red{}, green{}, blue{}, alpha{}, value{};
+};
+
+// Compositing -> pixel memory: at most one pixel per pipeline per clock.
+struct PixelBeat {
+  uint32_t valid = 0;  // bit k: pipeline k's port
+  std::array<uint16_t, kMaxLanes> u{}, v{}, red{}, green{}, blue{}, alpha{};
+};
+
+}  // namespace cube4::sysc

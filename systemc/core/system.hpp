@@ -1,0 +1,68 @@
+// The system model: the stream former (address generation, skewed voxel
+// memory, de-skew, weight generator), p pipelines of interpolation ->
+// gradient -> shading -> compositing units (each at TLM or RTL), and pixel
+// memory. run_frame() renders one frame of the given registers and volume
+// and counts its cycles. docs/system.md describes the structure and the
+// cycle accounting.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "golden/registers.hpp"
+#include "golden/renderers.hpp"
+#include "golden/volume.hpp"
+#include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_model.hpp"
+
+namespace cube4::sysc {
+
+struct SystemConfig {
+  int p = 4;
+  std::array<Level, kUnits> levels{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
+  TraceWindow trace;         // RTL units only
+  bool check = false;        // compare every unit's output stream with golden
+  bool all_tlm() const {
+    for (Level l : levels)
+      if (l != Level::Tlm) return false;
+    return true;
+  }
+};
+
+// The first value a unit emitted that differs from golden's.
+struct Mismatch {
+  Unit unit = Unit::Interp;
+  int slice = 0, x = 0, y = 0;
+  std::string expected, got;
+  std::string describe() const;
+};
+
+struct SystemResult {
+  golden::BasePlane plane;
+  uint64_t frame_cycles = 0;    // first voxel beat to last pixel written (first-frame latency)
+  uint64_t stream_cycles = 0;   // voxel beats per frame: the steady-state interval of back-to-back frames
+  uint64_t samples = 0;         // nx * ny * K rays-slices composited
+  uint64_t voxel_reads = 0;     // voxel memory reads (one per module per read cycle)
+  uint64_t simulated_cycles = 0;  // clock cycles simulated (cycle-level runs)
+  double wall_seconds = 0;
+  std::array<Level, kUnits> levels{};
+  std::array<bool, kUnits> simulated{};  // false: not needed by the scene, not simulated
+  std::vector<std::string> skipped;      // logic the scene does not need, not simulated
+  std::optional<Mismatch> mismatch;      // --check: the first unit output that differs
+};
+
+SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
+                       const golden::Progress& progress = {});
+
+// The analytic cycle count of a frame at the hardware's rate, for any p
+// (systemc/core/cycle_model.cpp; equal to run_frame()'s frame_cycles at RTL,
+// which the system tests assert).
+struct CycleCount {
+  uint64_t stream = 0;   // voxel beats: passes * (ny + 1) * ceil(nx / p)
+  uint64_t latency = 0;  // first-frame latency: stream + the pipeline's drain
+};
+CycleCount frame_cycles(const golden::Registers& r, int p);
+
+}  // namespace cube4::sysc

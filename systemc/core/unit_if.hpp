@@ -1,0 +1,43 @@
+// The one SystemC interface of each rendering-pipeline unit, implemented at
+// two levels: TLM (systemc/tlm/, golden functions) and RTL (systemc/rtl/, the
+// verilated ring or unit). A cycle-level run calls clock() once per clock
+// edge with the beat the unit sees in that cycle; the unit returns the beat
+// on its output in that cycle.
+#pragma once
+#include <string>
+#include <systemc>
+
+#include "systemc/core/beats.hpp"
+
+namespace cube4::sysc {
+
+enum class Level { Tlm, Rtl };
+inline const char* level_name(Level l) { return l == Level::Tlm ? "tlm" : "rtl"; }
+
+// The units, in pipeline order; the names are the command line's.
+enum class Unit { Interp = 0, Gradient = 1, Shade = 2, Composite = 3 };
+constexpr int kUnits = 4;
+inline const char* unit_name(Unit u) {
+  static const char* const names[] = {"interp", "gradient", "shade", "composite"};
+  return names[static_cast<int>(u)];
+}
+
+template <class In, class Out>
+struct UnitIf : virtual sc_core::sc_interface {
+  virtual void clock(const In& in, Out& out) = 0;
+  virtual Level level() const = 0;
+};
+
+// The compositing unit's output is the pixel ports; it also says when the
+// frame's last pixel has been written.
+struct CompositeOut {
+  PixelBeat pixels;
+  bool frame_done = false;
+};
+
+using InterpIf = UnitIf<VoxelBeat, SampleBeat>;
+using GradientIf = UnitIf<SampleBeat, GradientBeat>;
+using ShadeIf = UnitIf<GradientBeat, ShadedBeat>;
+using CompositeIf = UnitIf<ShadedBeat, CompositeOut>;
+
+}  // namespace cube4::sysc

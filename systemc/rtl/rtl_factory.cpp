@@ -1,0 +1,83 @@
+// One case per verilated p (the generated lists come from
+// systemc/CMakeLists.txt: rtl_variant_headers.inc, rtl_variant_list.inc).
+#include "systemc/rtl/rtl_factory.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "systemc/rtl/rtl_model.hpp"  // before the models: see its sc_time_stamp note
+
+#include "Vsys_shade_unit.h"
+#include "rtl_variant_headers.inc"
+#include "systemc/rtl/rtl_composite.hpp"
+#include "systemc/rtl/rtl_gradient.hpp"
+#include "systemc/rtl/rtl_interp.hpp"
+#include "systemc/rtl/rtl_shade.hpp"
+
+namespace cube4::sysc {
+namespace {
+
+[[noreturn]] void unavailable(int p) {
+  std::string list;
+  for (int q : rtl_pipes()) list += (list.empty() ? "" : ", ") + std::to_string(q);
+  throw std::invalid_argument("pipelines: " + std::to_string(p) + " has no RTL build (built for p = " + list +
+                              "; add it to CMake's CUBE4_SYSTEM_PIPES, or run --model tlm)");
+}
+
+}  // namespace
+
+std::vector<int> rtl_pipes() {
+  return {
+#define CUBE4_RTL_P(p) p,
+#include "rtl_variant_list.inc"
+#undef CUBE4_RTL_P
+  };
+}
+
+bool rtl_available(int p) {
+  for (int q : rtl_pipes())
+    if (q == p) return true;
+  return false;
+}
+
+void require_rtl(int p) {
+  if (!rtl_available(p)) unavailable(p);
+}
+
+std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+  switch (plan.p) {
+#define CUBE4_RTL_P(p) \
+  case p: return std::make_unique<RtlInterp<Vsys_interp_p##p>>(plan, ctx, trace);
+#include "rtl_variant_list.inc"
+#undef CUBE4_RTL_P
+    default: unavailable(plan.p);
+  }
+}
+
+std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+  switch (plan.p) {
+#define CUBE4_RTL_P(p) \
+  case p: return std::make_unique<RtlGradient<Vsys_gradient_p##p>>(plan, kRtlMaxDim, ctx, trace);
+#include "rtl_variant_list.inc"
+#undef CUBE4_RTL_P
+    default: unavailable(plan.p);
+  }
+}
+
+std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+  if (!rtl_available(plan.p)) unavailable(plan.p);
+  return std::make_unique<RtlShade<Vsys_shade_unit>>(plan, ctx, trace);
+}
+
+std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
+                                                const TraceWindow& trace) {
+  switch (plan.p) {
+#define CUBE4_RTL_P(p) \
+  case p: return std::make_unique<RtlComposite<Vsys_composite_p##p>>(plan, pixels, ctx, trace);
+#include "rtl_variant_list.inc"
+#undef CUBE4_RTL_P
+    default: unavailable(plan.p);
+  }
+}
+
+}  // namespace cube4::sysc

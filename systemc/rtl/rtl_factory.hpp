@@ -1,0 +1,31 @@
+// The RTL level of each unit, for the pipeline counts the build verilated
+// (CMake CUBE4_SYSTEM_PIPES). Without a verilated build (CUBE4_RTL=OFF)
+// no p is available and the system runs at transaction level only.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/pixel_memory.hpp"
+#include "systemc/core/unit_if.hpp"
+
+class VerilatedContext;
+
+namespace cube4::sysc {
+
+struct TraceWindow;
+
+// Largest permuted nx, ny the verilated rings' storage holds (MaxDim).
+constexpr int kRtlMaxDim = 256;
+
+std::vector<int> rtl_pipes();
+bool rtl_available(int p);
+// Throws, naming the p values that have RTL, if p has none.
+void require_rtl(int p);
+std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
+std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
+std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
+std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
+                                                const TraceWindow& trace);
+
+}  // namespace cube4::sysc

@@ -1,0 +1,25 @@
+// The build without verilated RTL (CUBE4_RTL=OFF): no p has an RTL level.
+#include <stdexcept>
+
+#include "systemc/rtl/rtl_factory.hpp"
+
+namespace cube4::sysc {
+
+std::vector<int> rtl_pipes() { return {}; }
+bool rtl_available(int) { return false; }
+
+namespace {
+[[noreturn]] void unavailable() {
+  throw std::invalid_argument("this build has no RTL (configured with CUBE4_RTL=OFF): run --model tlm");
+}
+}  // namespace
+
+void require_rtl(int) { unavailable(); }
+std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
+std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
+std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
+std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, VerilatedContext&, const TraceWindow&) {
+  unavailable();
+}
+
+}  // namespace cube4::sysc

@@ -1,0 +1,47 @@
+// Interpolation unit at RTL: cube4_interp_ring (p pipelines and their links).
+#pragma once
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_model.hpp"
+
+namespace cube4::sysc {
+
+template <class M>
+class RtlInterp final : public InterpIf {
+ public:
+  RtlInterp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
+      : p_(plan.p), v_(plan.r.p.voxel_bits), tag_bits_(plan.tag_bits()), m_(ctx, "interp", trace, "interp") {}
+
+  void clock(const VoxelBeat& in, SampleBeat& out) override {
+    using rtl::get_bits;
+    using rtl::put_bits;
+    M& m = *m_;
+    m.valid_i = in.valid;
+    m.beam_start_i = in.f.beam_start;
+    m.beam_end_i = in.f.beam_end;
+    m.slice_start_i = in.f.slice_start;
+    m.slice_end_i = in.f.slice_end;
+    for (int k = 0; k < p_; ++k) put_bits(m.voxel_i, k * v_, v_, in.voxel[static_cast<size_t>(k)]);
+    m.wx_i = in.wx;
+    m.wy_i = in.wy;
+    m.wz_i = in.wz;
+    m.tag_i = in.tag;
+    m_.settle();
+    // All pipelines run in lock step: pipeline 0's control stands for all.
+    out.valid = m.valid_o & 1;
+    out.f.beam_start = m.beam_start_o & 1;
+    out.f.beam_end = m.beam_end_o & 1;
+    out.f.slice_start = m.slice_start_o & 1;
+    out.f.slice_end = m.slice_end_o & 1;
+    out.tag = get_bits(m.tag_o, 0, tag_bits_);
+    for (int k = 0; k < p_; ++k) out.sample[static_cast<size_t>(k)] = static_cast<uint16_t>(get_bits(m.sample_o, k * v_, v_));
+    m_.rise();
+  }
+  Level level() const override { return Level::Rtl; }
+
+ private:
+  int p_, v_, tag_bits_;
+  RtlModel<M> m_;
+};
+
+}  // namespace cube4::sysc

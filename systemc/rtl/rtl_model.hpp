@@ -1,0 +1,82 @@
+// A verilated model as a clocked unit: construction, reset, the clock edge
+// and optional FST tracing over a cycle window. Cycle convention (as in the
+// unit tests, tb/rtl/rtl_check.hpp): inputs are driven, the clock goes low
+// and the model is evaluated (the outputs of this cycle are visible), the
+// outputs are read, then the clock rises (the edge that ends the cycle).
+#pragma once
+// verilated.h calls sc_time_stamp() unqualified once SystemC is included.
+#include <systemc>
+using sc_core::sc_time_stamp;
+#include <verilated.h>
+#include <verilated_fst_c.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "systemc/rtl/vl_bits.hpp"
+
+namespace cube4::sysc {
+
+// Where and when to trace (TraceWindow::file empty: no tracing).
+struct TraceWindow {
+  std::string file;
+  uint64_t first = 0, last = UINT64_MAX;  // cycles, inclusive
+};
+
+template <class M>
+class RtlModel {
+ public:
+  RtlModel(VerilatedContext& ctx, const std::string& name, const TraceWindow& trace, const std::string& trace_suffix)
+      : ctx_(ctx), m_(std::make_unique<M>(&ctx, name.c_str())), window_(trace) {
+    if (!trace.file.empty()) {
+      fst_ = std::make_unique<VerilatedFstC>();
+      m_->trace(fst_.get(), 99);
+      fst_->open(trace_file_name(trace.file, trace_suffix).c_str());
+    }
+    m_->rst_ni = 0;
+    for (int i = 0; i < 2; ++i) edge();
+    m_->rst_ni = 1;
+    cycle_ = 0;
+  }
+  ~RtlModel() {
+    if (fst_) fst_->close();
+  }
+  RtlModel(const RtlModel&) = delete;
+  RtlModel& operator=(const RtlModel&) = delete;
+
+  M& operator*() { return *m_; }
+  M* operator->() { return m_.get(); }
+
+  void settle() {
+    m_->clk_i = 0;
+    m_->eval();
+    dump(2 * cycle_);
+  }
+  void rise() {
+    m_->clk_i = 1;
+    m_->eval();
+    dump(2 * cycle_ + 1);
+    ++cycle_;
+  }
+  void edge() { settle(); rise(); }
+
+  // trace.fst + "interp" -> trace.interp.fst: one file per verilated unit.
+  static std::string trace_file_name(const std::string& file, const std::string& suffix) {
+    const auto dot = file.rfind(".fst");
+    const std::string stem = dot == std::string::npos ? file : file.substr(0, dot);
+    return stem + "." + suffix + ".fst";
+  }
+
+ private:
+  void dump(uint64_t t) {
+    if (fst_ && cycle_ >= window_.first && cycle_ <= window_.last) fst_->dump(t);
+  }
+  VerilatedContext& ctx_;
+  std::unique_ptr<M> m_;
+  std::unique_ptr<VerilatedFstC> fst_;
+  TraceWindow window_;
+  uint64_t cycle_ = 0;
+};
+
+}  // namespace cube4::sysc

@@ -1,0 +1,34 @@
+#include "systemc/tlm/tlm_composite.hpp"
+
+namespace cube4::sysc {
+
+TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels)
+    : plan_(plan), compositor_(plan.r, pixels.plane()), slice_(static_cast<size_t>(plan.nx) * plan.ny) {}
+
+void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
+  out = CompositeOut{};
+  if (!in.valid) return;
+  for (int k = 0; k < plan_.p; ++k) {
+    const int x = in.x + k;
+    if (x >= plan_.nx) continue;
+    const auto i = static_cast<size_t>(k);
+    golden::ShadedSample& s = slice_[static_cast<size_t>(in.y) * plan_.nx + x];
+    s.rgb = {in.red[i], in.green[i], in.blue[i]};
+    s.alpha = in.alpha[i];
+    s.value = in.value[i];
+    s.visible = true;
+  }
+  if (!(in.f.slice_end && in.f.beam_end)) return;
+  const golden::SliceControl& c = plan_.slices[in.slice];
+  auto shade = [&](int x, int y, const golden::RayAcc&, golden::ShadedSample& s) {
+    s = golden::crop_and_cut(plan_.r, c, x, y, slice_[static_cast<size_t>(y) * plan_.nx + x]);
+    return true;
+  };
+  compositor_.slice(c, shade, [](int) { return true; });
+  if (in.slice + 1 == static_cast<uint32_t>(plan_.K)) {
+    compositor_.finish();
+    out.frame_done = true;
+  }
+}
+
+}  // namespace cube4::sysc

@@ -1,0 +1,69 @@
+#include "systemc/tlm/tlm_gradient.hpp"
+
+namespace cube4::sysc {
+
+TlmGradient::TlmGradient(const FramePlan& plan)
+    : plan_(plan), behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1) {}
+
+void TlmGradient::emit_current() {
+  const golden::SliceControl& c = plan_.slices[static_cast<size_t>(current_slice_)];
+  golden::Neighbourhood n;
+  for (int y = 0; y < plan_.ny; ++y)
+    for (int j = 0; j < plan_.B; ++j) {
+      GradientBeat b;
+      b.valid = true;
+      b.f = {j == 0, j == plan_.B - 1, y == 0, y == plan_.ny - 1};
+      b.x = j * plan_.p;
+      b.y = y;
+      b.slice = static_cast<uint32_t>(current_slice_);
+      for (int k = 0; k < plan_.p; ++k) {
+        const int x = j * plan_.p + k;
+        if (x >= plan_.nx) continue;  // padding columns: zero sample, zero gradient
+        golden::gather_neighbourhood(behind_, current_, ahead_, c, x, y, n);
+        const golden::Gradient g = golden::sample_gradient(plan_.r, c, n);
+        const auto i = static_cast<size_t>(k);
+        b.sample[i] = static_cast<uint16_t>(n.centre);
+        b.gx[i] = static_cast<int16_t>(g.x);
+        b.gy[i] = static_cast<int16_t>(g.y);
+        b.gz[i] = static_cast<int16_t>(g.z);
+      }
+      out_.push_back(b);
+    }
+}
+
+void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
+  if (in.valid) {
+    if (in.f.slice_start && in.f.beam_start) y_ = 0;
+    int32_t* row = ahead_.row(y_);
+    for (int k = 0; k < plan_.p; ++k) {
+      const int x = j_ * plan_.p + k;
+      if (x < plan_.nx) row[x] = in.sample[static_cast<size_t>(k)];
+    }
+    ++j_;
+    if (in.f.beam_end) {
+      j_ = 0;
+      ++y_;
+    }
+    if (in.f.slice_end && in.f.beam_end) {
+      const bool zero = plan_.tag_zero_slice(in.tag);
+      if (zero) ahead_.clear();
+      if (current_slice_ >= 0) emit_current();
+      std::swap(behind_, current_);
+      std::swap(current_, ahead_);
+      current_slice_ = static_cast<int>(plan_.tag_slice(in.tag));
+      if (zero) {  // the frame's end: the next slice is the first of a frame
+        current_slice_ = -1;
+        behind_.clear();
+        current_.clear();
+      }
+    }
+  }
+  if (out_.empty()) {
+    out = GradientBeat{};
+  } else {
+    out = out_.front();
+    out_.pop_front();
+  }
+}
+
+}  // namespace cube4::sysc

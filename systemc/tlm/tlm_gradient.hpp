@@ -1,0 +1,29 @@
+// Gradient unit at transaction level: collects sample slices, and when
+// slice s+1 (or the frame's zero slice) has arrived, computes the gradients
+// of slice s with golden gather_neighbourhood() + sample_gradient() and
+// streams them out. Latency: a slice, where the RTL takes a beam.
+#pragma once
+#include <deque>
+
+#include "golden/slice_steps.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/unit_if.hpp"
+
+namespace cube4::sysc {
+
+class TlmGradient final : public GradientIf {
+ public:
+  explicit TlmGradient(const FramePlan& plan);
+  void clock(const SampleBeat& in, GradientBeat& out) override;
+  Level level() const override { return Level::Tlm; }
+
+ private:
+  void emit_current();
+  const FramePlan& plan_;
+  golden::Plane behind_, current_, ahead_;
+  int current_slice_ = -1;  // none yet in this frame
+  int y_ = 0, j_ = 0;
+  std::deque<GradientBeat> out_;
+};
+
+}  // namespace cube4::sysc

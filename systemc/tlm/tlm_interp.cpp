@@ -1,0 +1,56 @@
+#include "systemc/tlm/tlm_interp.hpp"
+
+namespace cube4::sysc {
+
+TlmInterp::TlmInterp(const FramePlan& plan)
+    : plan_(plan), pass_(plan.nx, plan.ny, 1), store_(plan.nx, plan.ny, 1), samples_(plan.nx, plan.ny, 1),
+      interp_(plan.nx, plan.ny, plan.r.p.weight_bits) {}
+
+void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
+  if (in.valid) {
+    if (in.f.slice_start && in.f.beam_start) y_ = 0;
+    if (y_ < plan_.ny) {
+      int32_t* row = pass_.row(y_);
+      for (int k = 0; k < plan_.p; ++k) {
+        const int x = j_ * plan_.p + k;
+        if (x < plan_.nx) row[x] = in.voxel[static_cast<size_t>(k)];
+      }
+    }
+    ++j_;
+    if (in.f.beam_end) {
+      j_ = 0;
+      ++y_;
+    }
+    if (in.f.slice_end && in.f.beam_end) {
+      // A pass with wz = 0 streams the slice its samples lie on and becomes
+      // the stored slice; the others stream the slice above it.
+      golden::SliceControl c;
+      c.wx = in.wx;
+      c.wy = in.wy;
+      c.wz = in.wz;
+      if (in.wz == 0) std::swap(store_, pass_);
+      interp_.slice(store_, pass_, c, samples_);
+      for (int y = 0; y < plan_.ny; ++y)
+        for (int j = 0; j < plan_.B; ++j) {
+          SampleBeat b;
+          b.valid = true;
+          b.f = {j == 0, j == plan_.B - 1, y == 0, y == plan_.ny - 1};
+          b.tag = in.tag;
+          for (int k = 0; k < plan_.p; ++k) {
+            const int x = j * plan_.p + k;
+            b.sample[static_cast<size_t>(k)] = x < plan_.nx ? static_cast<uint16_t>(samples_.at(x, y)) : 0;
+          }
+          out_.push_back(b);
+        }
+      for (int j = 0; j < plan_.B; ++j) out_.push_back(SampleBeat{});
+    }
+  }
+  if (out_.empty()) {
+    out = SampleBeat{};
+  } else {
+    out = out_.front();
+    out_.pop_front();
+  }
+}
+
+}  // namespace cube4::sysc

@@ -1,0 +1,30 @@
+// Interpolation unit at transaction level: collects a pass of voxel beats
+// into a slice, interpolates it with golden Interpolator (the renderer's
+// own), and streams the sample slice out, one beat per clock, after the
+// pass has arrived. Its latency is a pass, not the RTL's 4 cycles; the
+// stream it emits keeps the ring's protocol (B idle cycles after each
+// slice: the gradient unit's zero beam).
+#pragma once
+#include <deque>
+
+#include "golden/slice_steps.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/unit_if.hpp"
+
+namespace cube4::sysc {
+
+class TlmInterp final : public InterpIf {
+ public:
+  explicit TlmInterp(const FramePlan& plan);
+  void clock(const VoxelBeat& in, SampleBeat& out) override;
+  Level level() const override { return Level::Tlm; }
+
+ private:
+  const FramePlan& plan_;
+  golden::Plane pass_, store_, samples_;
+  golden::Interpolator interp_;
+  int y_ = 0, j_ = 0;
+  std::deque<SampleBeat> out_;
+};
+
+}  // namespace cube4::sysc

@@ -1,0 +1,42 @@
+#include "systemc/tlm/tlm_shade.hpp"
+
+namespace cube4::sysc {
+
+int shade_latency(const golden::Precision& p) {
+  int cell_bits = 0;
+  while ((1 << cell_bits) < p.map_face_res) ++cell_bits;
+  const int div_bits_per_stage = 2;
+  const int cube = 1 + (cell_bits + p.weight_bits + div_bits_per_stage - 1) / div_bits_per_stage;
+  return (p.nr_iterations + 1) + 4 + cube + 3 + 3;
+}
+
+TlmShade::TlmShade(const FramePlan& plan) : plan_(plan), line_(static_cast<size_t>(shade_latency(plan.r.p))) {
+  if (plan.r.shading && plan.r.p.gradient_bits <= 10)
+    faces_ = std::make_unique<golden::FacePositionTable>(static_cast<int>(golden::max_signed(plan.r.p.gradient_bits)),
+                                                         plan.r.p.map_face_res, plan.r.p.weight_bits);
+}
+
+void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
+  out = line_[head_];
+  ShadedBeat& s = line_[head_];
+  head_ = (head_ + 1) % line_.size();
+  s = ShadedBeat{};
+  if (!in.valid) return;
+  s.valid = true;
+  s.f = in.f;
+  s.x = in.x;
+  s.y = in.y;
+  s.slice = in.slice;
+  for (int k = 0; k < plan_.p; ++k) {
+    const auto i = static_cast<size_t>(k);
+    const golden::Gradient g{in.gx[i], in.gy[i], in.gz[i]};
+    const golden::ShadedSample r = golden::shade_classified(plan_.r, in.sample[i], g, faces_.get());
+    s.red[i] = static_cast<uint16_t>(r.rgb[0]);
+    s.green[i] = static_cast<uint16_t>(r.rgb[1]);
+    s.blue[i] = static_cast<uint16_t>(r.rgb[2]);
+    s.alpha[i] = static_cast<uint16_t>(r.alpha);
+    s.value[i] = static_cast<uint16_t>(r.value);
+  }
+}
+
+}  // namespace cube4::sysc

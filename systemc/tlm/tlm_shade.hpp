@@ -1,0 +1,32 @@
+// Shading at transaction level: golden shade_classified() per lane, on a
+// delay line as long as cube4_shade_unit's latency, so that the shading
+// stage takes the same cycles at both levels.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "golden/pipeline.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/unit_if.hpp"
+
+namespace cube4::sysc {
+
+// cube4_shade_unit's latency: magnitude (NrIterations + 1), then the
+// shader: reflection 4 + cube coordinates (1 + ceil((log2 res + W) / 2)) +
+// reflectance 3 + phong 3 (rtl/cube4_shader.sv, DivBitsPerStage = 2).
+int shade_latency(const golden::Precision& p);
+
+class TlmShade final : public ShadeIf {
+ public:
+  explicit TlmShade(const FramePlan& plan);
+  void clock(const GradientBeat& in, ShadedBeat& out) override;
+  Level level() const override { return Level::Tlm; }
+
+ private:
+  const FramePlan& plan_;
+  std::unique_ptr<golden::FacePositionTable> faces_;
+  std::vector<ShadedBeat> line_;  // circular delay line
+  size_t head_ = 0;
+};
+
+}  // namespace cube4::sysc

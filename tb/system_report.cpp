@@ -1,0 +1,53 @@
+#include "tb/system_report.hpp"
+
+#include <cstdio>
+
+namespace cube4::tb {
+
+nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemConfig& cfg, double clock_mhz,
+                               double wall_seconds, const std::string& check_failure) {
+  nlohmann::json units = nlohmann::json::object();
+  for (int u = 0; u < sysc::kUnits; ++u) {
+    const auto i = static_cast<size_t>(u);
+    units[sysc::unit_name(static_cast<sysc::Unit>(u))] =
+        r.simulated[i] ? sysc::level_name(r.levels[i]) : "not simulated (not needed by the scene)";
+  }
+  const double hz = clock_mhz * 1e6;
+  nlohmann::json j = {
+      {"pipelines", cfg.p},
+      {"units", units},
+      {"skipped", r.skipped},
+      {"cycles_per_frame", r.frame_cycles},
+      {"cycles_steady_state_interval", r.stream_cycles},
+      {"fps_first_frame", hz / static_cast<double>(r.frame_cycles)},
+      {"fps_steady_state", hz / static_cast<double>(r.stream_cycles)},
+      {"samples_per_cycle", static_cast<double>(r.samples) / static_cast<double>(r.stream_cycles)},
+      {"voxel_reads", r.voxel_reads},
+      {"simulated_cycles", r.simulated_cycles},
+      {"simulated_cycles_per_wall_second",
+       wall_seconds > 0 ? static_cast<double>(r.simulated_cycles ? r.simulated_cycles : r.frame_cycles) / wall_seconds
+                        : 0.0},
+      {"timing", cfg.all_tlm() ? "cycle model (loosely timed, no clock simulated)" : "simulated clock cycles"},
+      {"check", cfg.check ? (check_failure.empty() ? "passed: base plane and unit streams bit-exact" : check_failure)
+                          : "off"},
+  };
+  if (!cfg.trace.file.empty()) j["trace"] = cfg.trace.file;
+  return j;
+}
+
+void print_system_summary(const sysc::SystemResult& r, const sysc::SystemConfig& cfg, double clock_mhz) {
+  std::string levels;
+  for (int u = 0; u < sysc::kUnits; ++u) {
+    const auto i = static_cast<size_t>(u);
+    levels += std::string(levels.empty() ? "" : " ") + sysc::unit_name(static_cast<sysc::Unit>(u)) + "=" +
+              (r.simulated[i] ? sysc::level_name(r.levels[i]) : "skipped");
+  }
+  std::fprintf(stderr,
+               "cube4: p=%d [%s]: %llu cycles/frame (%llu steady), %.1f fps at %.0f MHz, %.2f samples/cycle%s\n",
+               cfg.p, levels.c_str(), static_cast<unsigned long long>(r.frame_cycles),
+               static_cast<unsigned long long>(r.stream_cycles), clock_mhz * 1e6 / static_cast<double>(r.stream_cycles),
+               clock_mhz, static_cast<double>(r.samples) / static_cast<double>(r.stream_cycles),
+               cfg.check ? "; check passed (bit-exact)" : "");
+}
+
+}  // namespace cube4::tb
