@@ -1,0 +1,310 @@
+#include "systemc/host/host_if.hpp"
+
+#include <cstring>
+#include <exception>
+#include <vector>
+
+namespace cube4::sysc {
+namespace rm = regmap;
+using rm::ErrorCode;
+using rm::Region;
+
+namespace {
+
+tlm::tlm_response_status status_of(ErrorCode e) {
+  switch (e) {
+    case ErrorCode::None: return tlm::TLM_OK_RESPONSE;
+    case ErrorCode::Unmapped: return tlm::TLM_ADDRESS_ERROR_RESPONSE;
+    case ErrorCode::Alignment:
+    case ErrorCode::Streaming:
+    case ErrorCode::CtrlInBurst: return tlm::TLM_BURST_ERROR_RESPONSE;
+    case ErrorCode::ByteEnable: return tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE;
+    case ErrorCode::ReadOnly:
+    case ErrorCode::WriteOnly: return tlm::TLM_COMMAND_ERROR_RESPONSE;
+    default: return tlm::TLM_GENERIC_ERROR_RESPONSE;
+  }
+}
+
+uint64_t region_base(Region r) {
+  switch (r) {
+    case Region::Class: return rm::kClassBase;
+    case Region::GmLut: return rm::kGmLutBase;
+    case Region::Diffuse: return rm::kDiffuseBase;
+    case Region::Specular: return rm::kSpecularBase;
+    case Region::Base: return rm::kBaseBase;
+    case Region::Volume: return rm::kVolumeBase;
+    default: return 0;
+  }
+}
+
+// The last sample slice's whole-voxel ray offset, in 128 bits because the
+// DDA registers may hold anything and golden::dda_position would overflow.
+__int128 last_offset(int64_t start, int64_t step, int slices, int frac_bits) {
+  const __int128 pos = static_cast<__int128>(start) + static_cast<__int128>(step) * (slices - 1);
+  return pos >> frac_bits;  // floor, as dda_split's arithmetic shift
+}
+
+}  // namespace
+
+HostInterface::HostInterface(sc_core::sc_module_name name, const HostConfig& config, HostBackend& backend)
+    : sc_core::sc_module(name), socket("socket"), config_(config), backend_(backend), regs_(config.hw) {
+  socket.register_b_transport(this, &HostInterface::b_transport);
+  socket.register_transport_dbg(this, &HostInterface::transport_dbg);
+}
+
+void HostInterface::b_transport(tlm::tlm_generic_payload& t, sc_core::sc_time& delay) {
+  Outcome o;
+  try {
+    o = execute(t, false);
+  } catch (const std::exception&) {
+    // A backend that throws mid-transaction must not take the simulation down.
+    o = {tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCode::BackendFailure, t.get_address()};
+  }
+  t.set_response_status(o.status);
+  t.set_dmi_allowed(false);
+  record(o);
+  const bool moved = o.status == tlm::TLM_OK_RESPONSE && t.get_command() != tlm::TLM_IGNORE_COMMAND;
+  const unsigned words = moved ? t.get_data_length() / 4 : 0;
+  delay += config_.bus_period * static_cast<double>(1 + words);
+}
+
+unsigned int HostInterface::transport_dbg(tlm::tlm_generic_payload& t) {
+  try {
+    const Outcome o = execute(t, true);
+    return o.status == tlm::TLM_OK_RESPONSE && t.get_command() != tlm::TLM_IGNORE_COMMAND ? t.get_data_length() : 0;
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+void HostInterface::record(const Outcome& o) {
+  if (o.status == tlm::TLM_OK_RESPONSE) return;
+  error_ = true;
+  last_error_ = o.code;
+  error_addr_ = o.addr;
+}
+
+HostInterface::Outcome HostInterface::check_shape(const tlm::tlm_generic_payload& t, bool debug) const {
+  const uint64_t addr = t.get_address();
+  const unsigned len = t.get_data_length();
+  auto fail = [&](ErrorCode e) { return Outcome{status_of(e), e, addr}; };
+  // Debug transport has no byte enables or streaming (TLM-2.0 LRM 11.3).
+  if (!debug && t.get_byte_enable_ptr() != nullptr) return fail(ErrorCode::ByteEnable);
+  if (len == 0 || len % 4 != 0 || addr % 4 != 0 || t.get_data_ptr() == nullptr)
+    return fail(ErrorCode::Alignment);
+  if (!debug && t.get_streaming_width() < len) return fail(ErrorCode::Streaming);
+  return {};
+}
+
+uint64_t HostInterface::mapped_bytes(Region r) const {
+  const uint64_t n = static_cast<uint64_t>(config_.hw.max_dim);
+  switch (r) {
+    case Region::Registers: return rm::kRegisterSpace;
+    case Region::Base: return 8 * (2 * n) * (2 * n);
+    case Region::Volume: return (2 * n * n * n + 3) / 4 * 4;
+    case Region::None: return 0;
+    default: return regs_.table_bytes(r);
+  }
+}
+
+HostInterface::Outcome HostInterface::execute(tlm::tlm_generic_payload& t, bool debug) {
+  Outcome o = check_shape(t, debug);
+  if (o.status != tlm::TLM_OK_RESPONSE) return o;
+  const uint64_t addr = t.get_address();
+  const unsigned len = t.get_data_length();
+  const Region r = rm::region_of(addr);
+  const uint64_t end = region_base(r) + mapped_bytes(r);
+  if (r == Region::None || addr >= end) return {tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCode::Unmapped, addr};
+  if (end - addr < len) return {tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCode::Unmapped, end};
+  if (t.get_command() == tlm::TLM_IGNORE_COMMAND) {
+    // No access, but the address is checked word by word like any other.
+    for (uint64_t a = addr; r == Region::Registers && a < addr + len; a += 4) {
+      uint32_t v = 0;
+      if (a < rm::kIdMagic ? !read_control(a, v) : regs_.read(a, v) != ErrorCode::None)
+        return {tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCode::Unmapped, a};
+    }
+    return {};
+  }
+
+  const bool write = t.is_write();
+  const unsigned n = len / 4;
+  std::vector<uint32_t> words(n);
+  // The data array holds words in host order (TLM-2.0 host endianness).
+  if (write) std::memcpy(words.data(), t.get_data_ptr(), len);
+  switch (r) {
+    case Region::Registers: o = access_registers(write, addr, words.data(), n, debug); break;
+    case Region::Volume:
+      if (!write) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::WriteOnly, addr};
+      // A debugger must not disturb the voxel memory behind a frame's back.
+      if (debug) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
+      o = write_volume(addr, words.data(), n);
+      break;
+    case Region::Base:
+      if (write) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
+      o = read_base_plane(addr, words.data(), n);
+      break;
+    default: o = access_tables(write, addr, words.data(), n); break;
+  }
+  if (o.status == tlm::TLM_OK_RESPONSE && !write) std::memcpy(t.get_data_ptr(), words.data(), len);
+  return o;
+}
+
+HostInterface::Outcome HostInterface::access_registers(bool write, uint64_t addr, uint32_t* words,
+                                                       unsigned n, bool debug) {
+  // Every word is checked before any is written, so a refused burst changes nothing.
+  for (unsigned i = 0; i < n; ++i) {
+    const uint64_t a = addr + 4 * uint64_t{i};
+    ErrorCode e = ErrorCode::None;
+    if (a < rm::kIdMagic) {
+      uint32_t v = 0;
+      if (!read_control(a, v)) e = ErrorCode::Unmapped;
+      else if (!write) words[i] = v;
+      else if (a != rm::kCtrl || debug) e = ErrorCode::ReadOnly;
+      else if (n > 1) e = ErrorCode::CtrlInBurst;
+    } else {
+      e = write ? regs_.check_write(a, words[i]) : regs_.read(a, words[i]);
+    }
+    if (e != ErrorCode::None) return {status_of(e), e, a};
+  }
+  if (!write) return {};
+  if (addr == rm::kCtrl) return write_ctrl(words[0]);  // alone: checked above
+  for (unsigned i = 0; i < n; ++i) regs_.write(addr + 4 * uint64_t{i}, words[i]);
+  return {};
+}
+
+HostInterface::Outcome HostInterface::access_tables(bool write, uint64_t addr, uint32_t* words, unsigned n) {
+  for (unsigned i = 0; i < n; ++i) {
+    const uint64_t a = addr + 4 * uint64_t{i};
+    const ErrorCode e = write ? regs_.check_write(a, words[i]) : regs_.read(a, words[i]);
+    if (e != ErrorCode::None) return {status_of(e), e, a};
+  }
+  if (write)
+    for (unsigned i = 0; i < n; ++i) regs_.write(addr + 4 * uint64_t{i}, words[i]);
+  return {};
+}
+
+bool HostInterface::read_control(uint64_t a, uint32_t& v) const {
+  auto lo = [](uint64_t x) { return static_cast<uint32_t>(x); };
+  auto hi = [](uint64_t x) { return static_cast<uint32_t>(x >> 32); };
+  switch (a) {
+    case rm::kCtrl: v = 0; return true;
+    case rm::kStatus: {
+      const bool busy = backend_.busy();
+      const bool done = started_ && !busy && backend_.frames_done() >= done_target_;
+      v = (busy ? rm::kStatusBusy : 0) | (done ? rm::kStatusDone : 0) | (error_ ? rm::kStatusError : 0);
+      return true;
+    }
+    case rm::kLastError: v = static_cast<uint32_t>(last_error_); return true;
+    case rm::kErrorAddrLo: v = lo(error_addr_); return true;
+    case rm::kErrorAddrHi: v = hi(error_addr_); return true;
+    case rm::kFrameCountLo: v = lo(backend_.frames_done()); return true;
+    case rm::kFrameCountHi: v = hi(backend_.frames_done()); return true;
+    case rm::kCyclesLo: v = lo(backend_.last_frame_cycles()); return true;
+    case rm::kCyclesHi: v = hi(backend_.last_frame_cycles()); return true;
+    case rm::kBaseWidth: v = static_cast<uint32_t>(backend_.base_width()); return true;
+    case rm::kBaseHeight: v = static_cast<uint32_t>(backend_.base_height()); return true;
+    default: return false;
+  }
+}
+
+HostInterface::Outcome HostInterface::write_ctrl(uint32_t v) {
+  if (v & ~rm::kCtrlMask) return {tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCode::FieldRange, rm::kCtrl};
+  if (v & (rm::kCtrlReset | rm::kCtrlClearError)) {
+    error_ = false;
+    last_error_ = ErrorCode::None;
+    error_addr_ = 0;
+  }
+  if (v & rm::kCtrlReset) {
+    regs_.reset();
+    told_dims_ = {0, 0, 0};  // the system model hears the volume's dims again
+    started_ = false;        // DONE waits for the next frame
+  }
+  if (v & rm::kCtrlStart) return start_frame();
+  return {};
+}
+
+ErrorCode HostInterface::commit_volume_dims() {
+  const std::array<int, 3> d = regs_.volume_dims();
+  if (d[0] == 0 || d[1] == 0 || d[2] == 0) return ErrorCode::VolumeDimsUnset;
+  if (d != told_dims_) {
+    backend_.set_volume_dims(d[0], d[1], d[2]);
+    told_dims_ = d;
+  }
+  return ErrorCode::None;
+}
+
+HostInterface::Outcome HostInterface::start_frame() {
+  auto fail = [](ErrorCode e) { return Outcome{status_of(e), e, rm::kCtrl}; };
+  if (backend_.busy()) return fail(ErrorCode::Busy);
+  const std::array<int, 3> vol = regs_.volume_dims();
+  if (vol[0] == 0 || vol[1] == 0 || vol[2] == 0) return fail(ErrorCode::VolumeDimsUnset);
+  const golden::Registers r = regs_.decoded();
+  for (int i = 0; i < 3; ++i)
+    if (r.dim[i] != vol[r.perm[i]]) return fail(ErrorCode::ViewMismatch);
+  // The pixel memory holds BASE_MAX x BASE_MAX pixels.
+  const int f = r.p.dda_frac_bits;
+  const __int128 w = r.dim[0] + last_offset(r.x_start, r.x_step, r.sample_slices(), f);
+  const __int128 h = r.dim[1] + last_offset(r.y_start, r.y_step, r.sample_slices(), f);
+  const int base_max = 2 * config_.hw.max_dim;
+  if (w < 1 || w > base_max || h < 1 || h > base_max) return fail(ErrorCode::BasePlaneTooLarge);
+  if (r.cut_enabled && r.cut.falloff < 0) return fail(ErrorCode::CutFalloffNegative);
+
+  const uint64_t before = backend_.frames_done();
+  try {
+    if (commit_volume_dims() != ErrorCode::None) return fail(ErrorCode::VolumeDimsUnset);
+    backend_.start_frame(r);
+  } catch (const std::exception&) {
+    return fail(ErrorCode::BackendFailure);
+  }
+  started_ = true;
+  done_target_ = before + 1;
+  return {};
+}
+
+HostInterface::Outcome HostInterface::write_volume(uint64_t addr, const uint32_t* words, unsigned n) {
+  auto fail = [](ErrorCode e, uint64_t a) { return Outcome{status_of(e), e, a}; };
+  if (backend_.busy()) return fail(ErrorCode::Busy, addr);
+  const std::array<int, 3> d = regs_.volume_dims();
+  if (d[0] == 0 || d[1] == 0 || d[2] == 0) return fail(ErrorCode::VolumeDimsUnset, addr);
+  const uint64_t voxels = uint64_t(d[0]) * d[1] * d[2];
+  const uint32_t max = (uint32_t{1} << config_.hw.precision.voxel_bits) - 1;
+  const uint64_t first = (addr - rm::kVolumeBase) / 2;
+  for (unsigned i = 0; i < n; ++i) {
+    const uint64_t v = first + 2 * uint64_t{i};
+    const uint64_t a = addr + 4 * uint64_t{i};
+    if (v >= voxels) return fail(ErrorCode::VoxelOutOfVolume, a);
+    // A high half past the last voxel is padding of an odd-sized volume: ignored.
+    if ((words[i] & 0xFFFF) > max || (v + 1 < voxels && (words[i] >> 16) > max))
+      return fail(ErrorCode::FieldRange, a);
+  }
+  commit_volume_dims();
+  for (unsigned i = 0; i < n; ++i) {
+    for (uint64_t k = 0; k < 2; ++k) {
+      const uint64_t v = first + 2 * uint64_t{i} + k;
+      if (v >= voxels) break;
+      const int x = static_cast<int>(v % d[0]);
+      const int y = static_cast<int>(v / d[0] % d[1]);
+      const int z = static_cast<int>(v / d[0] / d[1]);
+      backend_.write_voxel(x, y, z, static_cast<uint16_t>(words[i] >> (16 * k)));
+    }
+  }
+  return {};
+}
+
+HostInterface::Outcome HostInterface::read_base_plane(uint64_t addr, uint32_t* words, unsigned n) const {
+  auto fail = [](ErrorCode e, uint64_t a) { return Outcome{status_of(e), e, a}; };
+  // The pipelines are writing the pixel memory.
+  if (backend_.busy()) return fail(ErrorCode::Busy, addr);
+  const int w = backend_.base_width(), h = backend_.base_height();
+  const uint64_t pixels = w > 0 && h > 0 ? uint64_t(w) * h : 0;
+  for (unsigned i = 0; i < n; ++i) {
+    const uint64_t a = addr + 4 * uint64_t{i};
+    const uint64_t p = (a - rm::kBaseBase) / 8;
+    if (p >= pixels) return fail(ErrorCode::PixelOutOfImage, a);
+    const std::array<uint16_t, 4> px = backend_.read_pixel(static_cast<int>(p % w), static_cast<int>(p / w));
+    words[i] = (a & 4) ? (px[2] | uint32_t{px[3]} << 16) : (px[0] | uint32_t{px[1]} << 16);
+  }
+  return {};
+}
+
+}  // namespace cube4::sysc

@@ -1,0 +1,274 @@
+#include "systemc/host/host_program.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "systemc/host/register_map.hpp"
+
+namespace cube4::sysc {
+namespace rm = regmap;
+
+namespace {
+
+std::string hex(uint64_t v) {
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "0x%llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+std::string response_name(tlm::tlm_response_status s) {
+  tlm::tlm_generic_payload p;
+  p.set_response_status(s);
+  return p.get_response_string();
+}
+
+// One transaction, no error handling: the caller decides.
+tlm::tlm_response_status transact(TlmTarget& target, tlm::tlm_command cmd, uint64_t addr, uint32_t* words,
+                                  size_t n, sc_core::sc_time& delay) {
+  tlm::tlm_generic_payload t;
+  const auto len = static_cast<unsigned>(4 * n);
+  t.set_command(cmd);
+  t.set_address(addr);
+  t.set_data_ptr(reinterpret_cast<unsigned char*>(words));
+  t.set_data_length(len);
+  t.set_streaming_width(len);
+  t.set_byte_enable_ptr(nullptr);
+  t.set_dmi_allowed(false);
+  t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  target.b_transport(t, delay);
+  return t.get_response_status();
+}
+
+// Names the word at fault from the interface's own error registers.
+[[noreturn]] void refused(TlmTarget& target, tlm::tlm_command cmd, uint64_t addr, const uint32_t* words,
+                          size_t n, tlm::tlm_response_status status, sc_core::sc_time& delay) {
+  uint32_t code = 0, at_words[2] = {0, 0};
+  std::string reason;
+  uint64_t at = addr;
+  if (transact(target, tlm::TLM_READ_COMMAND, rm::kLastError, &code, 1, delay) == tlm::TLM_OK_RESPONSE &&
+      transact(target, tlm::TLM_READ_COMMAND, rm::kErrorAddrLo, at_words, 2, delay) == tlm::TLM_OK_RESPONSE) {
+    reason = " (LAST_ERROR " + std::to_string(code) + ": " + rm::error_name(static_cast<rm::ErrorCode>(code)) + ")";
+    at = at_words[0] | uint64_t{at_words[1]} << 32;
+  }
+  std::string what = (cmd == tlm::TLM_WRITE_COMMAND ? "write of " : "read of ") + rm::describe_address(at);
+  if (cmd == tlm::TLM_WRITE_COMMAND && at >= addr && at < addr + 4 * n)
+    what += " = " + hex(words[(at - addr) / 4]);
+  throw HostError("host interface: " + what + " refused: " + response_name(status) + reason);
+}
+
+void burst(TlmTarget& target, tlm::tlm_command cmd, uint64_t addr, uint32_t* words, size_t n,
+           sc_core::sc_time& delay) {
+  for (size_t i = 0; i < n; i += kBurstWords) {
+    const size_t m = std::min(kBurstWords, n - i);
+    const uint64_t a = addr + 4 * i;
+    const tlm::tlm_response_status s = transact(target, cmd, a, words + i, m, delay);
+    if (s != tlm::TLM_OK_RESPONSE) refused(target, cmd, a, words + i, m, s, delay);
+  }
+}
+
+uint32_t lo(int64_t v) { return static_cast<uint32_t>(static_cast<uint64_t>(v)); }
+uint32_t hi(int64_t v) { return static_cast<uint32_t>(static_cast<uint64_t>(v) >> 32); }
+uint32_t u(int32_t v) { return static_cast<uint32_t>(v); }
+
+void check(bool ok, const std::string& what) {
+  if (!ok) throw HostError("host program: " + what);
+}
+
+void check_table(size_t size, size_t expected, bool used, const char* field) {
+  check(size == expected || (!used && size == 0),
+        std::string("regs.") + field + " has " + std::to_string(size) + " entries, the hardware's table " +
+            std::to_string(expected) + (used ? "" : " (or 0: the mode bits leave it unused)"));
+}
+
+size_t map_entries(const golden::Precision& p) { return size_t{6} * p.map_face_res * p.map_face_res; }
+
+// The host's own encoding, written apart from the register file's decoder so
+// that the round-trip tests check one against the other.
+uint32_t mode_word(const golden::Registers& r) {
+  uint32_t m = static_cast<uint32_t>(r.blend) << rm::kModeBlendShift;
+  if (r.gradient) m |= rm::kModeGradient;
+  if (r.magnitude) m |= rm::kModeMagnitude;
+  if (r.shading) m |= rm::kModeShading;
+  if (r.specular) m |= rm::kModeSpecular;
+  if (r.gm_opacity) m |= rm::kModeGmOpacity;
+  if (r.gm_diffuse) m |= rm::kModeGmDiffuse;
+  if (r.gm_specular) m |= rm::kModeGmSpecular;
+  if (r.crop_enabled) m |= rm::kModeCrop;
+  if (r.cut_enabled) m |= rm::kModeCut;
+  return m;
+}
+
+}  // namespace
+
+void write_words(TlmTarget& target, uint64_t addr, const uint32_t* words, size_t n, sc_core::sc_time& delay) {
+  // The payload's data pointer is not const; a write does not change it.
+  burst(target, tlm::TLM_WRITE_COMMAND, addr, const_cast<uint32_t*>(words), n, delay);
+}
+
+void read_words(TlmTarget& target, uint64_t addr, uint32_t* words, size_t n, sc_core::sc_time& delay) {
+  burst(target, tlm::TLM_READ_COMMAND, addr, words, n, delay);
+}
+
+void write_word(TlmTarget& target, uint64_t addr, uint32_t value, sc_core::sc_time& delay) {
+  write_words(target, addr, &value, 1, delay);
+}
+
+uint32_t read_word(TlmTarget& target, uint64_t addr, sc_core::sc_time& delay) {
+  uint32_t v = 0;
+  read_words(target, addr, &v, 1, delay);
+  return v;
+}
+
+HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay) {
+  uint32_t id[9];
+  read_words(target, rm::kIdMagic, id, 9, delay);
+  check(id[0] == rm::kMagic, "ID_MAGIC = " + hex(id[0]) + ", expected " + hex(rm::kMagic));
+  check(id[1] >> 16 == rm::kVersion >> 16,
+        "ID_VERSION = " + hex(id[1]) + ", this driver knows major version " + std::to_string(rm::kVersion >> 16));
+  uint32_t p[rm::kPrecisionFields];
+  read_words(target, rm::kPrecision, p, rm::kPrecisionFields, delay);
+  HardwareId h;
+  golden::Precision& q = h.precision;
+  int* fields[rm::kPrecisionFields] = {
+      &q.voxel_bits, &q.weight_bits, &q.dda_frac_bits, &q.gradient_bits, &q.gradient_shift,
+      &q.magnitude_bits, &q.nr_iterations, &q.color_bits, &q.alpha_bits, &q.gmlut_bits,
+      &q.map_face_res, &q.map_bits, &q.map_frac_bits, &q.coef_bits, &q.coef_frac_bits,
+      &q.eye_bits, &q.cut_bits};
+  for (int i = 0; i < rm::kPrecisionFields; ++i) *fields[i] = static_cast<int>(p[i]);
+  h.pipelines = static_cast<int>(id[2]);
+  h.max_dim = static_cast<int>(id[3]);
+  h.base_max = static_cast<int>(id[8]);
+  return h;
+}
+
+void load_volume_over_tlm(TlmTarget& target, const golden::Volume& vol, sc_core::sc_time& delay) {
+  check(vol.data.size() == vol.size(), "the volume holds " + std::to_string(vol.data.size()) +
+                                           " voxels, its dimensions say " + std::to_string(vol.size()));
+  const uint32_t dims[3] = {u(vol.dim[0]), u(vol.dim[1]), u(vol.dim[2])};
+  write_words(target, rm::kVolDim, dims, 3, delay);
+  // Two voxels per word, x fastest: the volume's own order, so a plain pack.
+  std::vector<uint32_t> words((vol.data.size() + 1) / 2, 0);
+  for (size_t i = 0; i < vol.data.size(); ++i) words[i / 2] |= uint32_t{vol.data[i]} << (16 * (i % 2));
+  write_words(target, rm::kVolumeBase, words.data(), words.size(), delay);
+}
+
+void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay) {
+  std::vector<uint32_t> w(2 * regs.classification.size());
+  for (size_t i = 0; i < regs.classification.size(); ++i) {
+    const golden::ClassEntry& e = regs.classification[i];
+    w[2 * i] = uint32_t{e.r} | uint32_t{e.g} << 8 | uint32_t{e.b} << 16;
+    w[2 * i + 1] = e.a;
+  }
+  write_words(target, rm::kClassBase, w.data(), w.size(), delay);
+  const std::vector<uint32_t> gm(regs.gm_lut.begin(), regs.gm_lut.end());
+  write_words(target, rm::kGmLutBase, gm.data(), gm.size(), delay);
+  write_words(target, rm::kDiffuseBase, regs.diffuse_map.data(), regs.diffuse_map.size(), delay);
+  write_words(target, rm::kSpecularBase, regs.specular_map.data(), regs.specular_map.size(), delay);
+}
+
+std::vector<RegisterBlock> register_blocks(const golden::Registers& r) {
+  const uint64_t inv = r.cut.inv_falloff;
+  return {
+      {rm::kDimX,
+       {u(r.dim[0]), u(r.dim[1]), u(r.dim[2]), u(r.perm[0] | r.perm[1] << 2 | r.perm[2] << 4),
+        u(int{r.flip[0]} | int{r.flip[1]} << 1 | int{r.flip[2]} << 2), u(r.supersampling),
+        lo(r.x_start), hi(r.x_start), lo(r.x_step), hi(r.x_step),
+        lo(r.y_start), hi(r.y_start), lo(r.y_step), hi(r.y_step)}},
+      {rm::kMode, {mode_word(r)}},
+      {rm::kCropSlab,
+       {u(r.crop.slab[0][0]), u(r.crop.slab[0][1]), u(r.crop.slab[1][0]), u(r.crop.slab[1][1]),
+        u(r.crop.slab[2][0]), u(r.crop.slab[2][1]), r.crop.mask}},
+      {rm::kCutA,
+       {u(r.cut.a), u(r.cut.b), u(r.cut.c), r.cut.keep_inside ? rm::kCutKeepInside : 0,
+        lo(r.cut.dmin), hi(r.cut.dmin), lo(r.cut.dmax), hi(r.cut.dmax), lo(r.cut.falloff), hi(r.cut.falloff),
+        static_cast<uint32_t>(inv), static_cast<uint32_t>(inv >> 32)}},
+      {rm::kKe,
+       {r.coefs.ke, r.coefs.kd, r.coefs.ks, r.coefs.specular[0], r.coefs.specular[1], r.coefs.specular[2],
+        u(r.eye[0]), u(r.eye[1]), u(r.eye[2])}},
+  };
+}
+
+void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay) {
+  for (const RegisterBlock& b : register_blocks(regs)) write_words(target, b.addr, b.words.data(), b.words.size(), delay);
+}
+
+void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const golden::Volume& vol,
+                      sc_core::sc_time& delay) {
+  const HardwareId hw = read_hardware_id(target, delay);
+  const golden::Precision& a = regs.p;
+  const golden::Precision& b = hw.precision;
+  const std::pair<const char*, std::pair<int, int>> widths[] = {
+      {"voxel_bits", {a.voxel_bits, b.voxel_bits}}, {"weight_bits", {a.weight_bits, b.weight_bits}},
+      {"dda_frac_bits", {a.dda_frac_bits, b.dda_frac_bits}},
+      {"gradient_bits", {a.gradient_bits, b.gradient_bits}},
+      {"gradient_shift", {a.gradient_shift, b.gradient_shift}},
+      {"magnitude_bits", {a.magnitude_bits, b.magnitude_bits}},
+      {"nr_iterations", {a.nr_iterations, b.nr_iterations}}, {"color_bits", {a.color_bits, b.color_bits}},
+      {"alpha_bits", {a.alpha_bits, b.alpha_bits}}, {"gmlut_bits", {a.gmlut_bits, b.gmlut_bits}},
+      {"map_face_res", {a.map_face_res, b.map_face_res}}, {"map_bits", {a.map_bits, b.map_bits}},
+      {"map_frac_bits", {a.map_frac_bits, b.map_frac_bits}}, {"coef_bits", {a.coef_bits, b.coef_bits}},
+      {"coef_frac_bits", {a.coef_frac_bits, b.coef_frac_bits}}, {"eye_bits", {a.eye_bits, b.eye_bits}},
+      {"cut_bits", {a.cut_bits, b.cut_bits}}};
+  for (const auto& [name, v] : widths)
+    check(v.first == v.second, std::string("regs.p.") + name + " = " + std::to_string(v.first) +
+                                   ", the hardware's is " + std::to_string(v.second));
+  for (int i = 0; i < 3; ++i) {
+    check(vol.dim[i] >= 1 && vol.dim[i] <= hw.max_dim,
+          "volume dim[" + std::to_string(i) + "] = " + std::to_string(vol.dim[i]) + " is out of range 1.." +
+              std::to_string(hw.max_dim));
+    const int axis = regs.perm[i];
+    check(axis >= 0 && axis < 3, "regs.perm[" + std::to_string(i) + "] = " + std::to_string(axis) +
+                                     " is not an axis");
+    check(regs.dim[i] == vol.dim[axis], "regs.dim[" + std::to_string(i) + "] = " + std::to_string(regs.dim[i]) +
+                                            ", the volume's dim[perm[" + std::to_string(i) + "] = " +
+                                            std::to_string(axis) + "] = " + std::to_string(vol.dim[axis]));
+  }
+  check_table(regs.classification.size(), size_t{1} << a.voxel_bits, true, "classification");
+  check_table(regs.gm_lut.size(), size_t{1} << a.magnitude_bits, regs.magnitude, "gm_lut");
+  check_table(regs.diffuse_map.size(), map_entries(a), regs.shading, "diffuse_map");
+  check_table(regs.specular_map.size(), map_entries(a), regs.specular, "specular_map");
+
+  load_volume_over_tlm(target, vol, delay);
+  write_tables_over_tlm(target, regs, delay);
+  write_view_over_tlm(target, regs, delay);
+}
+
+void start_frame_over_tlm(TlmTarget& target, sc_core::sc_time& delay) {
+  write_word(target, rm::kCtrl, rm::kCtrlStart, delay);
+}
+
+uint32_t read_status_over_tlm(TlmTarget& target, sc_core::sc_time& delay) {
+  return read_word(target, rm::kStatus, delay);
+}
+
+golden::BasePlane read_base_plane_over_tlm(TlmTarget& target, const golden::Registers& regs,
+                                           sc_core::sc_time& delay) {
+  uint32_t size[2];
+  read_words(target, rm::kBaseWidth, size, 2, delay);
+  golden::BasePlane bp;
+  bp.width = static_cast<int>(size[0]);
+  bp.height = static_cast<int>(size[1]);
+  check(bp.width == regs.base_width() && bp.height == regs.base_height(),
+        "BASE_WIDTH x BASE_HEIGHT = " + std::to_string(bp.width) + " x " + std::to_string(bp.height) +
+            ", the registers' base plane is " + std::to_string(regs.base_width()) + " x " +
+            std::to_string(regs.base_height()));
+  const size_t pixels = static_cast<size_t>(bp.width) * bp.height;
+  std::vector<uint32_t> words(2 * pixels);
+  read_words(target, rm::kBaseBase, words.data(), words.size(), delay);
+  bp.rgba.resize(4 * pixels);
+  for (size_t i = 0; i < words.size(); ++i) {
+    bp.rgba[2 * i] = static_cast<uint16_t>(words[i]);
+    bp.rgba[2 * i + 1] = static_cast<uint16_t>(words[i] >> 16);
+  }
+  // As golden::render_fixed: where ray (0, 0) enters, for the warp.
+  bp.bits = regs.p.alpha_bits;
+  const int k_last = regs.sample_slices() - 1;
+  const double frac_one = static_cast<double>(int64_t{1} << regs.p.dda_frac_bits);
+  bp.shift_x = regs.x_offset(k_last).integer - regs.x_start / frac_one;
+  bp.shift_y = regs.y_offset(k_last).integer - regs.y_start / frac_one;
+  return bp;
+}
+
+}  // namespace cube4::sysc

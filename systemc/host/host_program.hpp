@@ -1,0 +1,79 @@
+// The host side of the host interface: programs a frame and reads the base
+// plane back through blocking TLM transactions (docs/registers.md,
+// "Programming one frame").
+//
+// Plain C++ functions. They call b_transport and never wait(), so they run
+// from sc_main (with HostInterface::target(); no simulation need run) or
+// from an SC_THREAD through a bound initiator socket (`*socket[0]`);
+// in a thread, wait(delay) afterwards (or let a quantum keeper) to consume
+// the bus time they annotate. (A target that waits would need an
+// SC_THREAD caller; HostInterface never waits.)
+//
+// Every refused transaction, and every register set the hardware cannot
+// take, is a HostError naming the register, the value and the reason.
+#pragma once
+#include <tlm>
+
+#include <cstdint>
+#include <stdexcept>
+#include <systemc>
+#include <vector>
+
+#include "golden/registers.hpp"
+#include "golden/renderers.hpp"
+#include "golden/volume.hpp"
+
+namespace cube4::sysc {
+
+struct HostError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+using TlmTarget = tlm::tlm_fw_transport_if<>;
+
+// Bursts are cut into transactions of at most this many words (one 4 KiB
+// page, what a DMA engine moves at once).
+constexpr size_t kBurstWords = 1024;
+
+void write_words(TlmTarget& target, uint64_t addr, const uint32_t* words, size_t n, sc_core::sc_time& delay);
+void read_words(TlmTarget& target, uint64_t addr, uint32_t* words, size_t n, sc_core::sc_time& delay);
+void write_word(TlmTarget& target, uint64_t addr, uint32_t value, sc_core::sc_time& delay);
+uint32_t read_word(TlmTarget& target, uint64_t addr, sc_core::sc_time& delay);
+
+// What the identification and precision registers report.
+struct HardwareId {
+  golden::Precision precision;
+  int pipelines = 0;
+  int max_dim = 0;
+  int base_max = 0;
+};
+HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay);
+
+// The register words of regs, block by block (view and DDA, mode, cropping,
+// cut plane, shading): what write_view_over_tlm writes, one burst each.
+struct RegisterBlock {
+  uint64_t addr;
+  std::vector<uint32_t> words;
+};
+std::vector<RegisterBlock> register_blocks(const golden::Registers& regs);
+
+// The pieces of program_over_tlm, in its order.
+void load_volume_over_tlm(TlmTarget& target, const golden::Volume& vol, sc_core::sc_time& delay);
+void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay);
+void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay);
+
+// Checks regs against the hardware (precision, table sizes) and the volume
+// (regs.dim[i] == vol.dim[regs.perm[i]]), then writes the volume, every
+// table the mode bits use, and every register. Does not start the frame.
+void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const golden::Volume& vol,
+                      sc_core::sc_time& delay);
+
+void start_frame_over_tlm(TlmTarget& target, sc_core::sc_time& delay);
+uint32_t read_status_over_tlm(TlmTarget& target, sc_core::sc_time& delay);
+
+// The last frame's base plane, as golden::render_fixed returns it for regs
+// (shifts and channel width from regs; its size must be regs' base plane).
+golden::BasePlane read_base_plane_over_tlm(TlmTarget& target, const golden::Registers& regs,
+                                           sc_core::sc_time& delay);
+
+}  // namespace cube4::sysc

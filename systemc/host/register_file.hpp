@@ -1,0 +1,62 @@
+// The host interface's programmable state: identification, precision,
+// view, mode, cropping, cut plane, shading, volume dimensions and the table
+// windows, decoded word by word (docs/registers.md). No SystemC and no
+// backend here: control, status, the volume and the base plane are the
+// HostInterface's, because they act on the system model.
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include "golden/registers.hpp"
+#include "systemc/host/register_map.hpp"
+
+namespace cube4::sysc {
+
+// The hardware's fixed parameters: what the identification and precision
+// registers report and what bounds the writable fields.
+struct HardwareParams {
+  golden::Precision precision;
+  int pipelines = 4;
+  int max_dim = 256;
+};
+
+// Throws std::invalid_argument naming the parameter when the map cannot hold it.
+void check_hardware_params(const HardwareParams& hw);
+
+class RegisterFile {
+ public:
+  explicit RegisterFile(const HardwareParams& hw);
+
+  // Every writable register and table entry to its reset value.
+  void reset();
+
+  // Word accesses at 4-byte aligned addresses in register space (outside the
+  // control block) and in the table windows. check_write says why a write
+  // would be refused (None: it would be taken); write() assumes None.
+  regmap::ErrorCode check_write(uint64_t addr, uint32_t value) const;
+  void write(uint64_t addr, uint32_t value);
+  regmap::ErrorCode read(uint64_t addr, uint32_t& value) const;
+
+  // Bytes of a window the hardware holds (the rest of the window is unmapped).
+  uint64_t table_bytes(regmap::Region r) const;
+
+  // What the register file holds. A table is included only when the mode
+  // bits say the pipeline uses it (classification: always), as program_host
+  // leaves unused tables empty.
+  golden::Registers decoded() const;
+  std::array<int, 3> volume_dims() const { return vol_dim_; }
+  const HardwareParams& hardware() const { return hw_; }
+
+ private:
+  regmap::ErrorCode check_register(uint64_t addr, uint32_t value) const;
+  regmap::ErrorCode check_table(regmap::Region r, uint64_t addr, uint32_t value) const;
+  void write_register(uint64_t addr, uint32_t value);
+  bool read_register(uint64_t addr, uint32_t& value) const;
+  uint32_t mode_word() const;
+
+  HardwareParams hw_;
+  golden::Registers regs_;             // tables always at full size
+  std::array<int, 3> vol_dim_{0, 0, 0};
+};
+
+}  // namespace cube4::sysc
