@@ -39,6 +39,7 @@ struct RenderArgs {
   bool quiet = false;
   int pipes = 0;           // 0: the scene's
   int check = -1;          // -1: on for models with RTL units
+  bool simulate_all = false;
   std::string trace;       // FST file (RTL units)
   std::vector<uint64_t> trace_window;  // first, last cycle
 };
@@ -130,6 +131,7 @@ int run_render(const RenderArgs& a) {
     cfg.p = a.pipes > 0 ? a.pipes : l.scene.pipelines;
     cfg.levels = parse_levels(a.model);
     cfg.check = a.check < 0 ? !cfg.all_tlm() : a.check == 1;
+    cfg.simulate_unneeded = a.simulate_all;
     if (!a.trace.empty()) {
       if (cfg.all_tlm()) throw InputError("--trace: the tlm model has no RTL unit to trace");
       cfg.trace.file = a.trace;
@@ -269,6 +271,8 @@ int main(int argc, char** argv) {
                             "system model: compare the base plane and every unit's stream with golden, bit-exact "
                             "(default: on when a unit runs at RTL; exit 3 on a mismatch)");
   render->add_flag_callback("--no-check", [&ra] { ra.check = 0; }, "system model: no comparison with golden");
+  render->add_flag("--simulate-all", ra.simulate_all,
+                   "system model: simulate the gradient unit even if the scene needs none (to measure the saving)");
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
   render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
   std::string info_scene;

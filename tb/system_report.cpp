@@ -17,6 +17,7 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
       {"pipelines", cfg.p},
       {"units", units},
       {"skipped", r.skipped},
+      {"unused_rtl_logic", r.unused},
       {"cycles_per_frame", r.frame_cycles},
       {"cycles_steady_state_interval", r.stream_cycles},
       {"fps_first_frame", hz / static_cast<double>(r.frame_cycles)},

@@ -37,7 +37,8 @@ std::string Mismatch::describe() const {
 
 namespace {
 
-// The units of one frame (plain objects: a frame creates them afresh).
+// The units of one frame (plain objects: a frame creates them afresh) and
+// the frame's progress through them.
 struct FrameUnits {
   std::unique_ptr<StreamFormer> former;
   std::unique_ptr<InterpIf> interp;
@@ -47,7 +48,51 @@ struct FrameUnits {
   StreamChecker* checker = nullptr;
   golden::Progress progress;
   uint64_t total_beats = 1;
+  uint64_t cycle = 0, done_cycle = 0;
+  uint64_t last_valid[4] = {0, 0, 0, 0};  // last cycle each link carried a beat
+  bool done = false;
 };
+
+// One clock edge of each unit: it sees its input link's value of this cycle
+// and returns its output (the next link's value in the next cycle). Both
+// schedules below call these, so they simulate the same machine.
+VoxelBeat former_edge(FrameUnits& u) {
+  ++u.cycle;
+  const VoxelBeat b = u.former->next();
+  if (b.valid) u.last_valid[0] = u.cycle;
+  if (u.progress && (u.cycle & 0xffff) == 0)
+    u.progress(std::min(1.0, static_cast<double>(u.cycle) / static_cast<double>(u.total_beats)));
+  return b;
+}
+SampleBeat interp_edge(FrameUnits& u, const VoxelBeat& in) {
+  SampleBeat out;
+  u.interp->clock(in, out);
+  if (u.checker) u.checker->samples(out);
+  if (out.valid) u.last_valid[1] = u.cycle;
+  return out;
+}
+GradientBeat gradient_edge(FrameUnits& u, const SampleBeat& in) {
+  GradientBeat out;
+  u.gradient->clock(in, out);
+  if (u.checker) u.checker->gradients(out);
+  if (out.valid) u.last_valid[2] = u.cycle;
+  return out;
+}
+ShadedBeat shade_edge(FrameUnits& u, const GradientBeat& in) {
+  ShadedBeat out;
+  u.shade->clock(in, out);
+  if (u.checker) u.checker->shaded(out);
+  if (out.valid) u.last_valid[3] = u.cycle;
+  return out;
+}
+void composite_edge(FrameUnits& u, const ShadedBeat& in) {
+  CompositeOut out;
+  u.composite->clock(in, out);
+  if (out.frame_done) {
+    u.done = true;
+    u.done_cycle = u.cycle;
+  }
+}
 
 // The clocked top: one process per unit, registered links between them.
 // SystemC elaborates once per process, so the top is built on the first
@@ -60,9 +105,6 @@ SC_MODULE(CycleTop) {
   Link<ShadedBeat> shaded{"shaded"};
 
   FrameUnits* u = nullptr;
-  uint64_t cycle = 0, done_cycle = 0;
-  uint64_t last_valid[4] = {0, 0, 0, 0};  // last cycle each link carried a beat
-  bool done = false;
   std::exception_ptr error;
 
   SC_CTOR(CycleTop) {
@@ -85,9 +127,6 @@ SC_MODULE(CycleTop) {
 
   void start(FrameUnits& units) {
     u = &units;
-    cycle = done_cycle = 0;
-    for (uint64_t& c : last_valid) c = 0;
-    done = false;
     error = nullptr;
     voxels.reset();
     samples.reset();
@@ -97,7 +136,7 @@ SC_MODULE(CycleTop) {
 
   template <class F>
   void guarded(F&& f) {
-    if (done || error) return;
+    if (u->done || error) return;
     try {
       f();
     } catch (...) {
@@ -106,55 +145,36 @@ SC_MODULE(CycleTop) {
     }
   }
 
-  void former_step() {
-    guarded([&] {
-      ++cycle;
-      const VoxelBeat b = u->former->next();
-      if (b.valid) last_valid[0] = cycle;
-      voxels.write(b);
-      if (u->progress && (cycle & 0xffff) == 0)
-        u->progress(std::min(1.0, static_cast<double>(cycle) / static_cast<double>(u->total_beats)));
-    });
-  }
-  void interp_step() {
-    guarded([&] {
-      SampleBeat out;
-      u->interp->clock(voxels.read(), out);
-      if (u->checker) u->checker->samples(out);
-      if (out.valid) last_valid[1] = cycle;
-      samples.write(out);
-    });
-  }
-  void gradient_step() {
-    guarded([&] {
-      GradientBeat out;
-      u->gradient->clock(samples.read(), out);
-      if (u->checker) u->checker->gradients(out);
-      if (out.valid) last_valid[2] = cycle;
-      gradients.write(out);
-    });
-  }
-  void shade_step() {
-    guarded([&] {
-      ShadedBeat out;
-      u->shade->clock(gradients.read(), out);
-      if (u->checker) u->checker->shaded(out);
-      if (out.valid) last_valid[3] = cycle;
-      shaded.write(out);
-    });
-  }
+  void former_step() { guarded([&] { voxels.write(former_edge(*u)); }); }
+  void interp_step() { guarded([&] { samples.write(interp_edge(*u, voxels.read())); }); }
+  void gradient_step() { guarded([&] { gradients.write(gradient_edge(*u, samples.read())); }); }
+  void shade_step() { guarded([&] { shaded.write(shade_edge(*u, gradients.read())); }); }
   void composite_step() {
     guarded([&] {
-      CompositeOut out;
-      u->composite->clock(shaded.read(), out);
-      if (out.frame_done) {
-        done = true;
-        done_cycle = cycle;
-        sc_core::sc_pause();
-      }
+      composite_edge(*u, shaded.read());
+      if (u->done) sc_core::sc_pause();
     });
   }
 };
+
+// The same machine without the SystemC kernel: the links are plain
+// registers, and each edge runs the units from the last to the first, so
+// every unit reads its link before its producer overwrites it. The ceiling
+// for the system's speed at a given level mix (docs/performance.md).
+void run_plain(FrameUnits& u) {
+  VoxelBeat voxels;
+  SampleBeat samples;
+  GradientBeat gradients;
+  ShadedBeat shaded;
+  while (!u.done) {
+    composite_edge(u, shaded);
+    if (u.done) break;
+    shaded = shade_edge(u, gradients);
+    gradients = gradient_edge(u, samples);
+    samples = interp_edge(u, voxels);
+    voxels = former_edge(u);
+  }
+}
 
 CycleTop& cycle_top() {
   static CycleTop* top = new CycleTop("cube4");  // lives as long as the SystemC kernel
@@ -182,65 +202,92 @@ void check_rtl_precision(const golden::Registers& r) {
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress) {
   const auto t0 = std::chrono::steady_clock::now();
-  const FramePlan plan(r, cfg.p);
+  // A scene without gradients does not run the gradient unit (and its
+  // frame has no zero pass), unless asked to simulate it anyway (to measure
+  // what skipping saves): its gradients are then computed and not used.
+  golden::Registers forced;
+  const golden::Registers* rs = &r;
+  if (cfg.simulate_unneeded && !r.gradient) {
+    forced = r;
+    forced.gradient = true;
+    rs = &forced;
+  }
+  const FramePlan plan(*rs, cfg.p);
   SystemResult res;
   res.levels = cfg.levels;
-  res.simulated = {true, r.gradient, true, true};
-  if (!r.gradient) res.skipped.push_back("gradient unit (no gradients: no shading, no gradient-magnitude modulation)");
-  if (!r.magnitude) res.skipped.push_back(cfg.levels[2] == Level::Tlm ? "gradient magnitude and GmLUT"
-                                                                      : "GmLUT modulation (RTL: computed, unused)");
-  if (!r.shading) res.skipped.push_back(cfg.levels[2] == Level::Tlm ? "reflectance maps and Phong shading"
-                                                                    : "reflectance maps (RTL: computed, unused)");
-  if (!r.cut_enabled) res.skipped.push_back(cfg.levels[3] == Level::Tlm ? "cut-plane logic" : "cut-plane logic (RTL: computed, unused)");
-  if (!r.crop_enabled) res.skipped.push_back(cfg.levels[3] == Level::Tlm ? "cropping logic" : "cropping logic (RTL: computed, unused)");
-  const CycleCount cc = frame_cycles(r, cfg.p);
+  res.simulated = {true, rs->gradient, true, true};
+  auto not_needed = [&](bool needed, Unit u, const std::string& what) {
+    if (needed) return;
+    if (cfg.levels[static_cast<size_t>(u)] == Level::Tlm || (cfg.all_tlm() && !cfg.cycle_level))
+      res.skipped.push_back(what);
+    else
+      res.unused.push_back(what + " (inside the verilated " + unit_name(u) + " unit: computed, not used)");
+  };
+  if (!rs->gradient) res.skipped.push_back("gradient unit and the frame's zero pass (the scene needs no gradients)");
+  not_needed(r.magnitude, Unit::Shade, "gradient magnitude and GmLUT");
+  not_needed(r.shading, Unit::Shade, "reflectance maps and Phong shading");
+  not_needed(r.specular, Unit::Shade, "specular reflection vector and map");
+  not_needed(r.cut_enabled, Unit::Composite, "cut-plane logic");
+  not_needed(r.crop_enabled, Unit::Composite, "cropping logic");
+  const CycleCount cc = frame_cycles(*rs, cfg.p);
   res.stream_cycles = cc.stream;
   res.samples = static_cast<uint64_t>(plan.nx) * plan.ny * plan.K;
 
   std::unique_ptr<StreamChecker> checker;
   if (cfg.check) checker = std::make_unique<StreamChecker>(plan, vol);
 
-  if (cfg.all_tlm()) {
+  if (cfg.all_tlm() && !cfg.cycle_level) {
     res.plane = run_tlm_frame(plan, vol, progress);
     res.frame_cycles = cc.latency;
     for (int pass = 0; pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
-    check_rtl_precision(r);
-    require_rtl(cfg.p);
+    if (!cfg.all_tlm()) {
+      check_rtl_precision(r);
+      require_rtl(cfg.p);
+    }
+    if (cfg.p > kMaxLanes)
+      throw std::invalid_argument("pipelines: " + std::to_string(cfg.p) + " (a cycle-level run takes at most " +
+                                  std::to_string(kMaxLanes) + "; --model tlm takes any)");
 #ifdef CUBE4_HAVE_RTL
     VerilatedContext ctx;
     if (!cfg.trace.file.empty()) ctx.traceEverOn(true);
+    VerilatedContext* rtl_ctx = &ctx;
+#else
+    VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit
+#endif
     VoxelMemory mem(vol, cfg.p);
     PixelMemory pixels(r);
     FrameUnits u;
     u.former = std::make_unique<StreamFormer>(plan, mem);
     const bool rtl[kUnits] = {cfg.levels[0] == Level::Rtl, cfg.levels[1] == Level::Rtl, cfg.levels[2] == Level::Rtl,
                               cfg.levels[3] == Level::Rtl};
-    u.interp = rtl[0] ? make_rtl_interp(plan, ctx, cfg.trace) : std::make_unique<TlmInterp>(plan);
-    if (!r.gradient) {
+    u.interp = rtl[0] ? make_rtl_interp(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmInterp>(plan);
+    if (!rs->gradient) {
       u.gradient = std::make_unique<GradientBypass>(plan);
     } else {
-      u.gradient = rtl[1] ? make_rtl_gradient(plan, ctx, cfg.trace) : std::make_unique<TlmGradient>(plan);
+      u.gradient = rtl[1] ? make_rtl_gradient(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmGradient>(plan);
     }
-    u.shade = rtl[2] ? make_rtl_shade(plan, ctx, cfg.trace) : std::make_unique<TlmShade>(plan);
-    u.composite = rtl[3] ? make_rtl_composite(plan, pixels, ctx, cfg.trace)
+    u.shade = rtl[2] ? make_rtl_shade(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmShade>(plan);
+    u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace)
                          : std::make_unique<TlmComposite>(plan, pixels);
     u.checker = checker.get();
     u.progress = progress;
     u.total_beats = cc.stream;
-    CycleTop& top = cycle_top();
-    top.start(u);
-    sc_core::sc_start();
-    if (top.error) std::rethrow_exception(top.error);
-    if (!top.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
-    res.frame_cycles = top.done_cycle;
-    if (std::getenv("CUBE4_DEBUG_CYCLES"))
-      std::fprintf(stderr, "last beats: former %llu interp %llu gradient %llu shade %llu done %llu\n", (unsigned long long)top.last_valid[0], (unsigned long long)top.last_valid[1], (unsigned long long)top.last_valid[2], (unsigned long long)top.last_valid[3], (unsigned long long)top.done_cycle);
-    res.simulated_cycles = top.done_cycle;
+    if (cfg.kernel == Kernel::SystemC) {
+      CycleTop& top = cycle_top();
+      top.start(u);
+      sc_core::sc_start();
+      if (top.error) std::rethrow_exception(top.error);
+    } else {
+      run_plain(u);
+    }
+    if (!u.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
+    res.frame_cycles = u.done_cycle;
+    res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_valid[3]};
+    res.simulated_cycles = u.done_cycle;
     res.voxel_reads = mem.reads();
     res.plane = pixels.plane();
-#endif
   }
   if (checker) res.mismatch = checker->first_mismatch();
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -19,11 +19,21 @@
 
 namespace cube4::sysc {
 
+// Who clocks a cycle-level run: the SystemC kernel (one process per unit,
+// registered channels), or a plain C++ loop over the same units (the speed
+// ceiling for benchmarks; same cycles, same image).
+enum class Kernel { SystemC, PlainLoop };
+
 struct SystemConfig {
   int p = 4;
+  Kernel kernel = Kernel::SystemC;
+  // Every unit at TLM but clocked beat by beat (the per-unit TLM models of
+  // systemc/tlm/) instead of one loosely timed transaction.
+  bool cycle_level = false;
   std::array<Level, kUnits> levels{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
   TraceWindow trace;         // RTL units only
   bool check = false;        // compare every unit's output stream with golden
+  bool simulate_unneeded = false;  // run the gradient unit even when the scene needs no gradients
   bool all_tlm() const {
     for (Level l : levels)
       if (l != Level::Tlm) return false;
@@ -46,10 +56,12 @@ struct SystemResult {
   uint64_t samples = 0;         // nx * ny * K rays-slices composited
   uint64_t voxel_reads = 0;     // voxel memory reads (one per module per read cycle)
   uint64_t simulated_cycles = 0;  // clock cycles simulated (cycle-level runs)
+  std::array<uint64_t, 4> last_beat{};  // cycle of the last beat on each link (former, interp, gradient, shade)
   double wall_seconds = 0;
   std::array<Level, kUnits> levels{};
   std::array<bool, kUnits> simulated{};  // false: not needed by the scene, not simulated
   std::vector<std::string> skipped;      // logic the scene does not need, not simulated
+  std::vector<std::string> unused;       // logic the scene does not need, simulated inside an RTL unit
   std::optional<Mismatch> mismatch;      // --check: the first unit output that differs
 };
 

@@ -41,14 +41,18 @@ std::string scene_json(const Case& c) {
 
 // Renders the case through the system at `levels` with p pipelines and
 // checks the base plane and the cycle count.
-void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels) {
+void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bool cycle_level = false,
+         sysc::Kernel kernel = sysc::Kernel::SystemC, bool simulate_unneeded = false) {
   const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
   const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
   const golden::Registers regs = golden::program_host(scene, vol).regs;
   sysc::SystemConfig cfg;
   cfg.p = p;
   cfg.levels = levels;
-  cfg.check = !cfg.all_tlm();
+  cfg.check = !cfg.all_tlm() || cycle_level;
+  cfg.cycle_level = cycle_level;
+  cfg.kernel = kernel;
+  cfg.simulate_unneeded = simulate_unneeded;
   if (!cfg.all_tlm() && !sysc::rtl_available(p)) GTEST_SKIP() << "no RTL build for p = " << p;
   const sysc::SystemResult res = sysc::run_frame(regs, vol, cfg);
   const golden::BasePlane want = golden::render_fixed(vol, regs);
@@ -65,13 +69,16 @@ void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels) {
   size_t lit = 0;
   for (size_t i = 3; i < want.rgba.size(); i += 4) lit += want.rgba[i] != 0;
   EXPECT_GT(lit, 0u) << "the test scene renders nothing";
-  const sysc::CycleCount cc = sysc::frame_cycles(regs, p);
+  golden::Registers simulated = regs;
+  simulated.gradient = regs.gradient || simulate_unneeded;
+  EXPECT_EQ(res.simulated[1], simulated.gradient) << "the gradient unit runs exactly when needed (or forced)";
+  const sysc::CycleCount cc = sysc::frame_cycles(simulated, p);
   EXPECT_EQ(res.stream_cycles, cc.stream);
   const bool all_rtl = levels[0] == Level::Rtl && levels[1] == Level::Rtl && levels[2] == Level::Rtl &&
                        levels[3] == Level::Rtl;
   if (all_rtl) EXPECT_EQ(res.frame_cycles, cc.latency) << "RTL cycles against the cycle model";
   const int B = (regs.dim[0] + p - 1) / p;
-  EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices() + (regs.gradient ? 1 : 0)) *
+  EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices() + (simulated.gradient ? 1 : 0)) *
                            static_cast<uint64_t>(regs.dim[1] + 1) * static_cast<uint64_t>(B));
 }
 
@@ -90,6 +97,15 @@ TEST(System, SphereP5) { run(Case{}, 5, kRtl); }
 TEST(System, SphereP8) { run(Case{}, 8, kRtl); }
 TEST(System, SphereTlmP4) { run(Case{}, 4, kTlm); }
 TEST(System, SphereTlmP16) { run(Case{}, 16, kTlm); }
+// Every unit's TLM model clocked beat by beat (the models mixed runs use).
+TEST(System, SphereTlmCycleLevelP4) { run(Case{}, 4, kTlm, true); }
+TEST(System, SphereTlmCycleLevelNoGradientP5) {
+  Case c;
+  c.effects = R"("shading": false, "blend": "mip")";
+  run(c, 5, kTlm, true);
+}
+// The plain C++ schedule (the benchmarks' ceiling) simulates the same machine.
+TEST(System, SpherePlainLoopP4) { run(Case{}, 4, kRtl, false, sysc::Kernel::PlainLoop); }
 
 // The six base planes (p = 5 does not divide any axis: padding everywhere).
 class BasePlanes : public ::testing::TestWithParam<const char*> {};
@@ -107,6 +123,13 @@ INSTANTIATE_TEST_SUITE_P(System, BasePlanes,
 // Effects.
 TEST(System, Mip) { Case c; c.effects = R"("shading": false, "blend": "mip")"; run(c, 4, kRtl); }
 TEST(System, MinIp) { Case c; c.effects = R"("shading": false, "blend": "minip")"; run(c, 4, kRtl); }
+// An unshaded MIP needs no gradient unit; simulating it anyway changes
+// nothing in the image (only the cycles: the zero pass).
+TEST(System, MipWithUnneededGradientUnit) {
+  Case c;
+  c.effects = R"("shading": false, "blend": "mip")";
+  run(c, 4, kRtl, false, sysc::Kernel::SystemC, true);
+}
 TEST(System, ShadingOff) { Case c; c.effects = R"("shading": false)"; run(c, 4, kRtl); }
 TEST(System, Specular) {
   Case c;
@@ -146,4 +169,31 @@ TEST(System, BrainsmallAllRtl) {
   run(c, 4, kRtl);
 }
 
+}  // namespace
+
+// Cube-4 Table 1's first configuration (64^3, 8 pipelines) at RTL: the
+// cycle model that docs/performance.md's Table 1 comparison uses is the
+// RTL's count (run() asserts equality). Larger rows: test_system_slow.
+namespace {
+TEST(System, Table1Row64P8) {
+  Case c;
+  c.volume = R"({"synthetic": "sphere", "size": [64, 64, 64]})";
+  c.direction = "[0, 0, 1]";
+  run(c, 8, kRtl);
+}
+}  // namespace
+
+// Several frames in one process: the SystemC top is elaborated once and each
+// frame resumes the kernel (different p, levels and scenes in a row).
+namespace {
+TEST(System, FramesInARowOneProcess) {
+  Case a;
+  Case b;
+  b.direction = "[-1, 0.2, 0.3]";
+  b.effects = R"("shading": false, "blend": "mip")";
+  run(a, 4, kRtl);
+  run(b, 5, kRtl);
+  run(a, 1, only(sysc::Unit::Gradient));
+  run(b, 8, kTlm, true);
+}
 }  // namespace
