@@ -37,7 +37,7 @@ class RtlModel {
     m_->rst_ni = 0;
     for (int i = 0; i < 2; ++i) edge();
     m_->rst_ni = 1;
-    cycle_ = 0;
+    restart_cycles();
   }
   ~RtlModel() {
     if (fst_) fst_->close();
@@ -60,6 +60,9 @@ class RtlModel {
     ++cycle_;
   }
   void edge() { settle(); rise(); }
+  // The system's cycle numbers: the frame's first clock is cycle 1 (after
+  // reset, or after a table load through the write ports).
+  void restart_cycles() { cycle_ = 1; }
 
   // trace.fst + "interp" -> trace.interp.fst: one file per verilated unit.
   static std::string trace_file_name(const std::string& file, const std::string& suffix) {

@@ -24,6 +24,7 @@ class RtlShade final : public ShadeIf {
       // Only pipeline 0 is traced: the others run the same control.
       units_.push_back(std::make_unique<RtlModel<M>>(ctx, name, k == 0 ? trace : TraceWindow{}, name));
       load_tables(*units_.back());
+      units_.back()->restart_cycles();
     }
   }
 

@@ -1,0 +1,93 @@
+// Shared by the system test suites (test_system.cpp, test_system_slow.cpp):
+// a small scene description and run(), which renders it through the system
+// model and checks the base plane bit for bit against golden render_fixed(),
+// every unit's stream (--check), and the cycles against the cycle model.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <array>
+#include <sstream>
+#include <string>
+
+#include "golden/host_driver.hpp"
+#include "golden/renderers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+#include "systemc/core/system.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
+
+namespace cube4::test {
+
+using sysc::Level;
+
+inline const char* kTransfer =
+    R"("transfer": {"color": [[0, 1, 0.2, 0], [0.5, 0, 1, 0.3], [1, 0.1, 0, 1]],)"
+    R"( "opacity": [[0, 0.0], [0.3, 0.05], [0.6, 0.2], [1, 0.5]]})";
+
+struct Case {
+  std::string volume = R"({"synthetic": "sphere", "size": [13, 11, 9]})";
+  std::string direction = "[0.3, -0.2, 1]";
+  std::string up = "[0, 1, 0]";
+  std::string effects = R"("shading": true)";
+  int S = 1;
+};
+
+inline std::string scene_json(const Case& c) {
+  std::ostringstream s;
+  s << R"({"volume": )" << c.volume << R"(, "view": {"direction": )" << c.direction << R"(, "up": )" << c.up
+    << R"(}, "supersampling": )" << c.S << ", " << kTransfer << ", " << c.effects << "}";
+  return s.str();
+}
+
+// Renders the case through the system at `levels` with p pipelines and
+// checks the base plane and the cycle count.
+inline void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bool cycle_level = false,
+         sysc::Kernel kernel = sysc::Kernel::SystemC, bool simulate_unneeded = false) {
+  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
+  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
+  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  sysc::SystemConfig cfg;
+  cfg.p = p;
+  cfg.levels = levels;
+  cfg.check = !cfg.all_tlm() || cycle_level;
+  cfg.cycle_level = cycle_level;
+  cfg.kernel = kernel;
+  cfg.simulate_unneeded = simulate_unneeded;
+  if (!cfg.all_tlm() && !sysc::rtl_available(p)) GTEST_SKIP() << "no RTL build for p = " << p;
+  const sysc::SystemResult res = sysc::run_frame(regs, vol, cfg);
+  const golden::BasePlane want = golden::render_fixed(vol, regs);
+  ASSERT_EQ(res.plane.width, want.width);
+  ASSERT_EQ(res.plane.height, want.height);
+  EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
+  size_t bad = 0, first = 0;
+  for (size_t i = 0; i < want.rgba.size(); ++i)
+    if (res.plane.rgba[i] != want.rgba[i] && bad++ == 0) first = i;
+  EXPECT_EQ(bad, 0u) << "first differing channel value at pixel (" << first / 4 % static_cast<size_t>(want.width)
+                     << ", " << first / 4 / static_cast<size_t>(want.width) << ") channel " << first % 4 << ": expected "
+                     << want.rgba[first] << ", got " << res.plane.rgba[first];
+  // A frame that shows something: an empty base plane proves nothing.
+  size_t lit = 0;
+  for (size_t i = 3; i < want.rgba.size(); i += 4) lit += want.rgba[i] != 0;
+  EXPECT_GT(lit, 0u) << "the test scene renders nothing";
+  golden::Registers simulated = regs;
+  simulated.gradient = regs.gradient || simulate_unneeded;
+  EXPECT_EQ(res.simulated[1], simulated.gradient) << "the gradient unit runs exactly when needed (or forced)";
+  const sysc::CycleCount cc = sysc::frame_cycles(simulated, p);
+  EXPECT_EQ(res.stream_cycles, cc.stream);
+  const bool all_rtl = levels[0] == Level::Rtl && levels[1] == Level::Rtl && levels[2] == Level::Rtl &&
+                       levels[3] == Level::Rtl;
+  if (all_rtl) EXPECT_EQ(res.frame_cycles, cc.latency) << "RTL cycles against the cycle model";
+  const int B = (regs.dim[0] + p - 1) / p;
+  EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices() + (simulated.gradient ? 1 : 0)) *
+                           static_cast<uint64_t>(regs.dim[1] + 1) * static_cast<uint64_t>(B));
+}
+
+constexpr std::array<Level, 4> kRtl{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
+constexpr std::array<Level, 4> kTlm{Level::Tlm, Level::Tlm, Level::Tlm, Level::Tlm};
+inline std::array<Level, 4> only(sysc::Unit u) {
+  std::array<Level, 4> l = kTlm;
+  l[static_cast<size_t>(u)] = Level::Rtl;
+  return l;
+}
+
+}  // namespace cube4::test
