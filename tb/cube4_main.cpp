@@ -21,6 +21,7 @@
 #include "tb/image_io.hpp"
 #include "tb/progress.hpp"
 #include "tb/report.hpp"
+#include "systemc/host/host_program.hpp"
 #include "tb/system_report.hpp"
 
 namespace {
@@ -126,6 +127,7 @@ int run_render(const RenderArgs& a) {
   Loaded l = load(a.scene);
   sysc::SystemConfig cfg;
   std::optional<sysc::SystemResult> sys;
+  double bus_seconds = 0;  // host-bus time of programming the frame and reading it back
   std::string check_failure;
   if (system) {
     cfg.p = a.pipes > 0 ? a.pipes : l.scene.pipelines;
@@ -154,8 +156,10 @@ int run_render(const RenderArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     if (system) {
       try {
-        sys = sysc::run_frame(l.host.regs, l.volume, cfg, cb);
+        sys = sysc::render_through_host(l.host.regs, l.volume, cfg, cb, &bus_seconds);
       } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
+      } catch (const sysc::HostError& e) {  // registers the built hardware cannot take
         throw InputError(e.what());
       }
       const golden::BasePlane& bp = sys->plane;
@@ -219,7 +223,10 @@ int run_render(const RenderArgs& a) {
         {"output", a.output},
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
-    if (sys) r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
+    if (sys) {
+      r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
+      r["system"]["host_bus_ms"] = bus_seconds * 1e3;
+    }
     if (!a.baseplane.empty()) r["baseplane"] = a.baseplane;
     if (hash) r["baseplane_hash_fnv1a64"] = tb::hex64(*hash);
     tb::write_json(a.report, r);

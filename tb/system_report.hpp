@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "systemc/core/machine.hpp"
 #include "systemc/core/system.hpp"
 
 namespace cube4::tb {

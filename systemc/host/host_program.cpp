@@ -84,21 +84,6 @@ void check_table(size_t size, size_t expected, bool used, const char* field) {
 
 size_t map_entries(const golden::Precision& p) { return size_t{6} * p.map_face_res * p.map_face_res; }
 
-// The host's own encoding, written apart from the register file's decoder so
-// that the round-trip tests check one against the other.
-uint32_t mode_word(const golden::Registers& r) {
-  uint32_t m = static_cast<uint32_t>(r.blend) << rm::kModeBlendShift;
-  if (r.gradient) m |= rm::kModeGradient;
-  if (r.magnitude) m |= rm::kModeMagnitude;
-  if (r.shading) m |= rm::kModeShading;
-  if (r.specular) m |= rm::kModeSpecular;
-  if (r.gm_opacity) m |= rm::kModeGmOpacity;
-  if (r.gm_diffuse) m |= rm::kModeGmDiffuse;
-  if (r.gm_specular) m |= rm::kModeGmSpecular;
-  if (r.crop_enabled) m |= rm::kModeCrop;
-  if (r.cut_enabled) m |= rm::kModeCut;
-  return m;
-}
 
 }  // namespace
 
@@ -176,7 +161,7 @@ std::vector<RegisterBlock> register_blocks(const golden::Registers& r) {
         u(int{r.flip[0]} | int{r.flip[1]} << 1 | int{r.flip[2]} << 2), u(r.supersampling),
         lo(r.x_start), hi(r.x_start), lo(r.x_step), hi(r.x_step),
         lo(r.y_start), hi(r.y_start), lo(r.y_step), hi(r.y_step)}},
-      {rm::kMode, {mode_word(r)}},
+      {rm::kMode, {rm::mode_word(r)}},
       {rm::kCropSlab,
        {u(r.crop.slab[0][0]), u(r.crop.slab[0][1]), u(r.crop.slab[1][0]), u(r.crop.slab[1][1]),
         u(r.crop.slab[2][0]), u(r.crop.slab[2][1]), r.crop.mask}},

@@ -242,20 +242,6 @@ void RegisterFile::write_register(uint64_t a, uint32_t v) {
   }
 }
 
-uint32_t RegisterFile::mode_word() const {
-  const golden::Registers& r = regs_;
-  uint32_t m = static_cast<uint32_t>(r.blend) << rm::kModeBlendShift;
-  if (r.gradient) m |= rm::kModeGradient;
-  if (r.magnitude) m |= rm::kModeMagnitude;
-  if (r.shading) m |= rm::kModeShading;
-  if (r.specular) m |= rm::kModeSpecular;
-  if (r.gm_opacity) m |= rm::kModeGmOpacity;
-  if (r.gm_diffuse) m |= rm::kModeGmDiffuse;
-  if (r.gm_specular) m |= rm::kModeGmSpecular;
-  if (r.crop_enabled) m |= rm::kModeCrop;
-  if (r.cut_enabled) m |= rm::kModeCut;
-  return m;
-}
 
 // False where register space has no register (or only the control block's).
 bool RegisterFile::read_register(uint64_t a, uint32_t& v) const {
@@ -280,7 +266,7 @@ bool RegisterFile::read_register(uint64_t a, uint32_t& v) const {
     case rm::kXStepLo: case rm::kXStepHi: v = get_half(r.x_step, a & 4); return true;
     case rm::kYStartLo: case rm::kYStartHi: v = get_half(r.y_start, a & 4); return true;
     case rm::kYStepLo: case rm::kYStepHi: v = get_half(r.y_step, a & 4); return true;
-    case rm::kMode: v = mode_word(); return true;
+    case rm::kMode: v = rm::mode_word(regs_); return true;
     case rm::kCropMask: v = r.crop.mask; return true;
     case rm::kCutA: v = u(r.cut.a); return true;
     case rm::kCutB: v = u(r.cut.b); return true;

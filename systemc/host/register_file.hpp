@@ -52,7 +52,6 @@ class RegisterFile {
   regmap::ErrorCode check_table(regmap::Region r, uint64_t addr, uint32_t value) const;
   void write_register(uint64_t addr, uint32_t value);
   bool read_register(uint64_t addr, uint32_t& value) const;
-  uint32_t mode_word() const;
 
   HardwareParams hw_;
   golden::Registers regs_;             // tables always at full size

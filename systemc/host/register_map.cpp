@@ -89,4 +89,18 @@ std::string describe_address(uint64_t a) {
   return name + " (" + hex(a) + ")";
 }
 
+uint32_t mode_word(const golden::Registers& r) {
+  uint32_t m = static_cast<uint32_t>(r.blend) << kModeBlendShift;
+  if (r.gradient) m |= kModeGradient;
+  if (r.magnitude) m |= kModeMagnitude;
+  if (r.shading) m |= kModeShading;
+  if (r.specular) m |= kModeSpecular;
+  if (r.gm_opacity) m |= kModeGmOpacity;
+  if (r.gm_diffuse) m |= kModeGmDiffuse;
+  if (r.gm_specular) m |= kModeGmSpecular;
+  if (r.crop_enabled) m |= kModeCrop;
+  if (r.cut_enabled) m |= kModeCut;
+  return m;
+}
+
 }  // namespace cube4::sysc::regmap

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string>
 
+#include "golden/registers.hpp"
+
 namespace cube4::sysc::regmap {
 
 // ---- Control and status (0x000-0x03F) --------------------------------------
@@ -189,5 +191,9 @@ constexpr const char* error_name(ErrorCode e) {
 
 // "MODE (0x140)", "CLASS[17].a (0x100088)": for error messages.
 std::string describe_address(uint64_t a);
+
+// The MODE register's word for the registers' mode bits (the one encoder:
+// the host writes it, the register file reads it back).
+uint32_t mode_word(const golden::Registers& r);
 
 }  // namespace cube4::sysc::regmap

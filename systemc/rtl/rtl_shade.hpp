@@ -74,36 +74,25 @@ class RtlShade final : public ShadeIf {
     M& m = *u;
     m.valid_i = 0;
     m.class_we_i = m.gmlut_we_i = m.dmap_we_i = m.smap_we_i = 0;
-    for (size_t i = 0; i < r.classification.size(); ++i) {
+    // One entry per clock through a table's write port.
+    auto load = [&u](auto& we, auto& addr, auto& data, size_t n, auto&& entry) {
+      for (size_t i = 0; i < n; ++i) {
+        we = 1;
+        addr = static_cast<uint32_t>(i);
+        put_bits(data, 0, 64, entry(i));
+        u.edge();
+      }
+      we = 0;
+    };
+    load(m.class_we_i, m.class_waddr_i, m.class_wdata_i, r.classification.size(), [&](size_t i) {
       const golden::ClassEntry& e = r.classification[i];
-      m.class_we_i = 1;
-      m.class_waddr_i = static_cast<uint32_t>(i);
-      put_bits(m.class_wdata_i, 0, 3 * p.color_bits + p.alpha_bits,
-               ((((uint64_t{e.r} << p.color_bits | e.g) << p.color_bits) | e.b) << p.alpha_bits) | e.a);
-      u.edge();
-    }
-    m.class_we_i = 0;
-    for (size_t i = 0; i < r.gm_lut.size(); ++i) {
-      m.gmlut_we_i = 1;
-      m.gmlut_waddr_i = static_cast<uint32_t>(i);
-      m.gmlut_wdata_i = r.gm_lut[i];
-      u.edge();
-    }
-    m.gmlut_we_i = 0;
-    for (size_t i = 0; i < r.diffuse_map.size(); ++i) {
-      m.dmap_we_i = 1;
-      m.dmap_waddr_i = static_cast<uint32_t>(i);
-      m.dmap_wdata_i = r.diffuse_map[i];
-      u.edge();
-    }
-    m.dmap_we_i = 0;
-    for (size_t i = 0; i < r.specular_map.size(); ++i) {
-      m.smap_we_i = 1;
-      m.smap_waddr_i = static_cast<uint32_t>(i);
-      m.smap_wdata_i = r.specular_map[i];
-      u.edge();
-    }
-    m.smap_we_i = 0;
+      return ((((uint64_t{e.r} << p.color_bits | e.g) << p.color_bits) | e.b) << p.alpha_bits) | e.a;
+    });
+    load(m.gmlut_we_i, m.gmlut_waddr_i, m.gmlut_wdata_i, r.gm_lut.size(), [&](size_t i) { return uint64_t{r.gm_lut[i]}; });
+    load(m.dmap_we_i, m.dmap_waddr_i, m.dmap_wdata_i, r.diffuse_map.size(),
+         [&](size_t i) { return uint64_t{r.diffuse_map[i]}; });
+    load(m.smap_we_i, m.smap_waddr_i, m.smap_wdata_i, r.specular_map.size(),
+         [&](size_t i) { return uint64_t{r.specular_map[i]}; });
     m.magnitude_i = r.magnitude;
     m.shading_i = r.shading;
     m.specular_i = r.specular;

@@ -1,9 +1,6 @@
 // Bit access to verilated ports of any width: CData/SData/IData/QData or
 // VlWide<N>, a field of `width` bits at bit `lsb`.
 #pragma once
-// verilated.h calls sc_time_stamp() unqualified once SystemC is included.
-#include <systemc>
-using sc_core::sc_time_stamp;
 #include <verilated.h>
 
 #include <cstdint>

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "systemc/core/machine.hpp"
 #include "tb/tests/system_support.hpp"
 
 namespace {
@@ -159,5 +160,31 @@ TEST(System, TraceWritesTheWindowPerUnit) {
     EXPECT_EQ(first, 2 * 50) << f << ": two time steps per cycle (clock low, high), from the window's first cycle";
     EXPECT_EQ(last, 2 * 60 + 1) << f;
   }
+}
+}  // namespace
+
+// The whole exchange through the TLM-2.0 host interface, as `cube4 render`
+// runs it: volume, tables and registers written as transactions, START,
+// the base plane read back through the base-plane window.
+namespace {
+TEST(System, ThroughTheHostInterface) {
+  Case c;
+  c.effects = R"("shading": true, "cropping": {"x": [2, 8], "y": [1, 9], "combine": "cross"},)"
+              R"( "gradient_modulation": {"opacity": true})";
+  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
+  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
+  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  sysc::SystemConfig cfg;
+  cfg.p = 5;
+  cfg.check = true;
+  double bus = 0;
+  const sysc::SystemResult res = sysc::render_through_host(regs, vol, cfg, {}, &bus);
+  EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
+  const golden::BasePlane want = golden::render_fixed(vol, regs);
+  EXPECT_EQ(res.plane.width, want.width);
+  EXPECT_EQ(res.plane.rgba, want.rgba);
+  EXPECT_EQ(res.plane.shift_x, want.shift_x);
+  EXPECT_EQ(res.frame_cycles, sysc::frame_cycles(regs, 5).latency);
+  EXPECT_GT(bus, 0.0) << "the host bus time is annotated";
 }
 }  // namespace

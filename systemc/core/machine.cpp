@@ -1,0 +1,102 @@
+#include "systemc/core/machine.hpp"
+
+#include <algorithm>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <tlm_utils/simple_initiator_socket.h>
+
+#include "systemc/host/host_if.hpp"
+#include "systemc/host/host_program.hpp"
+
+namespace cube4::sysc {
+
+void Machine::set_volume_dims(int nx, int ny, int nz) {
+  volume_.dim = {nx, ny, nz};
+  volume_.data.assign(volume_.size(), 0);
+  volume_.source = "host interface";
+}
+
+void Machine::write_voxel(int x, int y, int z, uint16_t v) { volume_.data[volume_.index(x, y, z)] = v; }
+
+void Machine::start_frame(const golden::Registers& regs) {
+  error_ = nullptr;
+  try {
+    last_ = run_frame(regs, volume_, cfg_, progress_);
+  } catch (...) {
+    // The host interface reports a refused frame as a status code; the
+    // reason is kept for the program that drives the host.
+    error_ = std::current_exception();
+    throw;
+  }
+  ++frames_;
+}
+
+std::array<uint16_t, 4> Machine::read_pixel(int u, int v) const {
+  const golden::BasePlane& bp = last_->plane;
+  const uint16_t* px = &bp.rgba[(static_cast<size_t>(v) * bp.width + u) * 4];
+  return {px[0], px[1], px[2], px[3]};
+}
+
+namespace {
+
+// The host's bus master. The host program calls the target's forward
+// interface directly (before the first sc_start, where a port cannot be
+// used yet); the socket is bound so that elaboration finds it connected.
+SC_MODULE(HostBus) {
+  tlm_utils::simple_initiator_socket<HostBus> socket{"socket"};
+  SC_CTOR(HostBus) {}
+};
+
+struct Hosted {
+  HardwareParams hw;
+  std::unique_ptr<Machine> machine;
+  std::unique_ptr<HostInterface> host;
+  std::unique_ptr<HostBus> bus;
+};
+
+Hosted& hosted(const SystemConfig& cfg, const golden::Registers& r, const golden::Volume& vol) {
+  static Hosted h;
+  HardwareParams hw;
+  hw.precision = r.p;
+  hw.pipelines = cfg.p;
+  hw.max_dim = std::max({256, vol.dim[0], vol.dim[1], vol.dim[2]});
+  if (!h.host) {
+    h.hw = hw;
+    h.machine = std::make_unique<Machine>(cfg, r.p.voxel_bits);
+    h.host = std::make_unique<HostInterface>("host", HostConfig{hw, sc_core::sc_time(30, sc_core::SC_NS)}, *h.machine);
+    h.bus = std::make_unique<HostBus>("host_bus");
+    h.bus->socket.bind(h.host->socket);
+  } else if (hw.pipelines != h.hw.pipelines || hw.max_dim > h.hw.max_dim) {
+    throw std::invalid_argument("host interface: built for p = " + std::to_string(h.hw.pipelines) +
+                                " in this process; SystemC elaborates once, so run p = " +
+                                std::to_string(hw.pipelines) + " in a process of its own");
+  }
+  h.machine->set_config(cfg);
+  return h;
+}
+
+}  // namespace
+
+SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
+                                 const golden::Progress& progress, double* bus_seconds) {
+  Hosted& h = hosted(cfg, r, vol);
+  h.machine->set_progress(progress);
+  TlmTarget& target = h.host->target();
+  sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+  program_over_tlm(target, r, vol, delay);
+  try {
+    start_frame_over_tlm(target, delay);
+  } catch (const HostError&) {
+    if (h.machine->error()) std::rethrow_exception(h.machine->error());
+    throw;
+  }
+  if (!h.machine->last()) throw std::logic_error("host interface: START ran no frame");
+  SystemResult res = *h.machine->last();
+  res.plane = read_base_plane_over_tlm(target, r, delay);
+  if (bus_seconds) *bus_seconds = delay.to_seconds();
+  return res;
+}
+
+}  // namespace cube4::sysc

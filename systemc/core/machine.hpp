@@ -1,0 +1,55 @@
+// The machine as the host sees it: the HostBackend behind the TLM-2.0 host
+// interface (systemc/host/). Host voxel writes fill the volume the voxel
+// memory is loaded from, START runs a frame through the system model, and
+// the base plane is read back from its pixel memory.
+#pragma once
+#include <cstdint>
+#include <exception>
+#include <optional>
+
+#include "golden/volume.hpp"
+#include "systemc/core/system.hpp"
+#include "systemc/host/host_backend.hpp"
+
+namespace cube4::sysc {
+
+class Machine final : public HostBackend {
+ public:
+  Machine(const SystemConfig& cfg, int voxel_bits) : cfg_(cfg) { volume_.bits = voxel_bits; }
+
+  void set_config(const SystemConfig& cfg) { cfg_ = cfg; }
+  void set_progress(golden::Progress p) { progress_ = std::move(p); }
+  const std::optional<SystemResult>& last() const { return last_; }
+  // Why the last START failed (null if it did not).
+  std::exception_ptr error() const { return error_; }
+
+  void set_volume_dims(int nx, int ny, int nz) override;
+  void write_voxel(int x, int y, int z, uint16_t v) override;
+  // Runs the frame to its end (the host interface's START is blocking).
+  void start_frame(const golden::Registers& regs) override;
+  bool busy() const override { return false; }
+  uint64_t frames_done() const override { return frames_; }
+  uint64_t last_frame_cycles() const override { return last_ ? last_->frame_cycles : 0; }
+  int base_width() const override { return last_ ? last_->plane.width : 0; }
+  int base_height() const override { return last_ ? last_->plane.height : 0; }
+  std::array<uint16_t, 4> read_pixel(int u, int v) const override;
+
+ private:
+  SystemConfig cfg_;
+  golden::Volume volume_;
+  golden::Progress progress_;
+  std::optional<SystemResult> last_;
+  uint64_t frames_ = 0;
+  std::exception_ptr error_;
+};
+
+// A frame as a host runs it: program the registers, tables and volume
+// through the host interface (TLM-2.0 transactions), start it, read the
+// base plane back. The result's plane is what the host read. `bus_time`
+// returns the annotated host-bus time of the whole exchange. The host
+// interface and machine are built once per process (SystemC elaborates
+// once), for the first call's p and precision.
+SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
+                                 const golden::Progress& progress, double* bus_seconds = nullptr);
+
+}  // namespace cube4::sysc
