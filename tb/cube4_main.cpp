@@ -273,7 +273,8 @@ int main(int argc, char** argv) {
   render->add_option("--repeat", ra.repeat, "render N times (benchmarking): the report gives min and median")
       ->check(CLI::Range(1, 100000));
   render->add_flag("-q,--quiet", ra.quiet, "no progress or summary on stderr");
-  render->add_option("--pipes", ra.pipes, "system model: pipelines p (default: the scene's)");
+  render->add_option("--pipes", ra.pipes, "system model: pipelines p (default: the scene's)")
+      ->check(CLI::Range(1, 256));
   render->add_flag_callback("--check", [&ra] { ra.check = 1; },
                             "system model: compare the base plane and every unit's stream with golden, bit-exact "
                             "(default: on when a unit runs at RTL; exit 3 on a mismatch)");

@@ -6,7 +6,8 @@
 namespace cube4::sysc {
 
 FramePlan::FramePlan(const golden::Registers& regs, int pipes)
-    : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]), B((regs.dim[0] + pipes - 1) / pipes),
+    : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]),
+      B(pipes > 0 ? (regs.dim[0] + pipes - 1) / pipes : 0),  // p < 1 is refused below
       K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)) {
   if (p < 1) throw std::invalid_argument("pipelines: " + std::to_string(p) + " (must be at least 1)");
   if (K >= (1 << kUserTagBits))

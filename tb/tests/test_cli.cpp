@@ -114,6 +114,13 @@ TEST_F(Cli, BadInputExitsTwoNamingTheCulprit) {
       {"render " + good + " -o " + path("out.jpg"), "out.jpg"},
       {"render " + good + " --model bogus", "bogus"},
       {"render " + good + " --model reference --baseplane " + path("bp.png"), "baseplane"},
+      {"render " + good + " --model mixed:interp,shader", "shader"},
+      {"render " + good + " --model mixed:", "mixed:"},
+      {"render " + good + " --model rtl --pipes 3", "pipelines: 3"},
+      {"render " + good + " --model tlm --trace " + path("t.fst"), "--trace"},
+      {"render " + good + " --model rtl --trace " + path("t.vcd"), "t.vcd"},
+      {"render " + good + " --model rtl --trace " + path("t.fst") + " --trace-window 9 3", "--trace-window"},
+      {"render " + good + " --model rtl --pipes 0", "--pipes"},
       {"frobnicate", "frobnicate"},
   };
   for (const Case& c : cases) {
@@ -132,4 +139,30 @@ TEST_F(Cli, TruncatedVolumeFileIsReportedWithItsName) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("cut.den"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(path("x.png")));
+}
+
+// The system model from the command line: a checked RTL run and a TLM run
+// give the golden base plane (same hash) and report the system's figures.
+TEST_F(Cli, SystemModelsReportCyclesAndMatchGolden) {
+  const std::string scene = write("s.json", kSphere);
+  std::string golden_hash;
+  for (const std::string model : {"fixed", "tlm", "rtl", "mixed:gradient,composite"}) {
+    const std::string rep = path("r.json");
+    const CliResult r = run("render " + scene + " --model " + model + " -q -o " + path("o.png") + " --report " + rep);
+    ASSERT_EQ(r.code, 0) << model << "\n" << r.err;
+    nlohmann::json j;
+    std::ifstream(rep) >> j;
+    if (model == "fixed") {
+      golden_hash = j["baseplane_hash_fnv1a64"];
+      continue;
+    }
+    EXPECT_EQ(j["baseplane_hash_fnv1a64"], golden_hash) << model;
+    const nlohmann::json& s = j["system"];
+    for (const char* key : {"cycles_per_frame", "cycles_steady_state_interval", "fps_steady_state", "samples_per_cycle",
+                            "simulated_cycles_per_wall_second", "units", "skipped", "check", "host_bus_ms"})
+      EXPECT_TRUE(s.contains(key)) << model << ": " << key;
+    EXPECT_EQ(s["units"]["interp"], model == "rtl" ? "rtl" : "tlm") << model;
+    EXPECT_EQ(s["units"]["composite"], model == "tlm" ? "tlm" : "rtl") << model;
+    if (model != "tlm") EXPECT_EQ(s["check"].get<std::string>().rfind("passed", 0), 0u) << model;
+  }
 }

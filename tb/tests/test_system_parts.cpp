@@ -1,0 +1,119 @@
+// The system model's pieces on their own (label unit): skewed voxel memory,
+// the stream former's address generation and de-skew, the stream tag.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "golden/permuted_volume.hpp"
+#include "golden/pipeline.hpp"
+#include "golden/registers.hpp"
+#include "golden/volume.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/stream_former.hpp"
+#include "systemc/core/voxel_memory.hpp"
+
+namespace {
+
+using namespace cube4;
+
+golden::Volume numbered(int nx, int ny, int nz) {
+  golden::Volume v;
+  v.dim = {nx, ny, nz};
+  v.data.resize(v.size());
+  for (size_t i = 0; i < v.data.size(); ++i) v.data[i] = static_cast<uint16_t>(1 + i % 4000);
+  return v;
+}
+
+TEST(VoxelMemory, AModuleReadTwiceInACycleIsAnError) {
+  sysc::VoxelMemory mem(numbered(4, 3, 2), 4);
+  mem.begin_cycle();
+  EXPECT_NO_THROW(mem.read(1, 0));
+  EXPECT_NO_THROW(mem.read(2, 0));
+  EXPECT_THROW(mem.read(1, 1), std::logic_error);
+  mem.begin_cycle();
+  EXPECT_NO_THROW(mem.read(1, 1));
+}
+
+TEST(VoxelMemory, RefusesPipelineCountsOutsideTheSkew) {
+  EXPECT_THROW(sysc::VoxelMemory(numbered(2, 2, 2), 0), std::invalid_argument);
+  EXPECT_THROW(sysc::VoxelMemory(numbered(2, 2, 2), golden::kMaxSkewPipes + 1), std::invalid_argument);
+}
+
+// Every traversal (6 permutations x 8 flips), p = 1 .. 8, sizes that p does
+// not divide: each pass hands pipeline k exactly the voxel the golden
+// PermutedVolume holds at (j*p + k, y, z), zero in the padding and the zero
+// beam, and no module is read twice in a cycle (VoxelMemory would throw).
+TEST(StreamFormer, DeskewedBeamsAreThePermutedVolume) {
+  const golden::Volume vol = numbered(7, 5, 6);
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  int checked = 0;
+  for (int p = 1; p <= 8; ++p)
+    for (const auto& pm : perms)
+      for (int f = 0; f < 8; ++f) {
+        golden::Registers r;
+        r.perm = {pm[0], pm[1], pm[2]};
+        r.flip = {(f & 1) != 0, (f & 2) != 0, (f & 4) != 0};
+        for (int i = 0; i < 3; ++i) r.dim[i] = vol.dim[r.perm[i]];
+        r.supersampling = 1;
+        r.classification.resize(4096);
+        const golden::PermutedVolume pv(vol, r.perm, r.flip);
+        const sysc::FramePlan plan(r, p);
+        sysc::VoxelMemory mem(vol, p);
+        sysc::StreamFormer former(plan, mem);
+        for (int pass = 0; pass < plan.passes; ++pass)
+          for (int y = 0; y <= plan.ny; ++y)
+            for (int j = 0; j < plan.B; ++j) {
+              const sysc::VoxelBeat b = former.next();
+              ASSERT_TRUE(b.valid);
+              ASSERT_EQ(b.f.beam_start, j == 0);
+              ASSERT_EQ(b.f.slice_end, y == plan.ny);
+              const int z = plan.pass_voxel_slice(pass);
+              for (int k = 0; k < p; ++k) {
+                const int x = j * p + k;
+                const uint16_t want = y < plan.ny ? pv.at(x, y, z) : 0;
+                ASSERT_EQ(b.voxel[static_cast<size_t>(k)], want)
+                    << "p=" << p << " perm " << pm[0] << pm[1] << pm[2] << " flips " << f << " pass " << pass
+                    << " (x, y, z) = (" << x << ", " << y << ", " << z << ")";
+                ++checked;
+              }
+            }
+        EXPECT_FALSE(former.next().valid);
+        EXPECT_TRUE(former.done());
+      }
+  EXPECT_GT(checked, 100000);
+}
+
+TEST(FramePlan, TagCarriesSliceZeroFlagAndRealignFields) {
+  golden::Registers r;
+  r.dim = {9, 8, 7};
+  r.supersampling = 3;
+  r.gradient = true;
+  r.x_step = 300000;  // moving weights: realign fields change per slice
+  r.y_step = -200000;
+  r.y_start = 10 << 20;
+  const sysc::FramePlan plan(r, 4);
+  ASSERT_EQ(plan.passes, 7 * 3 + 1);
+  for (int pass = 0; pass < plan.passes; ++pass) {
+    const uint64_t t = plan.pass_tag(pass);
+    EXPECT_EQ(plan.tag_slice(t), static_cast<uint32_t>(pass));
+    EXPECT_EQ(plan.tag_zero_slice(t), pass == plan.K);
+    EXPECT_LT(t, uint64_t{1} << plan.tag_bits());
+    if (pass == plan.K) continue;
+    const golden::SliceControl c = golden::slice_control(r, pass);
+    const int w = r.p.weight_bits;
+    EXPECT_EQ(t & ((1u << w) - 1), c.behind_x.weight);
+    EXPECT_EQ(t >> w & 1, c.behind_x.base < 0 ? 1u : 0u);
+    EXPECT_EQ(t >> (4 * (w + 1)) & 15, 3u) << "S";
+  }
+}
+
+TEST(FramePlan, RefusesWhatTheStreamCannotCarry) {
+  golden::Registers r;
+  r.dim = {4, 4, 4};
+  r.supersampling = 16;
+  EXPECT_THROW(sysc::FramePlan(r, 4), std::invalid_argument);
+  r.supersampling = 1;
+  EXPECT_THROW(sysc::FramePlan(r, 0), std::invalid_argument);
+}
+
+}  // namespace
