@@ -41,6 +41,7 @@ struct RenderArgs {
   int pipes = 0;           // 0: the scene's
   int check = -1;          // -1: on for models with RTL units
   bool simulate_all = false;
+  int frames = 1;
   std::string trace;       // FST file (RTL units)
   std::vector<uint64_t> trace_window;  // first, last cycle
 };
@@ -134,6 +135,9 @@ int run_render(const RenderArgs& a) {
     cfg.levels = parse_levels(a.model);
     cfg.check = a.check < 0 ? !cfg.all_tlm() : a.check == 1;
     cfg.simulate_unneeded = a.simulate_all;
+    cfg.frames = a.frames;
+    if (a.frames > 1 && cfg.all_tlm())
+      throw InputError("--frames: the tlm model has no clock to stream frames on (its interval is the cycle model's)");
     if (!a.trace.empty()) {
       if (cfg.all_tlm()) throw InputError("--trace: the tlm model has no RTL unit to trace");
       cfg.trace.file = a.trace;
@@ -279,6 +283,9 @@ int main(int argc, char** argv) {
                             "system model: compare the base plane and every unit's stream with golden, bit-exact "
                             "(default: on when a unit runs at RTL; exit 3 on a mismatch)");
   render->add_flag_callback("--no-check", [&ra] { ra.check = 0; }, "system model: no comparison with golden");
+  render->add_option("--frames", ra.frames,
+                     "system model: stream N frames of the view back to back and measure the steady-state interval")
+      ->check(CLI::Range(1, 1000));
   render->add_flag("--simulate-all", ra.simulate_all,
                    "system model: simulate the gradient unit even if the scene needs none (to measure the saving)");
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");

@@ -2,7 +2,8 @@
 
 namespace cube4::sysc {
 
-StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem) : plan_(plan), mem_(mem) {
+StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, int frames)
+    : plan_(plan), mem_(mem), frames_(frames) {
   traversal_.perm = plan.r.perm;
   traversal_.flip = plan.r.flip;
 }
@@ -40,7 +41,10 @@ VoxelBeat StreamFormer::next() {
     j_ = 0;
     if (++y_ > plan_.ny) {
       y_ = 0;
-      ++pass_;
+      if (++pass_ == plan_.passes) {
+        pass_ = 0;
+        ++frame_;
+      }
     }
   }
   return b;

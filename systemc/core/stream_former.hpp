@@ -15,16 +15,18 @@ namespace cube4::sysc {
 
 class StreamFormer {
  public:
-  StreamFormer(const FramePlan& plan, VoxelMemory& mem);
-  // The beat of this cycle (valid = false once the frame's stream is out).
+  // `frames` frames of the same view back to back, with no gap.
+  StreamFormer(const FramePlan& plan, VoxelMemory& mem, int frames = 1);
+  // The beat of this cycle (valid = false once the last frame's stream is out).
   VoxelBeat next();
-  bool done() const { return pass_ >= plan_.passes; }
+  bool done() const { return frame_ >= frames_; }
   uint64_t beats() const { return beats_; }
 
  private:
   const FramePlan& plan_;
   VoxelMemory& mem_;
   golden::SkewTraversal traversal_;
+  int frames_ = 1, frame_ = 0;
   int pass_ = 0, y_ = 0, j_ = 0;
   uint64_t beats_ = 0;
 };

@@ -50,6 +50,8 @@ struct FrameUnits {
   uint64_t total_beats = 1;
   uint64_t cycle = 0, done_cycle = 0;
   uint64_t last_valid[4] = {0, 0, 0, 0};  // last cycle each link carried a beat
+  int frames = 1;
+  std::vector<uint64_t> frame_done_cycles;  // the cycle each frame's last pixel was written
   bool done = false;
 };
 
@@ -89,8 +91,11 @@ void composite_edge(FrameUnits& u, const ShadedBeat& in) {
   CompositeOut out;
   u.composite->clock(in, out);
   if (out.frame_done) {
-    u.done = true;
-    u.done_cycle = u.cycle;
+    u.frame_done_cycles.push_back(u.cycle);
+    if (static_cast<int>(u.frame_done_cycles.size()) == u.frames) {
+      u.done = true;
+      u.done_cycle = u.cycle;
+    }
   }
 }
 
@@ -212,6 +217,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     forced.gradient = true;
     rs = &forced;
   }
+  if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
   res.levels = cfg.levels;
@@ -259,7 +265,8 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     VoxelMemory mem(vol, cfg.p);
     PixelMemory pixels(r);
     FrameUnits u;
-    u.former = std::make_unique<StreamFormer>(plan, mem);
+    u.frames = cfg.frames;
+    u.former = std::make_unique<StreamFormer>(plan, mem, cfg.frames);
     const bool rtl[kUnits] = {cfg.levels[0] == Level::Rtl, cfg.levels[1] == Level::Rtl, cfg.levels[2] == Level::Rtl,
                               cfg.levels[3] == Level::Rtl};
     u.interp = rtl[0] ? make_rtl_interp(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmInterp>(plan);
@@ -283,7 +290,8 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       run_plain(u);
     }
     if (!u.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
-    res.frame_cycles = u.done_cycle;
+    res.frame_cycles = u.frame_done_cycles.front();
+    if (u.frames > 1) res.measured_interval = u.frame_done_cycles[1] - u.frame_done_cycles[0];
     res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_valid[3]};
     res.simulated_cycles = u.done_cycle;
     res.voxel_reads = mem.reads();

@@ -34,6 +34,7 @@ struct SystemConfig {
   TraceWindow trace;         // RTL units only
   bool check = false;        // compare every unit's output stream with golden
   bool simulate_unneeded = false;  // run the gradient unit even when the scene needs no gradients
+  int frames = 1;            // cycle-level runs: frames of the same view streamed back to back
   bool all_tlm() const {
     for (Level l : levels)
       if (l != Level::Tlm) return false;
@@ -52,6 +53,7 @@ struct Mismatch {
 struct SystemResult {
   golden::BasePlane plane;
   uint64_t frame_cycles = 0;    // first voxel beat to last pixel written (first-frame latency)
+  uint64_t measured_interval = 0;  // cycles between the last pixels of back-to-back frames (frames > 1)
   uint64_t stream_cycles = 0;   // voxel beats per frame: the steady-state interval of back-to-back frames
   uint64_t samples = 0;         // nx * ny * K rays-slices composited
   uint64_t voxel_reads = 0;     // voxel memory reads (one per module per read cycle)

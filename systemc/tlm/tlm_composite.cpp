@@ -3,7 +3,9 @@
 namespace cube4::sysc {
 
 TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels)
-    : plan_(plan), compositor_(plan.r, pixels.plane()), slice_(static_cast<size_t>(plan.nx) * plan.ny) {}
+    : plan_(plan), pixels_(pixels), slice_(static_cast<size_t>(plan.nx) * plan.ny) {
+  compositor_.emplace(plan.r, pixels.plane());
+}
 
 void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   out = CompositeOut{};
@@ -24,10 +26,11 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
     s = golden::crop_and_cut(plan_.r, c, x, y, slice_[static_cast<size_t>(y) * plan_.nx + x]);
     return true;
   };
-  compositor_.slice(c, shade, [](int) { return true; });
+  compositor_->slice(c, shade, [](int) { return true; });
   if (in.slice + 1 == static_cast<uint32_t>(plan_.K)) {
-    compositor_.finish();
+    compositor_->finish();
     out.frame_done = true;
+    compositor_.emplace(plan_.r, pixels_.plane());
   }
 }
 

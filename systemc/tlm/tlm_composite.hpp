@@ -4,6 +4,7 @@
 // Latency: a slice.
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "golden/slice_steps.hpp"
@@ -21,7 +22,8 @@ class TlmComposite final : public CompositeIf {
 
  private:
   const FramePlan& plan_;
-  golden::SliceCompositor compositor_;
+  PixelMemory& pixels_;
+  std::optional<golden::SliceCompositor> compositor_;  // a new one per frame
   std::vector<golden::ShadedSample> slice_;
 };
 

@@ -188,3 +188,30 @@ TEST(System, ThroughTheHostInterface) {
   EXPECT_GT(bus, 0.0) << "the host bus time is annotated";
 }
 }  // namespace
+
+// Frames streamed back to back: the first frame's last pixel comes at the
+// cycle model's latency, every next one exactly `stream` cycles later (the
+// steady-state interval), and the pixel memory holds the frame.
+namespace {
+void back_to_back(std::array<Level, 4> levels, bool cycle_level) {
+  const golden::Scene scene = golden::parse_scene(scene_json(Case{}), "test_system.json");
+  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
+  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.levels = levels;
+  cfg.cycle_level = cycle_level;
+  cfg.frames = 3;
+  cfg.check = true;
+  const sysc::SystemResult res = sysc::run_frame(regs, vol, cfg);
+  EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
+  EXPECT_EQ(res.plane.rgba, golden::render_fixed(vol, regs).rgba);
+  const sysc::CycleCount cc = sysc::frame_cycles(regs, 4);
+  EXPECT_EQ(res.measured_interval, cc.stream);
+  EXPECT_EQ(res.simulated_cycles, res.frame_cycles + 2 * cc.stream);
+  if (levels == kRtl) EXPECT_EQ(res.frame_cycles, cc.latency);
+}
+TEST(System, BackToBackFramesRtl) { back_to_back(kRtl, false); }
+TEST(System, BackToBackFramesMixed) { back_to_back(only(sysc::Unit::Gradient), false); }
+TEST(System, BackToBackFramesTlmClocked) { back_to_back(kTlm, true); }
+}  // namespace
