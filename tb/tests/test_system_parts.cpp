@@ -9,6 +9,7 @@
 #include "golden/registers.hpp"
 #include "golden/volume.hpp"
 #include "systemc/core/frame_plan.hpp"
+#include "systemc/core/stream_checker.hpp"
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/voxel_memory.hpp"
 
@@ -116,4 +117,50 @@ TEST(FramePlan, RefusesWhatTheStreamCannotCarry) {
   EXPECT_THROW(sysc::FramePlan(r, 0), std::invalid_argument);
 }
 
+}  // namespace
+
+// --check's stream checker names the unit, slice and sample of the first
+// difference (and takes golden's own values without complaint).
+namespace {
+TEST(StreamChecker, NamesTheFirstDifferingUnitSliceAndSample) {
+  golden::Volume vol = numbered(6, 5, 4);
+  for (auto& v : vol.data) v = static_cast<uint16_t>(v % 4096);
+  golden::Registers r;
+  r.dim = {6, 5, 4};
+  r.classification.resize(4096);
+  r.gradient = true;
+  const sysc::FramePlan plan(r, 4);
+  sysc::StreamChecker checker(plan, vol);
+  const golden::PermutedVolume pv(vol, r.perm, r.flip);
+  // Slice 0, beam 0: the samples are the voxels (zero weights): correct.
+  sysc::SampleBeat b;
+  b.valid = true;
+  b.f = {true, false, true, false};
+  b.tag = plan.pass_tag(0);
+  for (int k = 0; k < 4; ++k) b.sample[static_cast<size_t>(k)] = pv.at(k, 0, 0);
+  checker.samples(b);
+  EXPECT_FALSE(checker.first_mismatch());
+  // Second partial beam, x = 4, 5: one wrong value at x = 5.
+  b.f = {false, true, true, false};
+  b.sample = {};
+  b.sample[0] = pv.at(4, 0, 0);
+  b.sample[1] = static_cast<uint16_t>(pv.at(5, 0, 0) + 1);
+  checker.samples(b);
+  ASSERT_TRUE(checker.first_mismatch());
+  const sysc::Mismatch m = *checker.first_mismatch();
+  EXPECT_EQ(m.unit, sysc::Unit::Interp);
+  EXPECT_EQ(m.slice, 0);
+  EXPECT_EQ(m.x, 5);
+  EXPECT_EQ(m.y, 0);
+  EXPECT_NE(m.describe().find("interp unit, slice 0, sample (5, 0)"), std::string::npos) << m.describe();
+  // A wrong gradient later does not replace the earlier unit's report.
+  sysc::GradientBeat g;
+  g.valid = true;
+  g.slice = 2;
+  g.x = 0;
+  g.y = 3;
+  g.gx[0] = 99;
+  checker.gradients(g);
+  EXPECT_EQ(checker.first_mismatch()->unit, sysc::Unit::Interp);
+}
 }  // namespace
