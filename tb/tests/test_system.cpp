@@ -21,6 +21,12 @@ TEST(System, SphereP1) { run(Case{}, 1, kRtl); }
 TEST(System, SphereP4) { run(Case{}, 4, kRtl); }
 TEST(System, SphereP5) { run(Case{}, 5, kRtl); }
 TEST(System, SphereP8) { run(Case{}, 8, kRtl); }
+TEST(System, SphereP2) { run(Case{}, 2, kRtl); }
+TEST(System, SphereP16) {
+  Case c;
+  c.volume = R"({"synthetic": "sphere", "size": [37, 21, 19]})";
+  run(c, 16, kRtl);
+}
 TEST(System, SphereTlmP4) { run(Case{}, 4, kTlm); }
 TEST(System, SphereTlmP16) { run(Case{}, 16, kTlm); }
 // Every unit's TLM model clocked beat by beat (the models mixed runs use).
