@@ -38,7 +38,9 @@
 // width, CutBits x (AlphaBits + CutInvShift) bits.
 //
 // Parameters (defaults = golden Precision, kCutInvShift): VoxelBits,
-// WeightBits, AlphaBits, CutBits, CutInvShift; PosBits, CutCoefBits.
+// WeightBits, AlphaBits, CutBits, CutInvShift; PosBits, CutCoefBits;
+// HasCutPlane (0: no cut-plane hardware, cut_enabled_i is ignored; equals
+// golden with cut_enabled false; same latency).
 module cube4_composite #(
   parameter int unsigned VoxelBits   = 12,
   parameter int unsigned WeightBits  = 8,
@@ -46,7 +48,10 @@ module cube4_composite #(
   parameter int unsigned CutBits     = 32,
   parameter int unsigned CutInvShift = 24,
   parameter int unsigned PosBits     = 16,
-  parameter int unsigned CutCoefBits = 12
+  parameter int unsigned CutCoefBits = 12,
+  // 0: no cut-plane hardware (stages 1..5 keep their timing, the factor is
+  // one); for machines and scenes without a cut plane (docs/rtl-composite.md).
+  parameter bit          HasCutPlane = 1'b1
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -121,7 +126,7 @@ module cube4_composite #(
   logic [Latency-1:0] valid_q;
 
   ////////////////////////////////////////////////
-  // Stage 1: crop compares, products of d      //
+  // Stage 1: crop compares                     //
   ////////////////////////////////////////////////
   logic in_x, in_y, in_z, crop_visible;
   assign in_x = (crop_x_lo_i <= x_i) && (x_i <= crop_x_hi_i);
@@ -129,12 +134,6 @@ module cube4_composite #(
   assign in_z = (crop_z_lo_i <= z_i) && (z_i <= crop_z_hi_i);
   assign crop_visible = !crop_enabled_i || crop_mask_i[{in_z, in_y, in_x}];
 
-  logic signed [TermBits-1:0] term_x, term_y, term_z;
-  assign term_x = TermBits'(cut_a_i) * $signed(TermBits'({x_i, wx_i}));
-  assign term_y = TermBits'(cut_b_i) * $signed(TermBits'({y_i, wy_i}));
-  assign term_z = TermBits'(cut_c_i) * $signed(TermBits'({z_i, wz_i}));
-
-  logic signed [TermBits-1:0] term_x_q, term_y_q, term_z_q;
   logic [3:0]                 visible1_q;  // crop visibility, stages 1..4
   // Colour (stages 1..5), alpha (1..4) and value (1..6) delay lines,
   // stage k at [(k-1)*Width +: Width].
@@ -143,9 +142,6 @@ module cube4_composite #(
   logic [6*VoxelBits-1:0]     value_q;
 
   always_ff @(posedge clk_i) begin : stage1_regs
-    term_x_q      <= term_x;
-    term_y_q      <= term_y;
-    term_z_q      <= term_z;
     visible1_q[0] <= crop_visible;
     rgb_q[0 +: 3*A]           <= {red_i, green_i, blue_i};
     alpha_q[0 +: A]           <= alpha_i;
@@ -162,96 +158,122 @@ module cube4_composite #(
     end
   end
 
-  ///////////////////////////////////////////
-  // Stage 2: d = sat_signed(sum, CutBits) //
-  ///////////////////////////////////////////
-  localparam logic signed [DBits-1:0] DMax = DBits'((64'd1 << (CutBits - 1)) - 1);
+  // The cut factor of the sample in stage 5 (one: no cut-plane hardware).
+  logic [A-1:0] factor;
+  if (HasCutPlane) begin : g_cut_plane
+    ////////////////////////////////////////////////
+    // Stage 1: the three products of d           //
+    ////////////////////////////////////////////////
+    logic signed [TermBits-1:0] term_x, term_y, term_z;
+    assign term_x = TermBits'(cut_a_i) * $signed(TermBits'({x_i, wx_i}));
+    assign term_y = TermBits'(cut_b_i) * $signed(TermBits'({y_i, wy_i}));
+    assign term_z = TermBits'(cut_c_i) * $signed(TermBits'({z_i, wz_i}));
 
-  logic signed [DBits-1:0]   dist_sum;
-  logic signed [CutBits-1:0] dist_d, dist_q;
-  assign dist_sum = DBits'(term_x_q) + DBits'(term_y_q) + DBits'(term_z_q);
-  always_comb begin : saturate_distance
-    if (dist_sum > DMax) begin
-      dist_d = CutBits'(DMax);
-    end else if (dist_sum < -DMax) begin
-      dist_d = CutBits'(-DMax);
-    end else begin
-      dist_d = CutBits'(dist_sum);
+    logic signed [TermBits-1:0] term_x_q, term_y_q, term_z_q;
+    always_ff @(posedge clk_i) begin : stage1_terms
+      term_x_q <= term_x;
+      term_y_q <= term_y;
+      term_z_q <= term_z;
     end
-  end
 
-  always_ff @(posedge clk_i) begin : stage2_regs
-    dist_q <= dist_d;
-  end
+    ///////////////////////////////////////////
+    // Stage 2: d = sat_signed(sum, CutBits) //
+    ///////////////////////////////////////////
+    localparam logic signed [DBits-1:0] DMax = DBits'((64'd1 << (CutBits - 1)) - 1);
 
-  ////////////////////////////////////////////////////////////
-  // Stage 3: distance outside [dmin, dmax], against falloff //
-  ////////////////////////////////////////////////////////////
-  // d - dmin and d - dmax fit CutBits+1 signed bits; the outside distance
-  // (dmin - d or d - dmax, when positive) fits CutBits unsigned bits.
-  logic signed [CutBits:0] below_diff, above_diff;
-  logic                    below, above;
-  logic [CutBits-1:0]      outside;
-  assign below_diff = (CutBits+1)'(cut_dmin_i) - (CutBits+1)'(dist_q);
-  assign above_diff = (CutBits+1)'(dist_q) - (CutBits+1)'(cut_dmax_i);
-  assign below      = dist_q < cut_dmin_i;
-  assign above      = dist_q > cut_dmax_i;
-  assign outside    = below ? below_diff[CutBits-1:0]
-                    : above ? above_diff[CutBits-1:0] : '0;
-
-  logic unused_diff_msbs;
-  assign unused_diff_msbs = below_diff[CutBits] ^ above_diff[CutBits];
-
-  logic               in_slab_q, beyond_q;
-  logic [CutBits-1:0] ramp_span_q;
-  always_ff @(posedge clk_i) begin : stage3_regs
-    in_slab_q   <= !below && !above;
-    beyond_q    <= outside >= cut_falloff_i;
-    ramp_span_q <= cut_falloff_i - outside;  // used only when outside < falloff
-  end
-
-  ////////////////////////////////////////////////////////////////////////
-  // Stage 4: ramp = round_shift(span * inv_falloff, CutInvShift), <= one //
-  ////////////////////////////////////////////////////////////////////////
-  localparam logic [RampBits-1:0] RampHalf = RampBits'(1) << (CutInvShift - 1);
-
-  logic [RampBits-1:0] ramp_prod;
-  logic [A-1:0]        ramp_d, ramp_q;
-  logic                in_slab_qq, beyond_qq;
-  assign ramp_prod = RampBits'(ramp_span_q) * RampBits'(cut_inv_falloff_i) + RampHalf;
-  // ramp > one iff any bit above the A bits of (prod + half) >> CutInvShift.
-  assign ramp_d = (|ramp_prod[RampBits-1:CutInvShift+A]) ? {A{1'b1}}
-                                                          : ramp_prod[CutInvShift+A-1:CutInvShift];
-
-  logic unused_ramp_lsbs;
-  assign unused_ramp_lsbs = ^ramp_prod[CutInvShift-1:0];
-
-  always_ff @(posedge clk_i) begin : stage4_regs
-    ramp_q     <= ramp_d;
-    in_slab_qq <= in_slab_q;
-    beyond_qq  <= beyond_q;
-  end
-
-  ////////////////////////////////////////////////
-  // Stage 5: cut factor, cut_alpha, visibility //
-  ////////////////////////////////////////////////
-  logic [A-1:0] inside_factor, factor;
-  always_comb begin : cut_factor
-    if (in_slab_qq) begin
-      inside_factor = {A{1'b1}};
-    end else if (beyond_qq) begin
-      inside_factor = '0;
-    end else begin
-      inside_factor = ramp_q;
+    logic signed [DBits-1:0]   dist_sum;
+    logic signed [CutBits-1:0] dist_d, dist_q;
+    assign dist_sum = DBits'(term_x_q) + DBits'(term_y_q) + DBits'(term_z_q);
+    always_comb begin : saturate_distance
+      if (dist_sum > DMax) begin
+        dist_d = CutBits'(DMax);
+      end else if (dist_sum < -DMax) begin
+        dist_d = CutBits'(-DMax);
+      end else begin
+        dist_d = CutBits'(dist_sum);
+      end
     end
-    factor = cut_keep_inside_i ? inside_factor : {A{1'b1}} - inside_factor;
+
+    always_ff @(posedge clk_i) begin : stage2_regs
+      dist_q <= dist_d;
+    end
+
+    ////////////////////////////////////////////////////////////
+    // Stage 3: distance outside [dmin, dmax], against falloff //
+    ////////////////////////////////////////////////////////////
+    // d - dmin and d - dmax fit CutBits+1 signed bits; the outside distance
+    // (dmin - d or d - dmax, when positive) fits CutBits unsigned bits.
+    logic signed [CutBits:0] below_diff, above_diff;
+    logic                    below, above;
+    logic [CutBits-1:0]      outside;
+    assign below_diff = (CutBits+1)'(cut_dmin_i) - (CutBits+1)'(dist_q);
+    assign above_diff = (CutBits+1)'(dist_q) - (CutBits+1)'(cut_dmax_i);
+    assign below      = dist_q < cut_dmin_i;
+    assign above      = dist_q > cut_dmax_i;
+    assign outside    = below ? below_diff[CutBits-1:0]
+                      : above ? above_diff[CutBits-1:0] : '0;
+
+    logic unused_diff_msbs;
+    assign unused_diff_msbs = below_diff[CutBits] ^ above_diff[CutBits];
+
+    logic               in_slab_q, beyond_q;
+    logic [CutBits-1:0] ramp_span_q;
+    always_ff @(posedge clk_i) begin : stage3_regs
+      in_slab_q   <= !below && !above;
+      beyond_q    <= outside >= cut_falloff_i;
+      ramp_span_q <= cut_falloff_i - outside;  // used only when outside < falloff
+    end
+
+    ////////////////////////////////////////////////////////////////////////
+    // Stage 4: ramp = round_shift(span * inv_falloff, CutInvShift), <= one //
+    ////////////////////////////////////////////////////////////////////////
+    localparam logic [RampBits-1:0] RampHalf = RampBits'(1) << (CutInvShift - 1);
+
+    logic [RampBits-1:0] ramp_prod;
+    logic [A-1:0]        ramp_d, ramp_q;
+    logic                in_slab_qq, beyond_qq;
+    assign ramp_prod = RampBits'(ramp_span_q) * RampBits'(cut_inv_falloff_i) + RampHalf;
+    // ramp > one iff any bit above the A bits of (prod + half) >> CutInvShift.
+    assign ramp_d = (|ramp_prod[RampBits-1:CutInvShift+A]) ? {A{1'b1}}
+                                                            : ramp_prod[CutInvShift+A-1:CutInvShift];
+
+    logic unused_ramp_lsbs;
+    assign unused_ramp_lsbs = ^ramp_prod[CutInvShift-1:0];
+
+    always_ff @(posedge clk_i) begin : stage4_regs
+      ramp_q     <= ramp_d;
+      in_slab_qq <= in_slab_q;
+      beyond_qq  <= beyond_q;
+    end
+
+    ////////////////////////////////////////////////
+    // Stage 5: cut factor, cut_alpha, visibility //
+    ////////////////////////////////////////////////
+    logic [A-1:0] inside_factor;
+    always_comb begin : cut_factor
+      if (in_slab_qq) begin
+        inside_factor = {A{1'b1}};
+      end else if (beyond_qq) begin
+        inside_factor = '0;
+      end else begin
+        inside_factor = ramp_q;
+      end
+      factor = cut_keep_inside_i ? inside_factor : {A{1'b1}} - inside_factor;
+    end
+  end else begin : g_no_cut_plane
+    assign factor = {A{1'b1}};
+    // The cut-plane registers and the weights (used only for d) stay ports,
+    // so that both variants connect alike.
+    logic unused_cut_inputs;
+    assign unused_cut_inputs = ^{cut_a_i, cut_b_i, cut_c_i, cut_dmin_i, cut_dmax_i, cut_falloff_i,
+                                 cut_inv_falloff_i, cut_keep_inside_i, wx_i, wy_i, wz_i};
   end
 
   logic [A-1:0] cut_alpha_q;
   logic         visible_q;
   always_ff @(posedge clk_i) begin : stage5_regs
-    cut_alpha_q <= cut_enabled_i ? mul_frac(alpha_q[3*A +: A], factor) : alpha_q[3*A +: A];
-    visible_q   <= visible1_q[3] && (!cut_enabled_i || factor != '0);
+    cut_alpha_q <= (HasCutPlane && cut_enabled_i) ? mul_frac(alpha_q[3*A +: A], factor) : alpha_q[3*A +: A];
+    visible_q   <= visible1_q[3] && (!(HasCutPlane && cut_enabled_i) || factor != '0);
   end
 
   ///////////////////////////////////////////

@@ -22,7 +22,7 @@
 //   NumPipes                          - p, pipelines (>= 1)
 //   VoxelBits, WeightBits, AlphaBits,
 //   CutBits, CutInvShift, PosBits,
-//   CutCoefBits                       - as cube4_composite
+//   CutCoefBits, HasCutPlane          - as cube4_composite
 //   MaxDim                            - largest nx and ny the ray storage holds
 //   BeamDepth, SliceDepth             - (derived) per-pipeline ray beam delay
 //                                       and ray slice store entries:
@@ -36,6 +36,7 @@ module cube4_composite_ring #(
   parameter int unsigned  CutInvShift = 24,
   parameter int unsigned  PosBits     = 16,
   parameter int unsigned  CutCoefBits = 12,
+  parameter bit           HasCutPlane = 1'b1,
   parameter int unsigned  MaxDim      = 256,
   localparam int unsigned BeamDepth   = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth  = MaxDim * BeamDepth
@@ -119,6 +120,7 @@ module cube4_composite_ring #(
       .CutInvShift(CutInvShift),
       .PosBits    (PosBits),
       .CutCoefBits(CutCoefBits),
+      .HasCutPlane(HasCutPlane),
       .BeamDepth  (BeamDepth),
       .SliceDepth (SliceDepth),
       .WrapIn     (k == 0)

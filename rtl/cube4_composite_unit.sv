@@ -77,6 +77,7 @@
 // Parameters:
 //   VoxelBits, WeightBits, AlphaBits, CutBits, CutInvShift, PosBits,
 //   CutCoefBits           - as cube4_composite (golden Precision defaults)
+//   HasCutPlane           - as cube4_composite (0: no cut-plane hardware)
 //   BeamDepth             - ray beam delay entries: max partial beams per beam
 //   SliceDepth            - ray slice store entries: max ny * partial beams
 //   WrapIn                - 1 for pipeline 0: link_i is pipeline p-1's link_o
@@ -91,6 +92,7 @@ module cube4_composite_unit #(
   parameter int unsigned  CutInvShift = 24,
   parameter int unsigned  PosBits     = 16,
   parameter int unsigned  CutCoefBits = 12,
+  parameter bit           HasCutPlane = 1'b1,
   parameter int unsigned  BeamDepth   = 64,
   parameter int unsigned  SliceDepth  = 16384,
   parameter bit           WrapIn      = 1'b0,
@@ -225,7 +227,8 @@ module cube4_composite_unit #(
     .CutBits    (CutBits),
     .CutInvShift(CutInvShift),
     .PosBits    (PosBits),
-    .CutCoefBits(CutCoefBits)
+    .CutCoefBits(CutCoefBits),
+    .HasCutPlane(HasCutPlane)
   ) u_composite (
     .clk_i            (clk_i),
     .rst_ni           (rst_ni),

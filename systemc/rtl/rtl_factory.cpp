@@ -72,8 +72,10 @@ std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext&
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
                                                 const TraceWindow& trace) {
   switch (plan.p) {
-#define CUBE4_RTL_P(p) \
-  case p: return std::make_unique<RtlComposite<Vsys_composite_p##p>>(plan, pixels, ctx, trace);
+#define CUBE4_RTL_P(p)                                                                              \
+  case p:                                                                                           \
+    if (plan.r.cut_enabled) return std::make_unique<RtlComposite<Vsys_composite_p##p>>(plan, pixels, ctx, trace); \
+    return std::make_unique<RtlComposite<Vsys_composite_nocut_p##p>>(plan, pixels, ctx, trace);
 #include "rtl_variant_list.inc"
 #undef CUBE4_RTL_P
     default: unavailable(plan.p);

@@ -25,6 +25,8 @@ void require_rtl(int p);
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
+// Scenes without a cut plane get the ring without cut-plane hardware
+// (HasCutPlane = 0): that logic is not simulated.
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
                                                 const TraceWindow& trace);
 

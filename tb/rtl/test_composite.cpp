@@ -27,6 +27,7 @@
 
 #include "Vcube4_composite.h"
 #include "Vcube4_composite_narrow.h"
+#include "Vcube4_composite_nocut.h"
 #include "golden/host_driver.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/scene_io.hpp"
@@ -161,8 +162,11 @@ g::RayAcc golden_composite(const CompIn& in, const g::Precision& p) {
 template <class M>
 class CompositeBench {
  public:
-  explicit CompositeBench(const Widths& widths = kW, const std::string& name = "cube4_composite")
-      : m(std::make_unique<M>()), sb(name, kLatency), w(widths), junk_(9001) {
+  // has_cut_plane = false: a variant without cut-plane hardware (HasCutPlane
+  // = 0), which equals golden with the cut plane off whatever cut_enabled_i says.
+  explicit CompositeBench(const Widths& widths = kW, const std::string& name = "cube4_composite",
+                          bool has_cut_plane = true)
+      : m(std::make_unique<M>()), sb(name, kLatency), w(widths), has_cut_plane_(has_cut_plane), junk_(9001) {
     m->valid_i = 0;
     rtl::reset(*m);
   }
@@ -193,6 +197,7 @@ class CompositeBench {
 
   void step(bool valid, CompIn in) {
     in.cfg = cfg;
+    if (!has_cut_plane_) in.cfg.cut_enabled = false;
     const g::Precision& p = w.p;
     const int a = p.alpha_bits;
     m->valid_i = valid;
@@ -314,6 +319,7 @@ class CompositeBench {
     return in;
   }
 
+  bool has_cut_plane_ = true;
   std::deque<std::pair<uint64_t, g::RayAcc>> pending_;
   Random junk_;
 };
@@ -673,6 +679,28 @@ TEST(RtlComposite, MipMinIpTiesAndAlphaExtremes) {
 }
 
 TEST(RtlComposite, HostDriverCropAndCut) { composite_host<Vcube4_composite>(kW, "cube4_composite", ""); }
+
+// Without cut-plane hardware (HasCutPlane = 0, what the system uses for
+// scenes without a cut plane): random frames with the cut plane enabled in
+// the registers half the time, which the variant ignores; golden has it off.
+TEST(RtlComposite, WithoutCutPlaneHardware) {
+  CompositeBench<Vcube4_composite_nocut> b(kW, "cube4_composite (HasCutPlane=0)", false);
+  Random rnd(907);
+  long n = 0;
+  const long total = rtl::vector_count(300000);
+  while (n < total) {
+    b.configure(random_config(rnd, kW, 63));
+    for (int i = 0; i < 3000; ++i) {
+      const bool v = !rnd.chance(0.2);
+      b.step(v, random_sample(rnd, kW, 63));
+      n += v;
+    }
+  }
+  EXPECT_TRUE(b.result());
+  EXPECT_GT(b.coverage.crop_hidden, 0u);
+  EXPECT_GT(b.coverage.ftb_opaque, 0u);
+  EXPECT_EQ(b.coverage.cut_ramp + b.coverage.cut_zero, 0u) << "the variant must see no cut plane";
+}
 
 TEST(RtlComposite, OtherWidths) {
   const Widths w = narrow_widths();
