@@ -17,7 +17,10 @@
 // them only with no sample in flight).
 //
 // Parameters: those of cube4_shader and cube4_magnitude (NrIterations);
-// SideBits as in cube4_shader.
+// SideBits and HasShading as in cube4_shader; HasMagnitude (0: no magnitude
+// unit, |g| = 0: equals golden when the magnitude is off, same latency).
+// The system model runs HasShading = HasMagnitude = 0 for scenes without
+// shading and gradient-magnitude modulation (docs/system.md).
 module cube4_shade_unit #(
   parameter int unsigned VoxelBits       = 12,
   parameter int unsigned WeightBits      = 8,
@@ -35,6 +38,9 @@ module cube4_shade_unit #(
   parameter int unsigned EyeBits         = 8,
   parameter int unsigned DivBitsPerStage = 2,
   parameter int unsigned SideBits        = 1,
+  parameter bit          HasShading      = 1'b1,
+  // 0: no magnitude hardware (|g| reads 0; for scenes that use no GmLUT).
+  parameter bit          HasMagnitude    = 1'b1,
   localparam int unsigned MapAddrBits    = $clog2(6 * MapFaceRes * MapFaceRes)
 ) (
   input  logic                              clk_i,
@@ -93,20 +99,35 @@ module cube4_shade_unit #(
   logic                     mag_valid;
   logic [MagnitudeBits-1:0] magnitude;
 
-  cube4_magnitude #(
-    .GradientBits  (GradientBits),
-    .MagnitudeBits (MagnitudeBits),
-    .NrIterations  (NrIterations)
-  ) u_magnitude (
-    .clk_i,
-    .rst_ni,
-    .valid_i,
-    .gx_i        (grad_x_i),
-    .gy_i        (grad_y_i),
-    .gz_i        (grad_z_i),
-    .valid_o     (mag_valid),
-    .magnitude_o (magnitude)
-  );
+  if (HasMagnitude) begin : g_magnitude
+    cube4_magnitude #(
+      .GradientBits  (GradientBits),
+      .MagnitudeBits (MagnitudeBits),
+      .NrIterations  (NrIterations)
+    ) u_magnitude (
+      .clk_i,
+      .rst_ni,
+      .valid_i,
+      .gx_i        (grad_x_i),
+      .gy_i        (grad_y_i),
+      .gz_i        (grad_z_i),
+      .valid_o     (mag_valid),
+      .magnitude_o (magnitude)
+    );
+  end else begin : g_no_magnitude
+    // valid waits as long as the magnitude would take.
+    logic [MagLatency-1:0] valid_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin : valid_delay
+      if (!rst_ni) begin
+        valid_q <= '0;
+      end else begin
+        valid_q[0] <= valid_i;
+        for (int unsigned k = 1; k < MagLatency; k++) valid_q[k] <= valid_q[k-1];
+      end
+    end
+    assign mag_valid = valid_q[MagLatency-1];
+    assign magnitude = '0;
+  end
 
   // Sample, gradient and side bits wait for their magnitude. Not reset: the
   // magnitude's valid chain says when they mean something.
@@ -138,7 +159,8 @@ module cube4_shade_unit #(
     .CoefFracBits    (CoefFracBits),
     .EyeBits         (EyeBits),
     .DivBitsPerStage (DivBitsPerStage),
-    .SideBits        (SideBits)
+    .SideBits        (SideBits),
+    .HasShading      (HasShading)
   ) u_shader (
     .clk_i,
     .rst_ni,

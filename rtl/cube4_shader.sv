@@ -36,7 +36,9 @@
 // GradientBits, MagnitudeBits, ColorBits, AlphaBits, GmlutBits, MapFaceRes,
 // MapBits, MapFracBits, CoefBits, CoefFracBits, EyeBits; DivBitsPerStage
 // (cube_coord divider); SideBits (side_i travels to side_o with the sample,
-// Latency cycles, for the system's per-sample position and tag).
+// Latency cycles, for the system's per-sample position and tag);
+// HasShading (0: no shading hardware, for machines and scenes without it;
+// shading_i is then ignored and the unit equals golden with shading off).
 module cube4_shader #(
   parameter int unsigned VoxelBits       = 12,
   parameter int unsigned WeightBits      = 8,
@@ -52,7 +54,10 @@ module cube4_shader #(
   parameter int unsigned CoefFracBits    = 8,
   parameter int unsigned EyeBits         = 8,
   parameter int unsigned DivBitsPerStage = 2,
-  parameter int unsigned SideBits        = 1
+  parameter int unsigned SideBits        = 1,
+  // 0: no reflectance maps, reflection or Phong hardware: the colour is the
+  // classified colour (golden with shading off), same latency.
+  parameter bit          HasShading      = 1'b1
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -116,146 +121,6 @@ module cube4_shader #(
   localparam int unsigned ClassDelay = PhongIn - LatClass;
   localparam int unsigned Latency    = PhongIn + LatPhong;
   localparam int unsigned A          = AlphaBits;
-
-  ///////////////////////////////
-  // Diffuse path: g -> Id     //
-  ///////////////////////////////
-  logic                  dcc_valid, dcc_coord_valid;
-  logic [2:0]            dcc_face;
-  logic [CellBits-1:0]   dcc_u, dcc_v;
-  logic [WeightBits:0]   dcc_wu, dcc_wv;
-
-  cube4_shade_cube_coord #(
-    .GradientBits    (GradientBits),
-    .WeightBits      (WeightBits),
-    .MapFaceRes      (MapFaceRes),
-    .DivBitsPerStage (DivBitsPerStage)
-  ) u_diffuse_coord (
-    .clk_i,
-    .rst_ni,
-    .valid_i,
-    .x_i           (grad_x_i),
-    .y_i           (grad_y_i),
-    .z_i           (grad_z_i),
-    .valid_o       (dcc_valid),
-    .coord_valid_o (dcc_coord_valid),
-    .face_o        (dcc_face),
-    .u_o           (dcc_u),
-    .v_o           (dcc_v),
-    .wu_o          (dcc_wu),
-    .wv_o          (dcc_wv)
-  );
-
-  logic               dmap_valid;
-  logic [MapBits-1:0] id_early;
-
-  cube4_shade_reflectance #(
-    .WeightBits (WeightBits),
-    .MapFaceRes (MapFaceRes),
-    .MapBits    (MapBits)
-  ) u_diffuse_map (
-    .clk_i,
-    .rst_ni,
-    .we_i          (dmap_we_i),
-    .waddr_i       (dmap_waddr_i),
-    .wdata_i       (dmap_wdata_i),
-    .valid_i       (dcc_valid),
-    .coord_valid_i (dcc_coord_valid),
-    .face_i        (dcc_face),
-    .u_i           (dcc_u),
-    .v_i           (dcc_v),
-    .wu_i          (dcc_wu),
-    .wv_i          (dcc_wv),
-    .valid_o       (dmap_valid),
-    .value_o       (id_early)
-  );
-
-  // Id waits for the reflection vector's latency.
-  logic [LatRefl*MapBits-1:0] id_delay_q;
-  always_ff @(posedge clk_i) begin : id_delay
-    id_delay_q[0 +: MapBits] <= id_early;
-    for (int unsigned k = 1; k < LatRefl; k++) begin
-      id_delay_q[k*MapBits +: MapBits] <= id_delay_q[(k-1)*MapBits +: MapBits];
-    end
-  end
-
-  logic [MapBits-1:0] id;
-  assign id = id_delay_q[(LatRefl-1)*MapBits +: MapBits];
-
-  ////////////////////////////////////////
-  // Specular path: g -> R -> Is        //
-  ////////////////////////////////////////
-  logic                           refl_valid;
-  logic signed [GradientBits-1:0] refl_x, refl_y, refl_z;
-
-  cube4_shade_reflection #(
-    .GradientBits (GradientBits),
-    .EyeBits      (EyeBits)
-  ) u_reflection (
-    .clk_i,
-    .rst_ni,
-    .eye_x_i,
-    .eye_y_i,
-    .eye_z_i,
-    .valid_i,
-    .x_i     (grad_x_i),
-    .y_i     (grad_y_i),
-    .z_i     (grad_z_i),
-    .valid_o (refl_valid),
-    .x_o     (refl_x),
-    .y_o     (refl_y),
-    .z_o     (refl_z)
-  );
-
-  logic                  scc_valid, scc_coord_valid;
-  logic [2:0]            scc_face;
-  logic [CellBits-1:0]   scc_u, scc_v;
-  logic [WeightBits:0]   scc_wu, scc_wv;
-
-  cube4_shade_cube_coord #(
-    .GradientBits    (GradientBits),
-    .WeightBits      (WeightBits),
-    .MapFaceRes      (MapFaceRes),
-    .DivBitsPerStage (DivBitsPerStage)
-  ) u_specular_coord (
-    .clk_i,
-    .rst_ni,
-    .valid_i       (refl_valid),
-    .x_i           (refl_x),
-    .y_i           (refl_y),
-    .z_i           (refl_z),
-    .valid_o       (scc_valid),
-    .coord_valid_o (scc_coord_valid),
-    .face_o        (scc_face),
-    .u_o           (scc_u),
-    .v_o           (scc_v),
-    .wu_o          (scc_wu),
-    .wv_o          (scc_wv)
-  );
-
-  logic               smap_valid;
-  logic [MapBits-1:0] is_value;
-
-  cube4_shade_reflectance #(
-    .WeightBits (WeightBits),
-    .MapFaceRes (MapFaceRes),
-    .MapBits    (MapBits)
-  ) u_specular_map (
-    .clk_i,
-    .rst_ni,
-    .we_i          (smap_we_i),
-    .waddr_i       (smap_waddr_i),
-    .wdata_i       (smap_wdata_i),
-    .valid_i       (scc_valid),
-    .coord_valid_i (scc_coord_valid),
-    .face_i        (scc_face),
-    .u_i           (scc_u),
-    .v_i           (scc_v),
-    .wu_i          (scc_wu),
-    .wv_i          (scc_wv),
-    .valid_o       (smap_valid),
-    .value_o       (is_value)
-  );
 
   /////////////////////////////////////////////
   // Classification, timed to meet Id and Is //
@@ -321,49 +186,227 @@ module cube4_shader #(
     .gm_o       (gm)
   );
 
-  ///////////
-  // Phong //
-  ///////////
-  // Modes as coefficients (see the header): shading off = identity.
-  localparam logic [CoefBits-1:0] CoefOne = CoefBits'(64'd1 << CoefFracBits);
+  //////////////////////////////////////////////////////
+  // Shading: reflectance maps (diffuse and specular), //
+  // Phong. Absent when HasShading = 0.                 //
+  //////////////////////////////////////////////////////
+  if (HasShading) begin : g_shading
+    ///////////////////////////////
+    // Diffuse path: g -> Id     //
+    ///////////////////////////////
+    logic                  dcc_valid, dcc_coord_valid;
+    logic [2:0]            dcc_face;
+    logic [CellBits-1:0]   dcc_u, dcc_v;
+    logic [WeightBits:0]   dcc_wu, dcc_wv;
 
-  logic [CoefBits-1:0] ke_eff, kd_eff, ks_eff;
-  assign ke_eff = shading_i ? ke_i : CoefOne;
-  assign kd_eff = shading_i ? kd_i : '0;
-  assign ks_eff = (shading_i && specular_i) ? ks_i : '0;
+    cube4_shade_cube_coord #(
+      .GradientBits    (GradientBits),
+      .WeightBits      (WeightBits),
+      .MapFaceRes      (MapFaceRes),
+      .DivBitsPerStage (DivBitsPerStage)
+    ) u_diffuse_coord (
+      .clk_i,
+      .rst_ni,
+      .valid_i,
+      .x_i           (grad_x_i),
+      .y_i           (grad_y_i),
+      .z_i           (grad_z_i),
+      .valid_o       (dcc_valid),
+      .coord_valid_o (dcc_coord_valid),
+      .face_o        (dcc_face),
+      .u_o           (dcc_u),
+      .v_o           (dcc_v),
+      .wu_o          (dcc_wu),
+      .wv_o          (dcc_wv)
+    );
 
-  logic [A-1:0] gd, gs;
-  assign gd = gm_diffuse_i ? gm : {A{1'b1}};
-  assign gs = gm_specular_i ? gm : {A{1'b1}};
+    logic               dmap_valid;
+    logic [MapBits-1:0] id_early;
 
-  cube4_shade_phong #(
-    .AlphaBits    (AlphaBits),
-    .MapBits      (MapBits),
-    .MapFracBits  (MapFracBits),
-    .CoefBits     (CoefBits),
-    .CoefFracBits (CoefFracBits)
-  ) u_phong (
-    .clk_i,
-    .rst_ni,
-    .ke_i         (ke_eff),
-    .kd_i         (kd_eff),
-    .ks_i         (ks_eff),
-    .spec_red_i,
-    .spec_green_i,
-    .spec_blue_i,
-    .valid_i      (smap_valid),
-    .red_i        (class_red),
-    .green_i      (class_green),
-    .blue_i       (class_blue),
-    .id_i         (id),
-    .is_i         (is_value),
-    .gd_i         (gd),
-    .gs_i         (gs),
-    .valid_o,
-    .red_o,
-    .green_o,
-    .blue_o
-  );
+    cube4_shade_reflectance #(
+      .WeightBits (WeightBits),
+      .MapFaceRes (MapFaceRes),
+      .MapBits    (MapBits)
+    ) u_diffuse_map (
+      .clk_i,
+      .rst_ni,
+      .we_i          (dmap_we_i),
+      .waddr_i       (dmap_waddr_i),
+      .wdata_i       (dmap_wdata_i),
+      .valid_i       (dcc_valid),
+      .coord_valid_i (dcc_coord_valid),
+      .face_i        (dcc_face),
+      .u_i           (dcc_u),
+      .v_i           (dcc_v),
+      .wu_i          (dcc_wu),
+      .wv_i          (dcc_wv),
+      .valid_o       (dmap_valid),
+      .value_o       (id_early)
+    );
+
+    // Id waits for the reflection vector's latency.
+    logic [LatRefl*MapBits-1:0] id_delay_q;
+    always_ff @(posedge clk_i) begin : id_delay
+      id_delay_q[0 +: MapBits] <= id_early;
+      for (int unsigned k = 1; k < LatRefl; k++) begin
+        id_delay_q[k*MapBits +: MapBits] <= id_delay_q[(k-1)*MapBits +: MapBits];
+      end
+    end
+
+    logic [MapBits-1:0] id;
+    assign id = id_delay_q[(LatRefl-1)*MapBits +: MapBits];
+
+    ////////////////////////////////////////
+    // Specular path: g -> R -> Is        //
+    ////////////////////////////////////////
+    logic                           refl_valid;
+    logic signed [GradientBits-1:0] refl_x, refl_y, refl_z;
+
+    cube4_shade_reflection #(
+      .GradientBits (GradientBits),
+      .EyeBits      (EyeBits)
+    ) u_reflection (
+      .clk_i,
+      .rst_ni,
+      .eye_x_i,
+      .eye_y_i,
+      .eye_z_i,
+      .valid_i,
+      .x_i     (grad_x_i),
+      .y_i     (grad_y_i),
+      .z_i     (grad_z_i),
+      .valid_o (refl_valid),
+      .x_o     (refl_x),
+      .y_o     (refl_y),
+      .z_o     (refl_z)
+    );
+
+    logic                  scc_valid, scc_coord_valid;
+    logic [2:0]            scc_face;
+    logic [CellBits-1:0]   scc_u, scc_v;
+    logic [WeightBits:0]   scc_wu, scc_wv;
+
+    cube4_shade_cube_coord #(
+      .GradientBits    (GradientBits),
+      .WeightBits      (WeightBits),
+      .MapFaceRes      (MapFaceRes),
+      .DivBitsPerStage (DivBitsPerStage)
+    ) u_specular_coord (
+      .clk_i,
+      .rst_ni,
+      .valid_i       (refl_valid),
+      .x_i           (refl_x),
+      .y_i           (refl_y),
+      .z_i           (refl_z),
+      .valid_o       (scc_valid),
+      .coord_valid_o (scc_coord_valid),
+      .face_o        (scc_face),
+      .u_o           (scc_u),
+      .v_o           (scc_v),
+      .wu_o          (scc_wu),
+      .wv_o          (scc_wv)
+    );
+
+    logic               smap_valid;
+    logic [MapBits-1:0] is_value;
+
+    cube4_shade_reflectance #(
+      .WeightBits (WeightBits),
+      .MapFaceRes (MapFaceRes),
+      .MapBits    (MapBits)
+    ) u_specular_map (
+      .clk_i,
+      .rst_ni,
+      .we_i          (smap_we_i),
+      .waddr_i       (smap_waddr_i),
+      .wdata_i       (smap_wdata_i),
+      .valid_i       (scc_valid),
+      .coord_valid_i (scc_coord_valid),
+      .face_i        (scc_face),
+      .u_i           (scc_u),
+      .v_i           (scc_v),
+      .wu_i          (scc_wu),
+      .wv_i          (scc_wv),
+      .valid_o       (smap_valid),
+      .value_o       (is_value)
+    );
+
+    ///////////
+    // Phong //
+    ///////////
+    // Modes as coefficients (see the header): shading off = identity.
+    localparam logic [CoefBits-1:0] CoefOne = CoefBits'(64'd1 << CoefFracBits);
+
+    logic [CoefBits-1:0] ke_eff, kd_eff, ks_eff;
+    assign ke_eff = shading_i ? ke_i : CoefOne;
+    assign kd_eff = shading_i ? kd_i : '0;
+    assign ks_eff = (shading_i && specular_i) ? ks_i : '0;
+
+    logic [A-1:0] gd, gs;
+    assign gd = gm_diffuse_i ? gm : {A{1'b1}};
+    assign gs = gm_specular_i ? gm : {A{1'b1}};
+
+    cube4_shade_phong #(
+      .AlphaBits    (AlphaBits),
+      .MapBits      (MapBits),
+      .MapFracBits  (MapFracBits),
+      .CoefBits     (CoefBits),
+      .CoefFracBits (CoefFracBits)
+    ) u_phong (
+      .clk_i,
+      .rst_ni,
+      .ke_i         (ke_eff),
+      .kd_i         (kd_eff),
+      .ks_i         (ks_eff),
+      .spec_red_i,
+      .spec_green_i,
+      .spec_blue_i,
+      .valid_i      (smap_valid),
+      .red_i        (class_red),
+      .green_i      (class_green),
+      .blue_i       (class_blue),
+      .id_i         (id),
+      .is_i         (is_value),
+      .gd_i         (gd),
+      .gs_i         (gs),
+      .valid_o,
+      .red_o,
+      .green_o,
+      .blue_o
+    );
+
+    // The valid chain runs through the specular path; the other units' valid
+    // outputs carry the same information at their own times.
+    logic unused_valids;
+    assign unused_valids = ^{dmap_valid, class_valid};
+  end else begin : g_no_shading
+    // No reflectance-map hardware: the colour is the classified colour (what
+    // phong returns with shading off), timed as the phong stage would.
+    logic [LatPhong-1:0]       valid_delay_q;
+    logic [LatPhong*3*A-1:0]   rgb_delay_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin : valid_delay
+      if (!rst_ni) begin
+        valid_delay_q <= '0;
+      end else begin
+        valid_delay_q <= {valid_delay_q[LatPhong-2:0], class_valid};
+      end
+    end
+    always_ff @(posedge clk_i) begin : rgb_delay
+      rgb_delay_q[0 +: 3*A] <= {class_red, class_green, class_blue};
+      for (int unsigned k = 1; k < LatPhong; k++) begin
+        rgb_delay_q[k*3*A +: 3*A] <= rgb_delay_q[(k-1)*3*A +: 3*A];
+      end
+    end
+    assign valid_o = valid_delay_q[LatPhong-1];
+    assign {red_o, green_o, blue_o} = rgb_delay_q[(LatPhong-1)*3*A +: 3*A];
+    // The shading registers, the gradient and the map write ports stay
+    // ports, so that both variants connect alike.
+    logic unused_shading_inputs;
+    assign unused_shading_inputs = ^{shading_i, specular_i, gm_diffuse_i, gm_specular_i, ke_i, kd_i, ks_i,
+                                     spec_red_i, spec_green_i, spec_blue_i, eye_x_i, eye_y_i, eye_z_i,
+                                     dmap_we_i, dmap_waddr_i, dmap_wdata_i, smap_we_i, smap_waddr_i,
+                                     smap_wdata_i, grad_x_i, grad_y_i, grad_z_i, gm};
+  end
 
   // Alpha waits for phong.
   logic [LatPhong*A-1:0] alpha_delay_q;
@@ -377,10 +420,5 @@ module cube4_shader #(
   assign alpha_o = alpha_delay_q[(LatPhong-1)*A +: A];
   assign value_o = sample_delay_q[(Latency-1)*VoxelBits +: VoxelBits];
   assign side_o  = side_delay_q[(Latency-1)*SideBits +: SideBits];
-
-  // The valid chain runs through the specular path; the other units' valid
-  // outputs carry the same information at their own times.
-  logic unused_valids;
-  assign unused_valids = ^{dmap_valid, class_valid};
 
 endmodule

@@ -287,7 +287,7 @@ int main(int argc, char** argv) {
                      "system model: stream N frames of the view back to back and measure the steady-state interval")
       ->check(CLI::Range(1, 1000));
   render->add_flag("--simulate-all", ra.simulate_all,
-                   "system model: simulate the gradient unit even if the scene needs none (to measure the saving)");
+                   "system model: simulate every unit and all RTL hardware, needed or not (to measure what skipping saves)");
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
   render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
   std::string info_scene;

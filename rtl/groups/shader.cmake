@@ -38,6 +38,8 @@ cube4_rtl_variant(test_rtl_shader cube4_shader Vcube4_shader_small SOURCES ${_sh
   PARAMS VoxelBits=8 WeightBits=2 GradientBits=4 MagnitudeBits=4 ColorBits=8 AlphaBits=8
          GmlutBits=16 MapFaceRes=2 MapBits=8 MapFracBits=7 CoefBits=4 CoefFracBits=0
          EyeBits=4 DivBitsPerStage=1)
+# Without shading hardware (the system's variant for scenes without shading).
+cube4_rtl_variant(test_rtl_shader cube4_shader Vcube4_shader_noshade SOURCES ${_shade_sources} PARAMS HasShading=0)
 # cube4_composite at other widths (tb/rtl/test_composite.cpp).
 cube4_rtl_variant(test_rtl_shader cube4_composite Vcube4_composite_narrow
   PARAMS VoxelBits=10 WeightBits=6 AlphaBits=14 CutBits=24 PosBits=12 CutCoefBits=12)

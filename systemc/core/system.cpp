@@ -230,11 +230,25 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       res.unused.push_back(what + " (inside the verilated " + unit_name(u) + " unit: computed, not used)");
   };
   if (!rs->gradient) res.skipped.push_back("gradient unit and the frame's zero pass (the scene needs no gradients)");
-  not_needed(r.magnitude, Unit::Shade, "gradient magnitude and GmLUT");
-  not_needed(r.shading, Unit::Shade, "reflectance maps and Phong shading");
-  not_needed(r.specular, Unit::Shade, "specular reflection vector and map");
+  // The RTL shading unit has a variant without shading and magnitude
+  // hardware, used when the scene needs neither.
+  const bool lean_shade = !r.shading && !r.magnitude && !cfg.simulate_unneeded;
+  if (lean_shade) {
+    res.skipped.push_back("gradient magnitude");
+    res.skipped.push_back("reflectance maps, reflection vector and Phong shading");
+    not_needed(false, Unit::Shade, "GmLUT");
+  } else {
+    not_needed(r.magnitude, Unit::Shade, "gradient magnitude and GmLUT");
+    not_needed(r.shading, Unit::Shade, "reflectance maps and Phong shading");
+    not_needed(r.specular, Unit::Shade, "specular reflection vector and map");
+  }
   // The RTL compositing ring has a variant without cut-plane hardware.
-  if (!r.cut_enabled) res.skipped.push_back("cut-plane logic");
+  if (!r.cut_enabled) {
+    if (cfg.simulate_unneeded)
+      not_needed(false, Unit::Composite, "cut-plane logic");
+    else
+      res.skipped.push_back("cut-plane logic");
+  }
   not_needed(r.crop_enabled, Unit::Composite, "cropping logic");
   const CycleCount cc = frame_cycles(*rs, cfg.p);
   res.stream_cycles = cc.stream;
@@ -276,8 +290,8 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     } else {
       u.gradient = rtl[1] ? make_rtl_gradient(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmGradient>(plan);
     }
-    u.shade = rtl[2] ? make_rtl_shade(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmShade>(plan);
-    u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace)
+    u.shade = rtl[2] ? make_rtl_shade(plan, *rtl_ctx, cfg.trace, cfg.simulate_unneeded) : std::make_unique<TlmShade>(plan);
+    u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded)
                          : std::make_unique<TlmComposite>(plan, pixels);
     u.checker = checker.get();
     u.progress = progress;

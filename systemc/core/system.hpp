@@ -33,7 +33,9 @@ struct SystemConfig {
   std::array<Level, kUnits> levels{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
   TraceWindow trace;         // RTL units only
   bool check = false;        // compare every unit's output stream with golden
-  bool simulate_unneeded = false;  // run the gradient unit even when the scene needs no gradients
+  // Simulate what the scene does not need as well (to measure what skipping
+  // saves): the gradient unit, and at RTL the full shading and compositing hardware.
+  bool simulate_unneeded = false;
   int frames = 1;            // cycle-level runs: frames of the same view streamed back to back
   bool all_tlm() const {
     for (Level l : levels)

@@ -7,6 +7,7 @@
 
 #include "systemc/rtl/rtl_model.hpp"  // before the models: see its sc_time_stamp note
 
+#include "Vsys_shade_lean.h"
 #include "Vsys_shade_unit.h"
 #include "rtl_variant_headers.inc"
 #include "systemc/rtl/rtl_composite.hpp"
@@ -64,17 +65,19 @@ std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedCo
   }
 }
 
-std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace,
+                                        bool full) {
   if (!rtl_available(plan.p)) unavailable(plan.p);
+  if (!full && !plan.r.shading && !plan.r.magnitude) return std::make_unique<RtlShade<Vsys_shade_lean>>(plan, ctx, trace);
   return std::make_unique<RtlShade<Vsys_shade_unit>>(plan, ctx, trace);
 }
 
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
-                                                const TraceWindow& trace) {
+                                                const TraceWindow& trace, bool full) {
   switch (plan.p) {
 #define CUBE4_RTL_P(p)                                                                              \
   case p:                                                                                           \
-    if (plan.r.cut_enabled) return std::make_unique<RtlComposite<Vsys_composite_p##p>>(plan, pixels, ctx, trace); \
+    if (full || plan.r.cut_enabled) return std::make_unique<RtlComposite<Vsys_composite_p##p>>(plan, pixels, ctx, trace); \
     return std::make_unique<RtlComposite<Vsys_composite_nocut_p##p>>(plan, pixels, ctx, trace);
 #include "rtl_variant_list.inc"
 #undef CUBE4_RTL_P

@@ -24,10 +24,14 @@ bool rtl_available(int p);
 void require_rtl(int p);
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
-std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
+// Scenes without shading and without gradient-magnitude modulation get the
+// shading unit without reflectance-map, Phong and magnitude hardware.
+// full: the complete hardware whatever the scene needs (--simulate-all).
+std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace,
+                                        bool full = false);
 // Scenes without a cut plane get the ring without cut-plane hardware
 // (HasCutPlane = 0): that logic is not simulated.
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
-                                                const TraceWindow& trace);
+                                                const TraceWindow& trace, bool full = false);
 
 }  // namespace cube4::sysc

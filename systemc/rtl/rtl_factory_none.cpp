@@ -17,8 +17,9 @@ namespace {
 void require_rtl(int) { unavailable(); }
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
-std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
-std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, VerilatedContext&, const TraceWindow&) {
+std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&, bool) { unavailable(); }
+std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, VerilatedContext&, const TraceWindow&,
+                                                bool) {
   unavailable();
 }
 

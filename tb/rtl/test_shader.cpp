@@ -32,6 +32,7 @@
 #include "Vcube4_shader.h"
 #include "Vcube4_shader_small.h"
 #include "Vcube4_shader_wide.h"
+#include "Vcube4_shader_noshade.h"
 #include "golden/host_driver.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/scene_io.hpp"
@@ -910,8 +911,10 @@ class ShaderBench : public Bench<M, ShaderIn, ShadedOut> {
  public:
   // reflection 4 + cube_coord 1 + ceil((clog2(res) + W) / DivBitsPerStage) + reflectance 3 + phong 3
   static int latency_of(const g::Precision& p, int div_bits) { return 10 + CubeCoordBench::latency_of(p, div_bits); }
-  ShaderBench(const std::string& name, const g::Precision& prec, int div_bits)
-      : Base(name, latency_of(prec, div_bits)), p(prec) {
+  // has_shading = false: a variant without shading hardware (HasShading =
+  // 0), which equals golden with shading off whatever shading_i says.
+  ShaderBench(const std::string& name, const g::Precision& prec, int div_bits, bool has_shading = true)
+      : Base(name, latency_of(prec, div_bits)), p(prec), has_shading_(has_shading) {
     M& m = *this->m;
     m.class_we_i = m.gmlut_we_i = m.dmap_we_i = m.smap_we_i = 0;
     this->start();
@@ -965,8 +968,9 @@ class ShaderBench : public Bench<M, ShaderIn, ShadedOut> {
     r = regs;
     r.crop_enabled = false;
     r.cut_enabled = false;
+    if (!has_shading_) r.shading = false;
     m.magnitude_i = r.magnitude;
-    m.shading_i = r.shading;
+    m.shading_i = regs.shading;
     m.specular_i = r.specular;
     m.gm_opacity_i = r.gm_opacity;
     m.gm_diffuse_i = r.gm_diffuse;
@@ -998,6 +1002,7 @@ class ShaderBench : public Bench<M, ShaderIn, ShadedOut> {
   }
 
   g::Precision p;
+  bool has_shading_ = true;
   g::Registers r;
   g::SliceControl c;  // weights irrelevant: the 2x2 neighbourhoods are flat
   uint32_t modes = 0;
@@ -1079,8 +1084,8 @@ g::Registers random_registers(Random& rnd, const g::Precision& p, uint32_t bits)
 }
 
 template <class M>
-void shader_random(const std::string& name, const g::Precision& p, int div_bits, long n) {
-  ShaderBench<M> b(name, p, div_bits);
+void shader_random(const std::string& name, const g::Precision& p, int div_bits, long n, bool has_shading = true) {
+  ShaderBench<M> b(name, p, div_bits, has_shading);
   Random rnd(601);
   const long block = 8000;
   g::Registers regs;
@@ -1116,6 +1121,12 @@ void shader_random(const std::string& name, const g::Precision& p, int div_bits,
 
 TEST(RtlShader, RandomTablesAndModes) {
   shader_random<Vcube4_shader>("cube4_shader", kP, 2, rtl::vector_count(1000000));
+}
+
+// Without shading hardware (HasShading = 0, what the system uses for scenes
+// without shading): every mode combination, shading_i random and ignored.
+TEST(RtlShader, WithoutShadingHardware) {
+  shader_random<Vcube4_shader_noshade>("cube4_shader (HasShading=0)", kP, 2, rtl::vector_count(300000), false);
 }
 
 // The host driver's tables and registers for sphere scenes, and samples
