@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # What simulating only the scene's effects saves: scenes that need no
-# gradients (unshaded MIP) run the system model with the gradient unit
-# skipped (the default) and with it simulated anyway (--simulate-all), at
-# RTL and with the TLM models clocked, one core. Writes the
+# gradients, shading or cut plane (unshaded MIP) run the system model as it
+# runs them by default (no gradient unit, lean shading and compositing RTL)
+# and with everything simulated anyway (--simulate-all), at RTL and with the
+# TLM models clocked, one core. Writes the
 # "effect-savings" section of docs/performance.md.
 #   scripts/perf_effects.sh [frames]   (default 3)
 # CUBE4_BUILD: a build directory already configured (skips the set-up).
@@ -38,7 +39,7 @@ for i in range(n):
 print(f"Measured {datetime.date.today()} by `scripts/perf_effects.sh` (one core, p = 4, median of the frames). "
       "Both columns give the same base plane (system test `MipWithUnneededGradientUnit`).")
 print()
-print("| scene | level | gradient unit skipped: ms/frame (cycles) | simulated anyway: ms/frame (cycles) | time saved |")
+print("| scene | level | only what the scene needs: ms/frame (cycles) | everything (`--simulate-all`): ms/frame (cycles) | time saved |")
 print("|---|---|---|---|---|")
 for (scene, model, mode), r in sorted(runs.items()):
     if mode != "skip":
