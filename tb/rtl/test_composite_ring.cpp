@@ -41,23 +41,27 @@
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "tb/rtl/ring_bench.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
 
 namespace g = cube4::golden;
 using cube4::rtl::Random;
+using cube4::rtl::RingParams;
+using cube4::rtl::Timer;
+using cube4::rtl::View;
+using cube4::rtl::kViews;
+using cube4::rtl::kRingP1;
+using cube4::rtl::kRingP2;
+using cube4::rtl::kRingP4;
+using cube4::rtl::kRingP5;
+using cube4::rtl::direction_json;
+using cube4::rtl::vec_json;
 using cube4::rtl::get_bits;
 using cube4::rtl::put_bits;
 
 // Ring parameters, as in rtl/groups/composite.cmake.
-struct RingParams {
-  int p;
-  int max_dim;
-  int beam_depth() const { return (max_dim + p - 1) / p; }
-  int slice_depth() const { return max_dim * beam_depth(); }
-};
-constexpr RingParams kRingP1{1, 24}, kRingP2{2, 16}, kRingP4{4, 256}, kRingP5{5, 12};
 // The ring's default widths (golden Precision defaults; cube4_composite's
 // PosBits and CutCoefBits).
 constexpr int kVoxelBits = 12, kWeightBits = 8, kAlphaBits = 12, kCutBits = 32, kPosBits = 16, kCutCoefBits = 12;
@@ -65,15 +69,6 @@ constexpr int kInvBits = kAlphaBits + g::kCutInvShift;
 // From a sample to the pixel of the ray it ends.
 constexpr int kLatency = 7;
 
-struct Timer {
-  std::string what;
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  explicit Timer(std::string w) : what(std::move(w)) {}
-  ~Timer() {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
-  }
-};
 
 // ===========================================================================
 // Scenes and the golden results.
@@ -111,11 +106,6 @@ struct Collect : g::SampleProbe {
   }
 };
 
-std::string vec_json(const std::array<double, 3>& d) {
-  std::ostringstream s;
-  s << "[" << d[0] << ", " << d[1] << ", " << d[2] << "]";
-  return s.str();
-}
 
 // What is rendered, besides volume and view: blend mode, shading, cropping,
 // cut plane (JSON members of the scene).
@@ -604,24 +594,6 @@ void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, c
   if (pixels_checked) *pixels_checked += r.pixels;
 }
 
-struct View {
-  const char* name;
-  std::array<double, 3> dir, up;
-};
-// The six base planes exactly (dx = dy = 0 in every slice: only the (x, y)
-// candidate), each tilted (dx and dy both occur: the x-1 and y-1 paths and
-// the ring wrap), 45-degree views (ties between axes: a change in every
-// slice) and an oblique view.
-const std::vector<View> kViews = {
-    {"+x", {1, 0, 0}, {0, 1, 0}},          {"-x", {-1, 0, 0}, {0, 1, 0}},
-    {"+y", {0, 1, 0}, {0, 0, 1}},          {"-y", {0, -1, 0}, {0, 0, 1}},
-    {"+z", {0, 0, 1}, {0, 1, 0}},          {"-z", {0, 0, -1}, {0, 1, 0}},
-    {"+x tilted", {1, 0.3, -0.45}, {0, 1, 0}},   {"-x tilted", {-1, -0.2, 0.35}, {0, 1, 0}},
-    {"+y tilted", {0.25, 1, 0.4}, {0, 0, 1}},    {"-y tilted", {-0.4, -1, -0.3}, {0, 0, 1}},
-    {"+z tilted", {0.35, -0.3, 1}, {0, 1, 0}},   {"-z tilted", {-0.3, 0.45, -1}, {0, 1, 0}},
-    {"45 xz", {1, 0, 1}, {0, 1, 0}},       {"45 xyz", {-1, 1, 1}, {0, 1, 0}},
-    {"oblique", {0.7, -0.6, 1}, {0, 1, 0}},
-};
 // Volumes (each fits the smallest ring, p = 5 with MaxDim 12, in every
 // permutation).
 const std::vector<VolumeSpec> kVolumes = {

@@ -43,12 +43,24 @@
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "tb/rtl/ring_bench.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
 
 namespace g = cube4::golden;
 using cube4::rtl::Random;
+using cube4::rtl::kSizes;
+using cube4::rtl::RingParams;
+using cube4::rtl::Timer;
+using cube4::rtl::View;
+using cube4::rtl::kViews;
+using cube4::rtl::kRingP1;
+using cube4::rtl::kRingP2;
+using cube4::rtl::kRingP4;
+using cube4::rtl::kRingP5;
+using cube4::rtl::direction_json;
+using cube4::rtl::vec_json;
 using cube4::rtl::get_bits;
 using cube4::rtl::put_bits;
 
@@ -69,28 +81,7 @@ constexpr int kInterpLatency = 4;
 constexpr int kGradientStages = 3;
 
 // Ring parameters, as in rtl/groups/gradient.cmake.
-struct RingParams {
-  int p;
-  int max_dim;
-  int beam_depth() const { return (max_dim + p - 1) / p; }
-  int slice_depth() const { return max_dim * beam_depth(); }
-  int dim_bits() const {
-    int b = 0;
-    while ((1 << b) < max_dim + p) ++b;
-    return b;
-  }
-};
-constexpr RingParams kRingP1{1, 24}, kRingP2{2, 16}, kRingP4{4, 256}, kRingP5{5, 12};
 
-struct Timer {
-  std::string what;
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  explicit Timer(std::string w) : what(std::move(w)) {}
-  ~Timer() {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
-  }
-};
 
 // ===========================================================================
 // Golden frames.
@@ -126,12 +117,6 @@ struct Collect : g::SampleProbe {
   }
 };
 
-std::string direction_json(const std::array<double, 3>& d, const std::array<double, 3>& up) {
-  std::ostringstream s;
-  s << R"({"direction": [)" << d[0] << ", " << d[1] << ", " << d[2] << R"(], "up": [)" << up[0] << ", " << up[1]
-    << ", " << up[2] << "]}";
-  return s.str();
-}
 
 const Frame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
                    const std::array<double, 3>& up, int S, int seed) {
@@ -612,26 +597,6 @@ void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, c
   if (gradients_checked) *gradients_checked += golden;
 }
 
-struct View {
-  const char* name;
-  std::array<double, 3> dir, up;
-};
-// The six base planes exactly, each tilted off axis (every weight and every
-// realign base moves: the x-1/x+1 and y-1/y+1 paths and both ring wraps
-// matter), 45-degree views and an oblique one.
-const std::vector<View> kViews = {
-    {"+x", {1, 0, 0}, {0, 1, 0}},          {"-x", {-1, 0, 0}, {0, 1, 0}},
-    {"+y", {0, 1, 0}, {0, 0, 1}},          {"-y", {0, -1, 0}, {0, 0, 1}},
-    {"+z", {0, 0, 1}, {0, 1, 0}},          {"-z", {0, 0, -1}, {0, 1, 0}},
-    {"+x tilted", {1, 0.3, -0.45}, {0, 1, 0}},   {"-x tilted", {-1, -0.2, 0.35}, {0, 1, 0}},
-    {"+y tilted", {0.25, 1, 0.4}, {0, 0, 1}},    {"-y tilted", {-0.4, -1, -0.3}, {0, 0, 1}},
-    {"+z tilted", {0.35, -0.3, 1}, {0, 1, 0}},   {"-z tilted", {-0.3, 0.45, -1}, {0, 1, 0}},
-    {"45 xz", {1, 0, 1}, {0, 1, 0}},       {"45 xyz", {-1, 1, 1}, {0, 1, 0}},
-    {"oblique", {0.7, -0.6, 1}, {0, 1, 0}},
-};
-// Volume sizes (every permutation appears across the views; all fit p = 5
-// with MaxDim 12).
-const std::array<std::array<int, 3>, 3> kSizes = {{{9, 7, 6}, {12, 5, 8}, {7, 11, 10}}};
 
 // Every view, S = 1, 2, 3: chained without stalls, chained with stalls and
 // junk, direct with random gaps and junk.

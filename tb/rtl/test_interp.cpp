@@ -35,38 +35,34 @@
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "tb/rtl/ring_bench.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
 
 namespace g = cube4::golden;
 using cube4::rtl::Random;
+using cube4::rtl::kSizes;
+using cube4::rtl::RingParams;
+using cube4::rtl::Timer;
+using cube4::rtl::View;
+using cube4::rtl::kViews;
+using cube4::rtl::kRingP1;
+using cube4::rtl::kRingP2;
+using cube4::rtl::kRingP4;
+using cube4::rtl::kRingP5;
+using cube4::rtl::direction_json;
+using cube4::rtl::vec_json;
 using cube4::rtl::get_bits;
 using cube4::rtl::put_bits;
 
 // Ring parameters, as in rtl/groups/interp.cmake.
-struct RingParams {
-  int p;
-  int max_dim;
-  int beam_depth() const { return (max_dim + p - 1) / p; }
-  int slice_depth() const { return max_dim * beam_depth(); }
-};
-constexpr RingParams kRingP1{1, 24}, kRingP2{2, 16}, kRingP4{4, 256}, kRingP5{5, 12};
 constexpr int kVoxelBits = 12;  // ring defaults
 constexpr int kTagBits = 8;
 // From a valid input to its sample, when the next input follows at once or
 // the input ends a beam: the alignment register, then cube4_trilinear's 3.
 constexpr int kLatency = 4;
 
-struct Timer {
-  std::string what;
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  explicit Timer(std::string w) : what(std::move(w)) {}
-  ~Timer() {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
-  }
-};
 
 // ===========================================================================
 // cube4_delay_ram against its contract: rdata_o is always the entry under
@@ -179,12 +175,6 @@ struct Collect : g::SampleProbe {
   }
 };
 
-std::string direction_json(const std::array<double, 3>& d, const std::array<double, 3>& up) {
-  std::ostringstream s;
-  s << R"({"direction": [)" << d[0] << ", " << d[1] << ", " << d[2] << R"(], "up": [)" << up[0] << ", " << up[1]
-    << ", " << up[2] << "]}";
-  return s.str();
-}
 
 const Frame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
                    const std::array<double, 3>& up, int S, int seed) {
@@ -444,27 +434,6 @@ void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, c
   if (samples_checked) *samples_checked += golden_samples;
 }
 
-struct View {
-  const char* name;
-  std::array<double, 3> dir, up;
-};
-// The six base planes exactly (all weights but wz zero), each base plane
-// again seen slightly off axis (every weight moves: the x+1 and y+1 paths
-// and the ring wrap matter), 45-degree views (ties between axes) and a
-// general oblique view.
-const std::vector<View> kViews = {
-    {"+x", {1, 0, 0}, {0, 1, 0}},          {"-x", {-1, 0, 0}, {0, 1, 0}},
-    {"+y", {0, 1, 0}, {0, 0, 1}},          {"-y", {0, -1, 0}, {0, 0, 1}},
-    {"+z", {0, 0, 1}, {0, 1, 0}},          {"-z", {0, 0, -1}, {0, 1, 0}},
-    {"+x tilted", {1, 0.3, -0.45}, {0, 1, 0}},   {"-x tilted", {-1, -0.2, 0.35}, {0, 1, 0}},
-    {"+y tilted", {0.25, 1, 0.4}, {0, 0, 1}},    {"-y tilted", {-0.4, -1, -0.3}, {0, 0, 1}},
-    {"+z tilted", {0.35, -0.3, 1}, {0, 1, 0}},   {"-z tilted", {-0.3, 0.45, -1}, {0, 1, 0}},
-    {"45 xz", {1, 0, 1}, {0, 1, 0}},       {"45 xyz", {-1, 1, 1}, {0, 1, 0}},
-    {"oblique", {0.7, -0.6, 1}, {0, 1, 0}},
-};
-// Volume sizes (every permutation of them appears across the views; every
-// one fits the smallest ring, p = 5 with MaxDim 12).
-const std::array<std::array<int, 3>, 3> kSizes = {{{9, 7, 6}, {12, 5, 8}, {7, 11, 10}}};
 
 // Every view, S = 1, 2, 3, without and with stalls (junk in the zero beam
 // with stalls).

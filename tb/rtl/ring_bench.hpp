@@ -1,0 +1,73 @@
+// What the three ring testbenches (test_interp.cpp, test_gradient_ring.cpp,
+// test_composite_ring.cpp) share: the ring sizes the CMake groups verilate,
+// a stage timer, the views every ring is run through and the view's JSON.
+#pragma once
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cube4::rtl {
+
+// A verilated ring: p pipelines, storage for nx, ny up to max_dim
+// (rtl/groups/*.cmake verilate the same values).
+struct RingParams {
+  int p;
+  int max_dim;
+  int beam_depth() const { return (max_dim + p - 1) / p; }
+  int slice_depth() const { return max_dim * beam_depth(); }
+  int dim_bits() const {  // the rings' position outputs: $clog2(MaxDim + NumPipes)
+    int b = 0;
+    while ((1 << b) < max_dim + p) ++b;
+    return b;
+  }
+};
+constexpr RingParams kRingP1{1, 24}, kRingP2{2, 16}, kRingP4{4, 256}, kRingP5{5, 12};
+
+// Prints how long a stage of a test took (the rings' tests are the longest).
+struct Timer {
+  std::string what;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  explicit Timer(std::string w) : what(std::move(w)) {}
+  ~Timer() {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
+  }
+};
+
+struct View {
+  const char* name;
+  std::array<double, 3> dir, up;
+};
+// The six base planes exactly (all weights but wz zero, dx = dy = 0), each
+// base plane again seen off axis (every weight, realign base and ray offset
+// moves: the x±1 and y±1 paths and the ring wraps matter), 45-degree views
+// (ties between axes) and an oblique one.
+inline const std::vector<View> kViews = {
+    {"+x", {1, 0, 0}, {0, 1, 0}},          {"-x", {-1, 0, 0}, {0, 1, 0}},
+    {"+y", {0, 1, 0}, {0, 0, 1}},          {"-y", {0, -1, 0}, {0, 0, 1}},
+    {"+z", {0, 0, 1}, {0, 1, 0}},          {"-z", {0, 0, -1}, {0, 1, 0}},
+    {"+x tilted", {1, 0.3, -0.45}, {0, 1, 0}},   {"-x tilted", {-1, -0.2, 0.35}, {0, 1, 0}},
+    {"+y tilted", {0.25, 1, 0.4}, {0, 0, 1}},    {"-y tilted", {-0.4, -1, -0.3}, {0, 0, 1}},
+    {"+z tilted", {0.35, -0.3, 1}, {0, 1, 0}},   {"-z tilted", {-0.3, 0.45, -1}, {0, 1, 0}},
+    {"45 xz", {1, 0, 1}, {0, 1, 0}},       {"45 xyz", {-1, 1, 1}, {0, 1, 0}},
+    {"oblique", {0.7, -0.6, 1}, {0, 1, 0}},
+};
+// Volume sizes: every permutation of them appears across the views, and
+// every one fits the smallest ring (p = 5, MaxDim 12).
+inline const std::array<std::array<int, 3>, 3> kSizes = {{{9, 7, 6}, {12, 5, 8}, {7, 11, 10}}};
+
+inline std::string vec_json(const std::array<double, 3>& d) {
+  std::ostringstream s;
+  s << '[' << d[0] << ", " << d[1] << ", " << d[2] << ']';
+  return s.str();
+}
+// A scene's "view" object for a direction and an up vector.
+inline std::string direction_json(const std::array<double, 3>& d, const std::array<double, 3>& up) {
+  return R"({"direction": )" + vec_json(d) + R"(, "up": )" + vec_json(up) + "}";
+}
+
+}  // namespace cube4::rtl
