@@ -47,19 +47,7 @@
 namespace {
 
 namespace g = cube4::golden;
-using cube4::rtl::Random;
-using cube4::rtl::RingParams;
-using cube4::rtl::Timer;
-using cube4::rtl::View;
-using cube4::rtl::kViews;
-using cube4::rtl::kRingP1;
-using cube4::rtl::kRingP2;
-using cube4::rtl::kRingP4;
-using cube4::rtl::kRingP5;
-using cube4::rtl::direction_json;
-using cube4::rtl::vec_json;
-using cube4::rtl::get_bits;
-using cube4::rtl::put_bits;
+using namespace cube4::rtl;  // the shared bench: rtl_check.hpp, ring_bench.hpp
 
 // Ring parameters, as in rtl/groups/composite.cmake.
 // The ring's default widths (golden Precision defaults; cube4_composite's
