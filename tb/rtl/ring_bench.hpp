@@ -4,11 +4,14 @@
 #pragma once
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "tb/rtl/rtl_check.hpp"
 
 namespace cube4::rtl {
 
@@ -68,6 +71,24 @@ inline std::string vec_json(const std::array<double, 3>& d) {
 // A scene's "view" object for a direction and an up vector.
 inline std::string direction_json(const std::array<double, 3>& d, const std::array<double, 3>& up) {
   return R"({"direction": )" + vec_json(d) + R"(, "up": )" + vec_json(up) + "}";
+}
+
+// A random scene for the rings: a direction (never zero) with an up vector
+// off it, a volume of 1..12 voxels per axis (fits every ring), S in 1..8.
+struct RandomScene {
+  std::array<double, 3> dir, up;
+  std::array<int, 3> size;
+  int S;
+};
+inline RandomScene random_scene(Random& rng) {
+  RandomScene r;
+  for (double& d : r.dir) d = static_cast<double>(rng.range(-100, 100)) / 100.0;
+  r.dir[rng.range(0, 2)] = rng.chance(0.5) ? 1.0 : -1.0;
+  const bool up_z = std::abs(r.dir[1]) >= std::abs(r.dir[0]) && std::abs(r.dir[1]) >= std::abs(r.dir[2]);
+  r.up = up_z ? std::array<double, 3>{0, 0, 1} : std::array<double, 3>{0, 1, 0};
+  r.size = {static_cast<int>(rng.range(1, 12)), static_cast<int>(rng.range(1, 12)), static_cast<int>(rng.range(1, 12))};
+  r.S = static_cast<int>(rng.range(1, 8));
+  return r;
 }
 
 }  // namespace cube4::rtl

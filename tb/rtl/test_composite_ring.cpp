@@ -710,18 +710,10 @@ TEST(RtlCompositeRing, RandomScenes) {
   Random rng(0xC0317E);
   const long n = cube4::rtl::vector_count(1000000) >= 1000000 ? 80 : 4;
   for (long i = 0; i < n; ++i) {
-    std::array<double, 3> dir;
-    for (double& d : dir) d = static_cast<double>(rng.range(-100, 100)) / 100.0;
-    dir[rng.range(0, 2)] = rng.chance(0.5) ? 1.0 : -1.0;  // never all zero
-    const bool up_z = std::abs(dir[1]) >= std::abs(dir[0]) && std::abs(dir[1]) >= std::abs(dir[2]);
-    const std::array<double, 3> up = up_z ? std::array<double, 3>{0, 0, 1} : std::array<double, 3>{0, 1, 0};
-    const VolumeSpec vs{rng.chance(0.3) ? "sphere" : "noise",
-                        {static_cast<int>(rng.range(1, 12)), static_cast<int>(rng.range(1, 12)),
-                         static_cast<int>(rng.range(1, 12))},
-                        static_cast<int>(100 + i)};
-    const int S = static_cast<int>(rng.range(1, 8));
+    const RandomScene sc = random_scene(rng);
+    const VolumeSpec vs{rng.chance(0.3) ? "sphere" : "noise", sc.size, static_cast<int>(100 + i)};
     const Frame& f =
-        frame(vs, dir, up, S, kEffects[rng.range(0, static_cast<int64_t>(kEffects.size()) - 1)], "random " + std::to_string(i));
+        frame(vs, sc.dir, sc.up, sc.S, kEffects[rng.range(0, static_cast<int64_t>(kEffects.size()) - 1)], "random " + std::to_string(i));
     StreamOptions opt;
     opt.stall = rng.chance(0.5) ? 0 : static_cast<double>(rng.range(1, 60)) / 100.0;
     opt.max_gap = static_cast<int>(rng.range(1, 5));
