@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Gate counts of the RTL units (first version): synthesises every module of
 # rtl/ (a file named after the module it defines) with yosys at its default
-# parameters, plus extra parameter sets (cube4_trilinear at WeightBits 6 and
-# 10), and prints a markdown table to stdout.
+# parameters, plus extra parameter sets (other widths, and the effect
+# variants without cut-plane or shading hardware), and prints a markdown
+# table to stdout.
 #
 # Flow per module: read_verilog -sv rtl/*.sv; chparam; synth -flatten up to
 # `fine` (coarse synthesis; memories stay $mem cells: memory -nomap); the
@@ -53,6 +54,8 @@ extra=(
   "cube4_shader AlphaBits=16"
   "cube4_composite AlphaBits=8"
   "cube4_composite AlphaBits=16"
+  "cube4_composite HasCutPlane=0"
+  "cube4_shade_unit HasShading=0,HasMagnitude=0"
 )
 
 tmp=$(mktemp -d)

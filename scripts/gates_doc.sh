@@ -29,9 +29,9 @@ for line in table.splitlines():
 def num(s): return float(s.replace(",", "")) if s not in ("", "-") else 0.0
 def mem_bits(s): return sum(int(b) for b in re.findall(r"\((\d+) b\)", s))
 # One pipeline at the default widths: the streaming units with their storage
-# (interpolation, gradient, compositing; each contains its datapath), the
-# gradient magnitude and the shader.
-pipeline = ["cube4_interp_unit", "cube4_gradient_unit", "cube4_magnitude", "cube4_shader", "cube4_composite_unit"]
+# (interpolation, gradient, compositing; each contains its datapath) and the
+# shading unit (gradient magnitude + shader).
+pipeline = ["cube4_interp_unit", "cube4_gradient_unit", "cube4_shade_unit", "cube4_composite_unit"]
 have = [m for m in pipeline if m in rows]
 missing = [m for m in pipeline if m not in rows]
 cells = sum(num(rows[m][2]) for m in have)
