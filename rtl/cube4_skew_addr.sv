@@ -33,7 +33,12 @@
 // start_i and stays high for B_{perm[0]} * n_{perm[1]} * n_{perm[2]}
 // cycles). last_o marks the frame's last partial beam; busy_o is high from
 // the cycle after start_i until that beam has been issued. A
-// valid-only pipeline without back-pressure beyond advance_i. Only control
+// valid-only pipeline without back-pressure beyond advance_i.
+// Walks for the system's stream (supersampling reads a slice S times; frames
+// follow back to back): repeat_slice_i, sampled when a slice's last partial
+// beam issues, walks that slice again from beam 0 instead of the next;
+// again_i, sampled when the frame's last partial beam issues, starts the
+// same frame over in the next cycle without setup (busy_o stays high). Only control
 // state (FSM, valid) is reset.
 //
 // Preconditions: perm_i a permutation of {0, 1, 2}, every dim >= 1 and
@@ -55,6 +60,8 @@ module cube4_skew_addr #(
   input  logic                          rst_ni,
   input  logic                          start_i,
   input  logic                          advance_i,
+  input  logic                          repeat_slice_i,  // with a slice's last partial beam
+  input  logic                          again_i,         // with the frame's last partial beam
   input  logic [5:0]                    perm_i,     // perm[i] at [2*i +: 2]
   input  logic [2:0]                    flip_i,     // flip[i] at [i]
   input  logic [3*DimBits-1:0]          dim_i,      // object n_a at [a*DimBits +: DimBits]
@@ -256,7 +263,9 @@ module cube4_skew_addr #(
   assign last_y     = y_q == n1 - D'(1);
   assign last_z     = z_q == n2 - D'(1);
   assign issue      = (state_q == StRun) && advance_i;
-  assign frame_last = last_j && last_y && last_z;
+  // A slice repeated (repeat_slice_i with its last partial beam) is walked
+  // again from beam 0; the frame ends after the last slice's last walk.
+  assign frame_last = last_j && last_y && last_z && !repeat_slice_i;
 
   // One +-1 step of an outer-axis walker (slice w: permuted axis w+1).
   logic [2*PipeBits-1:0] ph_step;
@@ -284,7 +293,7 @@ module cube4_skew_addr #(
     end else if (state_q == StSetup) begin
       step_d = step_q + 3'd1;
       if (step_q == 3'd4) state_d = StRun;
-    end else if (issue && frame_last) begin
+    end else if (issue && frame_last && !again_i) begin
       state_d = StIdle;
     end
   end
@@ -356,9 +365,15 @@ module cube4_skew_addr #(
           y_q                 <= '0;
           ph_q[0 +: PipeBits] <= phs[0 +: PipeBits];
           g_q[0 +: I]         <= gst[0 +: I];
-          z_q                 <= z_q + D'(1);
-          ph_q[PipeBits +: PipeBits] <= ph_step[PipeBits +: PipeBits];
-          g_q[I +: I]         <= g_step[I +: I];
+          if (frame_last) begin  // again_i: the next frame from its start
+            z_q                        <= '0;
+            ph_q[PipeBits +: PipeBits] <= phs[PipeBits +: PipeBits];
+            g_q[I +: I]                <= gst[I +: I];
+          end else if (!repeat_slice_i) begin
+            z_q                        <= z_q + D'(1);
+            ph_q[PipeBits +: PipeBits] <= ph_step[PipeBits +: PipeBits];
+            g_q[I +: I]                <= g_step[I +: I];
+          end
         end
       end
     end

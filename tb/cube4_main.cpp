@@ -64,7 +64,7 @@ std::array<sysc::Level, sysc::kUnits> parse_levels(const std::string& model) {
         found = true;
       }
     if (!found)
-      throw InputError("--model " + model + ": unknown unit '" + name + "' (units: interp, gradient, shade, composite)");
+      throw InputError("--model " + model + ": unknown unit '" + name + "' (units: interp, gradient, shade, composite, addr)");
     ++count;
   }
   if (count == 0) throw InputError("--model " + model + ": name at least one unit after 'mixed:'");
@@ -268,7 +268,7 @@ int main(int argc, char** argv) {
   render->add_option("scene", ra.scene, "scene JSON file (docs/scene.md)");
   render->add_option("--model", ra.model,
                      "fixed (bit-exact golden), float, reference (image-order), or the system model: tlm, rtl, "
-                     "mixed:UNIT,... (units interp, gradient, shade, composite at RTL, the rest TLM)")
+                     "mixed:UNIT,... (units interp, gradient, shade, composite, addr at RTL, the rest TLM)")
       ;
   render->add_option("-o,--output", ra.output, "final image, .png or .exr")->capture_default_str();
   render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact)");

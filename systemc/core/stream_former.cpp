@@ -1,52 +1,106 @@
 #include "systemc/core/stream_former.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace cube4::sysc {
 
-StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, int frames)
-    : plan_(plan), mem_(mem), frames_(frames) {
-  traversal_.perm = plan.r.perm;
-  traversal_.flip = plan.r.flip;
+StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, AddrIf& addr, int frames)
+    : plan_(plan), mem_(mem), addr_(addr), frames_(frames) {
+  // The first beat reads: issue it now, so its access arrives with it.
+  const Pos first = next_read(at_);
+  if (first.frame < frames_) {
+    const int z = plan_.pass_voxel_slice(first.pass);
+    addr_.clock(request_for(first), first.j, first.y, z);
+  }
+}
+
+StreamFormer::Pos StreamFormer::following(Pos p) const {
+  if (++p.j == plan_.B) {
+    p.j = 0;
+    if (++p.y > plan_.ny) {
+      p.y = 0;
+      if (++p.pass == plan_.passes) {
+        p.pass = 0;
+        ++p.frame;
+      }
+    }
+  }
+  return p;
+}
+
+StreamFormer::Pos StreamFormer::next_read(Pos p) const {
+  while (p.frame < frames_ && !reads(p)) p = following(p);
+  return p;
+}
+
+AddrRequest StreamFormer::request_for(const Pos& p) const {
+  AddrRequest r;
+  r.issue = true;
+  if (p.y != plan_.ny - 1 || p.j != plan_.B - 1) return r;  // not a slice's last partial beam
+  // The next pass that reads, in this frame: the same slice again?
+  const int z = plan_.pass_voxel_slice(p.pass);
+  for (int pass = p.pass + 1; pass < plan_.passes; ++pass) {
+    const int zn = plan_.pass_voxel_slice(pass);
+    if (zn < plan_.nz) {
+      r.repeat_slice = zn == z;
+      return r;
+    }
+  }
+  r.again = p.frame + 1 < frames_;  // the frame's last read
+  return r;
 }
 
 VoxelBeat StreamFormer::next() {
   VoxelBeat b;
   if (done()) return b;
+  const Pos cur = at_;
   b.valid = true;
-  b.f.beam_start = j_ == 0;
-  b.f.beam_end = j_ == plan_.B - 1;
-  b.f.slice_start = y_ == 0;
-  b.f.slice_end = y_ == plan_.ny;
-  if (!plan_.zero_pass(pass_)) {
-    const golden::SliceControl& c = plan_.slices[static_cast<size_t>(pass_)];
+  b.f.beam_start = cur.j == 0;
+  b.f.beam_end = cur.j == plan_.B - 1;
+  b.f.slice_start = cur.y == 0;
+  b.f.slice_end = cur.y == plan_.ny;
+  if (!plan_.zero_pass(cur.pass)) {
+    const golden::SliceControl& c = plan_.slices[static_cast<size_t>(cur.pass)];
     b.wx = c.wx;
     b.wy = c.wy;
     b.wz = c.wz;
   }
-  b.tag = plan_.pass_tag(pass_);
-  const int z = plan_.pass_voxel_slice(pass_);
+  b.tag = plan_.pass_tag(cur.pass);
+  // One edge of the address generator: it answers this beat's read (issued
+  // at the previous edge) and takes the next beat's, if that one reads.
+  at_ = following(cur);
+  AddrRequest req;
+  int nj = 0, ny = 0, nz = 0;
+  if (reads(at_)) {
+    req = request_for(at_);
+    nj = at_.j;
+    ny = at_.y;
+    nz = plan_.pass_voxel_slice(at_.pass);
+  }
+  const AddrResult a = addr_.clock(req, nj, ny, nz);
   mem_.begin_cycle();
-  if (y_ < plan_.ny && z < plan_.nz) {
-    const golden::BeamAccess a = golden::beam_access(mem_.layout(), traversal_, y_, z, j_);
+  if (reads(cur)) {
+    const int z = plan_.pass_voxel_slice(cur.pass);
+    if (!a.valid || a.j != cur.j || a.y != cur.y || a.z != z)
+      throw std::logic_error("address generation (" + std::string(level_name(addr_.level())) + "): expected partial beam (j " +
+                             std::to_string(cur.j) + ", y " + std::to_string(cur.y) + ", z " + std::to_string(z) +
+                             "), got " + (a.valid ? "(j " + std::to_string(a.j) + ", y " + std::to_string(a.y) + ", z " +
+                                                        std::to_string(a.z) + ")"
+                                                  : std::string("none")));
     // Each module is read once at the index the address generator gives
     // it; the de-skew rotation then hands pipeline k its module's word.
     uint16_t word[golden::kMaxSkewPipes];
-    for (int m = 0; m < plan_.p; ++m) word[m] = mem_.read(m, a.module_index[static_cast<size_t>(m)]);
+    for (int m = 0; m < plan_.p; ++m) word[m] = mem_.read(m, a.access.module_index[static_cast<size_t>(m)]);
     for (int k = 0; k < plan_.p; ++k) {
-      const int m = a.reverse ? ((a.rotation - k) % plan_.p + plan_.p) % plan_.p : (a.rotation + k) % plan_.p;
+      const int m = a.access.reverse ? ((a.access.rotation - k) % plan_.p + plan_.p) % plan_.p
+                                     : (a.access.rotation + k) % plan_.p;
       b.voxel[static_cast<size_t>(k)] = word[m];
     }
+  } else if (a.valid) {
+    throw std::logic_error("address generation: a partial beam arrived for a beat that reads nothing");
   }
   ++beats_;
-  if (++j_ == plan_.B) {
-    j_ = 0;
-    if (++y_ > plan_.ny) {
-      y_ = 0;
-      if (++pass_ == plan_.passes) {
-        pass_ = 0;
-        ++frame_;
-      }
-    }
-  }
   return b;
 }
 

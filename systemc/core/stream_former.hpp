@@ -2,32 +2,65 @@
 // the source of the pipelines' voxel stream, one partial beam per clock.
 // Pass order (docs/rtl-interp.md): for each pass, beams 0 .. ny (ny is the
 // zero beam: a time slot, no read), partial beams 0 .. B-1. The zero pass
-// (gradient unit on) reads nothing either.
+// (gradient unit on) reads nothing either. The memory addresses come from
+// the address generator (AddrIf: golden beam_access() at TLM, the verilated
+// cube4_skew_addr at RTL), which the former runs one read ahead.
 #pragma once
 #include <cstdint>
 
 #include "golden/units/skew.hpp"
 #include "systemc/core/beats.hpp"
 #include "systemc/core/frame_plan.hpp"
+#include "systemc/core/unit_if.hpp"
 #include "systemc/core/voxel_memory.hpp"
 
 namespace cube4::sysc {
 
+// Address generation at TLM: golden beam_access(), answered one edge later
+// as the RTL does.
+class TlmAddr final : public AddrIf {
+ public:
+  TlmAddr(const golden::SkewLayout& l, const golden::SkewTraversal& t) : layout_(l), traversal_(t) {}
+  AddrResult clock(const AddrRequest& next, int j, int y, int z) override {
+    const AddrResult out = pending_;
+    pending_ = AddrResult{};
+    if (next.issue) pending_ = {true, j, y, z, golden::beam_access(layout_, traversal_, y, z, j)};
+    return out;
+  }
+  Level level() const override { return Level::Tlm; }
+
+ private:
+  golden::SkewLayout layout_;
+  golden::SkewTraversal traversal_;
+  AddrResult pending_;
+};
+
 class StreamFormer {
  public:
-  // `frames` frames of the same view back to back, with no gap.
-  StreamFormer(const FramePlan& plan, VoxelMemory& mem, int frames = 1);
+  // `frames` frames of the same view back to back, with no gap. `addr` is
+  // primed here with the first read (before the frame's first cycle).
+  StreamFormer(const FramePlan& plan, VoxelMemory& mem, AddrIf& addr, int frames = 1);
   // The beat of this cycle (valid = false once the last frame's stream is out).
   VoxelBeat next();
-  bool done() const { return frame_ >= frames_; }
+  bool done() const { return at_.frame >= frames_; }
   uint64_t beats() const { return beats_; }
 
  private:
+  struct Pos {
+    int frame = 0, pass = 0, y = 0, j = 0;
+  };
+  Pos following(Pos p) const;
+  bool reads(const Pos& p) const { return p.frame < frames_ && p.y < plan_.ny && plan_.pass_voxel_slice(p.pass) < plan_.nz; }
+  // The walk's controls that go with issuing the read at p.
+  AddrRequest request_for(const Pos& p) const;
+  // The next position that reads, from p on (p itself included).
+  Pos next_read(Pos p) const;
+
   const FramePlan& plan_;
   VoxelMemory& mem_;
-  golden::SkewTraversal traversal_;
-  int frames_ = 1, frame_ = 0;
-  int pass_ = 0, y_ = 0, j_ = 0;
+  AddrIf& addr_;
+  int frames_;
+  Pos at_;
   uint64_t beats_ = 0;
 };
 

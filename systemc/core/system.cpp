@@ -40,6 +40,7 @@ namespace {
 // The units of one frame (plain objects: a frame creates them afresh) and
 // the frame's progress through them.
 struct FrameUnits {
+  std::unique_ptr<AddrIf> addr;
   std::unique_ptr<StreamFormer> former;
   std::unique_ptr<InterpIf> interp;
   std::unique_ptr<GradientIf> gradient;
@@ -221,7 +222,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
   res.levels = cfg.levels;
-  res.simulated = {true, rs->gradient, true, true};
+  res.simulated = {true, rs->gradient, true, true, true};
   auto not_needed = [&](bool needed, Unit u, const std::string& what) {
     if (needed) return;
     if (cfg.levels[static_cast<size_t>(u)] == Level::Tlm || (cfg.all_tlm() && !cfg.cycle_level))
@@ -281,9 +282,15 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     PixelMemory pixels(r);
     FrameUnits u;
     u.frames = cfg.frames;
-    u.former = std::make_unique<StreamFormer>(plan, mem, cfg.frames);
-    const bool rtl[kUnits] = {cfg.levels[0] == Level::Rtl, cfg.levels[1] == Level::Rtl, cfg.levels[2] == Level::Rtl,
-                              cfg.levels[3] == Level::Rtl};
+    bool rtl[kUnits];
+    for (int i = 0; i < kUnits; ++i) rtl[i] = cfg.levels[static_cast<size_t>(i)] == Level::Rtl;
+    const golden::SkewTraversal traversal{r.perm, r.flip};
+    if (rtl[static_cast<int>(Unit::Addr)]) {
+      u.addr = make_rtl_addr(plan, mem.layout(), *rtl_ctx, cfg.trace);
+    } else {
+      u.addr = std::make_unique<TlmAddr>(mem.layout(), traversal);
+    }
+    u.former = std::make_unique<StreamFormer>(plan, mem, *u.addr, cfg.frames);
     u.interp = rtl[0] ? make_rtl_interp(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmInterp>(plan);
     if (!rs->gradient) {
       u.gradient = std::make_unique<GradientBypass>(plan);

@@ -30,7 +30,7 @@ struct SystemConfig {
   // Every unit at TLM but clocked beat by beat (the per-unit TLM models of
   // systemc/tlm/) instead of one loosely timed transaction.
   bool cycle_level = false;
-  std::array<Level, kUnits> levels{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
+  std::array<Level, kUnits> levels{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
   TraceWindow trace;         // RTL units only
   bool check = false;        // compare every unit's output stream with golden
   // Simulate what the scene does not need as well (to measure what skipping

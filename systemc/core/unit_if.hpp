@@ -7,6 +7,7 @@
 #include <string>
 #include <systemc>
 
+#include "golden/units/skew.hpp"
 #include "systemc/core/beats.hpp"
 
 namespace cube4::sysc {
@@ -14,11 +15,12 @@ namespace cube4::sysc {
 enum class Level { Tlm, Rtl };
 inline const char* level_name(Level l) { return l == Level::Tlm ? "tlm" : "rtl"; }
 
-// The units, in pipeline order; the names are the command line's.
-enum class Unit { Interp = 0, Gradient = 1, Shade = 2, Composite = 3 };
-constexpr int kUnits = 4;
+// The units, in pipeline order, then the address generator (the stream
+// former's); the names are the command line's.
+enum class Unit { Interp = 0, Gradient = 1, Shade = 2, Composite = 3, Addr = 4 };
+constexpr int kUnits = 5;
 inline const char* unit_name(Unit u) {
-  static const char* const names[] = {"interp", "gradient", "shade", "composite"};
+  static const char* const names[] = {"interp", "gradient", "shade", "composite", "addr"};
   return names[static_cast<int>(u)];
 }
 
@@ -39,5 +41,23 @@ using InterpIf = UnitIf<VoxelBeat, SampleBeat>;
 using GradientIf = UnitIf<SampleBeat, GradientBeat>;
 using ShadeIf = UnitIf<GradientBeat, ShadedBeat>;
 using CompositeIf = UnitIf<ShadedBeat, CompositeOut>;
+
+// Address generation: one clock edge. `issue` asks for the next read partial
+// beam (j, y, z) of the traversal, with the walk's controls for it; the
+// result is the access of the partial beam issued at the previous edge.
+struct AddrRequest {
+  bool issue = false;
+  bool repeat_slice = false;  // with a slice's last partial beam: walk the slice again
+  bool again = false;         // with the frame's last partial beam: the frame once more
+};
+struct AddrResult {
+  bool valid = false;
+  int j = 0, y = 0, z = 0;
+  golden::BeamAccess access;
+};
+struct AddrIf : virtual sc_core::sc_interface {
+  virtual AddrResult clock(const AddrRequest& next, int j, int y, int z) = 0;
+  virtual Level level() const = 0;
+};
 
 }  // namespace cube4::sysc

@@ -10,6 +10,7 @@
 #include "Vsys_shade_lean.h"
 #include "Vsys_shade_unit.h"
 #include "rtl_variant_headers.inc"
+#include "systemc/rtl/rtl_addr.hpp"
 #include "systemc/rtl/rtl_composite.hpp"
 #include "systemc/rtl/rtl_gradient.hpp"
 #include "systemc/rtl/rtl_interp.hpp"
@@ -43,6 +44,17 @@ bool rtl_available(int p) {
 
 void require_rtl(int p) {
   if (!rtl_available(p)) unavailable(p);
+}
+
+std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
+                                      const TraceWindow& trace) {
+  switch (plan.p) {
+#define CUBE4_RTL_P(p) \
+  case p: return std::make_unique<RtlAddr<Vsys_addr_p##p>>(plan, layout, ctx, trace);
+#include "rtl_variant_list.inc"
+#undef CUBE4_RTL_P
+    default: unavailable(plan.p);
+  }
 }
 
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {

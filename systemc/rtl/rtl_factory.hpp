@@ -22,6 +22,8 @@ std::vector<int> rtl_pipes();
 bool rtl_available(int p);
 // Throws, naming the p values that have RTL, if p has none.
 void require_rtl(int p);
+std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
+                                      const TraceWindow& trace);
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
 // Scenes without shading and without gradient-magnitude modulation get the

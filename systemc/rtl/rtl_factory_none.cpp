@@ -15,6 +15,9 @@ namespace {
 }  // namespace
 
 void require_rtl(int) { unavailable(); }
+std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan&, const golden::SkewLayout&, VerilatedContext&, const TraceWindow&) {
+  unavailable();
+}
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&, bool) { unavailable(); }

@@ -623,6 +623,8 @@ void skew_frame(M& m, int p, const std::array<int, 3>& n, const g::SkewTraversal
   m.dim_i = static_cast<uint32_t>(n[0] | n[1] << kDimBits | n[2] << 2 * kDimBits);
   m.start_i = 1;
   m.advance_i = rng.chance(0.5);
+  m.repeat_slice_i = 0;
+  m.again_i = 0;
   cube4::rtl::settle(m);
   cube4::rtl::rise(m);
   m.start_i = 0;
@@ -726,6 +728,8 @@ void test_skew(int p) {
   cube4::rtl::reset(*m);
   m->start_i = 0;
   m->advance_i = 1;
+  m->repeat_slice_i = 0;
+  m->again_i = 0;
   cube4::rtl::settle(*m);
   EXPECT_FALSE(m->valid_o);
   EXPECT_FALSE(m->busy_o);
@@ -753,6 +757,100 @@ void test_skew(int p) {
   EXPECT_TRUE(c.ok()) << c.report();
   std::printf("  cube4_skew_addr p=%d: %d frames (48 traversals x %zu dims), %llu partial beams checked\n", p,
               frames, kSkewDims.size(), static_cast<unsigned long long>(c.checked()));
+}
+
+// The system's walk: each slice walked 1..3 times in a row (repeat_slice_i
+// with its last partial beam, as supersampling reads it), the frame started
+// over (again_i with its last partial beam) two more times without setup,
+// advance_i random. Every issued partial beam against beam_access() of the
+// expected position; last_o on each walk's end; busy_o high throughout.
+template <class M>
+void test_skew_walks(int p) {
+  auto m = std::make_unique<M>();
+  cube4::rtl::reset(*m);
+  cube4::rtl::Checker c("cube4_skew_addr walks p=" + std::to_string(p));
+  Random rng(70 + p);
+  const auto ts = all_traversals();
+  for (int trial = 0; trial < 24; ++trial) {
+    const std::array<int, 3> n = {static_cast<int>(rng.range(1, 9)), static_cast<int>(rng.range(1, 9)),
+                                  static_cast<int>(rng.range(1, 9))};
+    const g::SkewTraversal t = ts[static_cast<size_t>(rng.range(0, 47))];
+    const g::SkewLayout l{n, p};
+    const int nj = g::skew_partial_beams(l, t), ny = g::skew_beams(l, t), nz = g::skew_slices(l, t);
+    // The expected walk: frames x slices x repeats x beams x partial beams.
+    struct Pos { int j, y, z; bool slice_end, frame_end, last_walk_of_slice, last_frame; };
+    std::vector<Pos> walk;
+    const int frames = 3;
+    for (int f = 0; f < frames; ++f)
+      for (int z = 0; z < nz; ++z) {
+        const int times = static_cast<int>(rng.range(1, 3));
+        for (int r = 0; r < times; ++r)
+          for (int y = 0; y < ny; ++y)
+            for (int j = 0; j < nj; ++j) {
+              const bool slice_end = y == ny - 1 && j == nj - 1;
+              walk.push_back({j, y, z, slice_end, slice_end && z == nz - 1 && r == times - 1, r == times - 1,
+                              f == frames - 1});
+            }
+      }
+    m->perm_i = static_cast<uint32_t>(t.perm[0] | t.perm[1] << 2 | t.perm[2] << 4);
+    m->flip_i = static_cast<uint32_t>(t.flip[0] | t.flip[1] << 1 | t.flip[2] << 2);
+    m->dim_i = static_cast<uint32_t>(n[0] | n[1] << kDimBits | n[2] << 2 * kDimBits);
+    m->start_i = 1;
+    m->advance_i = 0;
+    cube4::rtl::settle(*m);
+    cube4::rtl::rise(*m);
+    m->start_i = 0;
+    size_t issued = 0, received = 0;
+    const int ib = skew_index_bits(p);
+    for (uint64_t cycle = 1; received < walk.size(); ++cycle) {
+      if (cycle > 4 * walk.size() + 100) {
+        c.fail(cycle, {{"trial", trial}}, "timeout");
+        break;
+      }
+      const bool can_issue = cycle >= static_cast<uint64_t>(kSkewStartLatency) - 1 && issued < walk.size();
+      m->advance_i = can_issue && rng.chance(0.8);
+      // The walk's controls belong to the partial beam issued this cycle.
+      const Pos* next = issued < walk.size() ? &walk[issued] : nullptr;
+      m->repeat_slice_i = next && next->slice_end && !next->last_walk_of_slice;
+      m->again_i = next && next->frame_end && !next->last_frame;
+      if (!m->repeat_slice_i && rng.chance(0.3)) m->repeat_slice_i = next && !next->slice_end;  // ignored mid-slice
+      cube4::rtl::settle(*m);
+      if (m->valid_o) {
+        const Pos& e = walk[received];
+        const g::BeamAccess a = g::beam_access(l, t, e.y, e.z, e.j);
+        bool ok = m->beam_o == static_cast<uint32_t>(e.j) && m->y_o == static_cast<uint32_t>(e.y) &&
+                  m->z_o == static_cast<uint32_t>(e.z) && m->rotation_o == static_cast<uint32_t>(a.rotation) &&
+                  m->last_o == e.frame_end;
+        for (int mod = 0; mod < p; ++mod)
+          ok = ok && static_cast<int64_t>(get_bits(m->index_o, mod * ib, ib)) == a.module_index[mod];
+        c.check_lazy(
+            cycle, ok, [&] { return Fields{{"trial", trial}, {"beam#", static_cast<int64_t>(received)}}; },
+            [&] { return Fields{{"j", e.j}, {"y", e.y}, {"z", e.z}, {"last", e.frame_end}}; },
+            [&] {
+              return Fields{{"j", m->beam_o}, {"y", m->y_o}, {"z", m->z_o}, {"last", m->last_o}};
+            });
+        ++received;
+      }
+      if (cycle > 1 && issued < walk.size() && !m->busy_o) c.fail(cycle, {{"trial", trial}}, "busy_o fell mid-walk");
+      if (m->advance_i && issued < walk.size()) ++issued;
+      cube4::rtl::rise(*m);
+    }
+    m->advance_i = 0;
+    m->repeat_slice_i = 0;
+    m->again_i = 0;
+    cube4::rtl::settle(*m);
+    if (m->busy_o) c.fail(0, {{"trial", trial}}, "busy_o high after the last frame");
+    cube4::rtl::rise(*m);
+  }
+  m->final();
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_GT(c.checked(), 2000u) << "the walks issued too few partial beams to mean anything";
+}
+
+TEST(RtlSkewAddr, WalksWithRepeatedSlicesAndFramesAgain) {
+  test_skew_walks<Vcube4_skew_addr_p1>(1);
+  test_skew_walks<Vcube4_skew_addr>(4);
+  test_skew_walks<Vcube4_skew_addr_p5>(5);
 }
 
 TEST(RtlSkewAddr, Pipes1) { test_skew<Vcube4_skew_addr_p1>(1); }

@@ -74,18 +74,18 @@ inline void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bo
   EXPECT_EQ(res.simulated[1], simulated.gradient) << "the gradient unit runs exactly when needed (or forced)";
   const sysc::CycleCount cc = sysc::frame_cycles(simulated, p);
   EXPECT_EQ(res.stream_cycles, cc.stream);
-  const bool all_rtl = levels[0] == Level::Rtl && levels[1] == Level::Rtl && levels[2] == Level::Rtl &&
-                       levels[3] == Level::Rtl;
+  bool all_rtl = true;
+  for (Level l : levels) all_rtl = all_rtl && l == Level::Rtl;
   if (all_rtl) EXPECT_EQ(res.frame_cycles, cc.latency) << "RTL cycles against the cycle model";
   const int B = (regs.dim[0] + p - 1) / p;
   EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices() + (simulated.gradient ? 1 : 0)) *
                            static_cast<uint64_t>(regs.dim[1] + 1) * static_cast<uint64_t>(B));
 }
 
-constexpr std::array<Level, 4> kRtl{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
-constexpr std::array<Level, 4> kTlm{Level::Tlm, Level::Tlm, Level::Tlm, Level::Tlm};
-inline std::array<Level, 4> only(sysc::Unit u) {
-  std::array<Level, 4> l = kTlm;
+constexpr std::array<Level, sysc::kUnits> kRtl{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};
+constexpr std::array<Level, sysc::kUnits> kTlm{Level::Tlm, Level::Tlm, Level::Tlm, Level::Tlm, Level::Tlm};
+inline std::array<Level, sysc::kUnits> only(sysc::Unit u) {
+  std::array<Level, sysc::kUnits> l = kTlm;
   l[static_cast<size_t>(u)] = Level::Rtl;
   return l;
 }

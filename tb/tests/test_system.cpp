@@ -92,6 +92,11 @@ TEST(System, InterpAloneAtRtl) { run(Case{}, 4, only(sysc::Unit::Interp)); }
 TEST(System, GradientAloneAtRtl) { run(Case{}, 4, only(sysc::Unit::Gradient)); }
 TEST(System, ShadeAloneAtRtl) { run(Case{}, 4, only(sysc::Unit::Shade)); }
 TEST(System, CompositeAloneAtRtl) { run(Case{}, 4, only(sysc::Unit::Composite)); }
+TEST(System, AddressGenerationAloneAtRtl) {
+  Case c;
+  c.S = 3;  // slices walked three times: the generator's repeat_slice_i
+  run(c, 5, only(sysc::Unit::Addr));
+}
 
 // Real data: the MRI head, default view, all RTL (about 350 000 cycles).
 TEST(System, BrainsmallAllRtl) {
@@ -199,8 +204,8 @@ TEST(System, ThroughTheHostInterface) {
 // cycle model's latency, every next one exactly `stream` cycles later (the
 // steady-state interval), and the pixel memory holds the frame.
 namespace {
-void back_to_back(std::array<Level, 4> levels, bool cycle_level) {
-  const golden::Scene scene = golden::parse_scene(scene_json(Case{}), "test_system.json");
+void back_to_back(std::array<Level, sysc::kUnits> levels, bool cycle_level, const Case& c = Case{}) {
+  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
   const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
   const golden::Registers regs = golden::program_host(scene, vol).regs;
   sysc::SystemConfig cfg;
@@ -218,6 +223,14 @@ void back_to_back(std::array<Level, 4> levels, bool cycle_level) {
   if (levels == kRtl) EXPECT_EQ(res.frame_cycles, cc.latency);
 }
 TEST(System, BackToBackFramesRtl) { back_to_back(kRtl, false); }
+// No zero pass between the frames: the address generator starts the next
+// frame in the cycle after the last read (again_i), with supersampling.
+TEST(System, BackToBackFramesRtlMipS2) {
+  Case c;
+  c.effects = R"("shading": false, "blend": "mip")";
+  c.S = 2;
+  back_to_back(kRtl, false, c);
+}
 TEST(System, BackToBackFramesMixed) { back_to_back(only(sysc::Unit::Gradient), false); }
 TEST(System, BackToBackFramesTlmClocked) { back_to_back(kTlm, true); }
 }  // namespace

@@ -60,7 +60,8 @@ TEST(StreamFormer, DeskewedBeamsAreThePermutedVolume) {
         const golden::PermutedVolume pv(vol, r.perm, r.flip);
         const sysc::FramePlan plan(r, p);
         sysc::VoxelMemory mem(vol, p);
-        sysc::StreamFormer former(plan, mem);
+        sysc::TlmAddr addr(mem.layout(), {r.perm, r.flip});
+        sysc::StreamFormer former(plan, mem, addr);
         for (int pass = 0; pass < plan.passes; ++pass)
           for (int y = 0; y <= plan.ny; ++y)
             for (int j = 0; j < plan.B; ++j) {
