@@ -36,6 +36,19 @@ TEST(System, SphereTlmCycleLevelNoGradientP5) {
   c.effects = R"("shading": false, "blend": "mip")";
   run(c, 5, kTlm, true);
 }
+// Every p from 1 to 16 clocked (the TLM models; RTL is built for the p of
+// CUBE4_SYSTEM_PIPES, tested above), and loosely timed beyond.
+TEST(System, EveryPipelineCountClockedTlm) {
+  for (int p = 1; p <= 16; ++p) {
+    SCOPED_TRACE("p = " + std::to_string(p));
+    Case c;
+    c.volume = R"({"synthetic": "noise", "size": [11, 9, 7], "seed": 5})";
+    run(c, p, kTlm, true);
+  }
+}
+TEST(System, LargePipelineCountsTlm) {
+  for (int p : {17, 32, 64, 128}) run(Case{}, p, kTlm);
+}
 // The plain C++ schedule (the benchmarks' ceiling) simulates the same machine.
 TEST(System, SpherePlainLoopP4) { run(Case{}, 4, kRtl, false, sysc::Kernel::PlainLoop); }
 
