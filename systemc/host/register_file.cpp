@@ -60,30 +60,23 @@ void require(bool ok, const std::string& what) {
 }  // namespace
 
 void check_hardware_params(const HardwareParams& hw) {
+  auto in_range = [](const std::string& name, int v, int lo, int hi) {
+    require(v >= lo && v <= hi, name + " = " + std::to_string(v) + " is out of range " + std::to_string(lo) + ".." +
+                                    std::to_string(hi));
+  };
   const golden::Precision& p = hw.precision;
-  require(hw.pipelines >= 1 && hw.pipelines <= rm::kMaxPipelines,
-          "pipelines = " + std::to_string(hw.pipelines) + " is out of range 1..256");
-  require(hw.max_dim >= 2 && hw.max_dim <= rm::kMaxDimLimit,
-          "max_dim = " + std::to_string(hw.max_dim) + " is out of range 2..1024");
+  in_range("pipelines", hw.pipelines, 1, rm::kMaxPipelines);
+  in_range("max_dim", hw.max_dim, 2, rm::kMaxDimLimit);
   // The windows and packings of docs/registers.md bound these widths.
-  require(p.voxel_bits >= 1 && p.voxel_bits <= 16,
-          "precision.voxel_bits = " + std::to_string(p.voxel_bits) + " is out of range 1..16");
-  require(p.magnitude_bits >= 1 && p.magnitude_bits <= 16,
-          "precision.magnitude_bits = " + std::to_string(p.magnitude_bits) + " is out of range 1..16");
-  require(p.color_bits >= 1 && p.color_bits <= 8,
-          "precision.color_bits = " + std::to_string(p.color_bits) + " is out of range 1..8");
-  require(p.alpha_bits >= 1 && p.alpha_bits <= 16,
-          "precision.alpha_bits = " + std::to_string(p.alpha_bits) + " is out of range 1..16");
-  require(p.gmlut_bits >= 1 && p.gmlut_bits <= 16,
-          "precision.gmlut_bits = " + std::to_string(p.gmlut_bits) + " is out of range 1..16");
-  require(p.map_face_res >= 2 && p.map_face_res <= 64,
-          "precision.map_face_res = " + std::to_string(p.map_face_res) + " is out of range 2..64");
-  require(p.map_bits >= 1 && p.map_bits <= 32,
-          "precision.map_bits = " + std::to_string(p.map_bits) + " is out of range 1..32");
-  require(p.coef_bits >= 1 && p.coef_bits <= 32,
-          "precision.coef_bits = " + std::to_string(p.coef_bits) + " is out of range 1..32");
-  require(p.eye_bits >= 2 && p.eye_bits <= 32,
-          "precision.eye_bits = " + std::to_string(p.eye_bits) + " is out of range 2..32");
+  in_range("precision.voxel_bits", p.voxel_bits, 1, 16);
+  in_range("precision.magnitude_bits", p.magnitude_bits, 1, 16);
+  in_range("precision.color_bits", p.color_bits, 1, 8);
+  in_range("precision.alpha_bits", p.alpha_bits, 1, 16);
+  in_range("precision.gmlut_bits", p.gmlut_bits, 1, 16);
+  in_range("precision.map_face_res", p.map_face_res, 2, 64);
+  in_range("precision.map_bits", p.map_bits, 1, 32);
+  in_range("precision.coef_bits", p.coef_bits, 1, 32);
+  in_range("precision.eye_bits", p.eye_bits, 2, 32);
 }
 
 RegisterFile::RegisterFile(const HardwareParams& hw) : hw_(hw) {
