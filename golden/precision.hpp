@@ -1,4 +1,5 @@
-// The pipeline's bit widths: one struct, VolumePro's widths by default.
+// The pipeline's bit widths: one struct. The defaults are VolumePro's but
+// for the compositing channels (see volumepro_precision()).
 // Every golden unit function and every RTL unit takes its widths from here.
 #pragma once
 
@@ -13,7 +14,7 @@ struct Precision {
   int magnitude_bits = 8;   // |g| (VolumePro: 0..220)
   int nr_iterations = 3;    // Newton–Raphson square-root iterations
   int color_bits = 8;       // classification RGB (VolumePro: 8)
-  int alpha_bits = 12;      // classification α and every compositing channel (VolumePro: 12)
+  int alpha_bits = 16;      // classification α, shaded colour and base-plane channels (VolumePro: 12)
   int gmlut_bits = 8;       // GmLUT output (VolumePro: 0..255)
   int map_face_res = 8;     // reflectance-map grid per cube face: 6*8*8 = 384 entries
   int map_bits = 16;        // reflectance-map entry, map_frac_bits of them fraction
@@ -22,6 +23,19 @@ struct Precision {
   int coef_frac_bits = 8;
   int eye_bits = 8;         // signed eye-vector components for the reflection vector
   int cut_bits = 32;        // signed cut-plane distance, saturated
+  int acc_guard_bits = 8;   // compositing accumulator: alpha_bits + these fraction bits (VolumePro: 0)
 };
+
+// VolumePro's widths (VolumePro §3, Table 1): 12-bit α and colour channels
+// and a compositor that rounds every product to them. Reachable as scene
+// precision {"alpha_bits": 12, "acc_guard_bits": 0}; the defaults above
+// differ from it only in those two, which keep translucent material stable
+// (docs/fixed-point.md, "Compositing error").
+constexpr Precision volumepro_precision() {
+  Precision p;
+  p.alpha_bits = 12;
+  p.acc_guard_bits = 0;
+  return p;
+}
 
 }  // namespace cube4::golden

@@ -47,7 +47,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
   if (r.shading && r.p.gradient_bits <= 10)
     faces = std::make_unique<FacePositionTable>(static_cast<int>(max_signed(r.p.gradient_bits)), r.p.map_face_res,
                                                 r.p.weight_bits);
-  const uint16_t opaque = static_cast<uint16_t>(max_unsigned(r.p.alpha_bits));
+  const uint32_t opaque = static_cast<uint32_t>(max_unsigned(acc_bits(r.p)));
   int32_t first_visible = 0;
   while (first_visible < static_cast<int32_t>(r.classification.size()) && r.classification[first_visible].a == 0)
     ++first_visible;

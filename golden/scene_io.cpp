@@ -564,6 +564,7 @@ constexpr PrecisionField kPrecisionFields[] = {
     {"nr_iterations", &Precision::nr_iterations, 0, 8},
     {"color_bits", &Precision::color_bits, 4, 8},
     {"alpha_bits", &Precision::alpha_bits, 8, 16},
+    {"acc_guard_bits", &Precision::acc_guard_bits, 0, 8},
     {"gmlut_bits", &Precision::gmlut_bits, 4, 16},
     {"map_face_res", &Precision::map_face_res, 2, 64},
     {"map_bits", &Precision::map_bits, 8, 32},

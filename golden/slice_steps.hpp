@@ -64,7 +64,7 @@ inline void gather_neighbourhood(const Plane& behind, const Plane& current, cons
   gather_2x2(ahead, c.ahead_x, c.ahead_y, n.ahead);
 }
 
-inline void write_pixel(BasePlane& bp, int u, int v, const RayAcc& a) {
+inline void write_pixel(BasePlane& bp, int u, int v, const Pixel& a) {
   uint16_t* px = &bp.rgba[(static_cast<size_t>(v) * bp.width + u) * 4];
   px[0] = a.r; px[1] = a.g; px[2] = a.b; px[3] = a.a;
 }
@@ -109,7 +109,8 @@ class SliceCompositor {
       for (int y = 0; y < ny_; ++y)
         for (int x = y >= ny_ - c.dy ? 0 : nx_ - c.dx; x < nx_; ++x)
           if (ray_leaves(x, y, c.dx, c.dy, nx_, ny_))
-            write_pixel(bp_, x - pc.ix + ix_last_, y - pc.iy + iy_last_, prev_[static_cast<size_t>(y) * nx_ + x]);
+            write_pixel(bp_, x - pc.ix + ix_last_, y - pc.iy + iy_last_,
+                        pixel_of(prev_[static_cast<size_t>(y) * nx_ + x], r_.p));
     }
     std::swap(prev_, cur_);
   }
@@ -119,7 +120,8 @@ class SliceCompositor {
     const SliceControl last = slice_control(r_, K_ - 1);
     for (int y = 0; y < ny_; ++y)
       for (int x = 0; x < nx_; ++x)
-        write_pixel(bp_, x - last.ix + ix_last_, y - last.iy + iy_last_, prev_[static_cast<size_t>(y) * nx_ + x]);
+        write_pixel(bp_, x - last.ix + ix_last_, y - last.iy + iy_last_,
+                    pixel_of(prev_[static_cast<size_t>(y) * nx_ + x], r_.p));
   }
 
  private:

@@ -11,8 +11,11 @@
 //   acc' = blend(mode, acc, {rgb, alpha, value, visible})
 // blend: front-to-back (mode 0, and 3), MIP (1), MinIP (2); an invisible
 // sample leaves the accumulator unchanged. Both blends use the premultiplied
-// colour mul_frac(c, alpha), so it is computed before the accumulator is
-// needed, and the accumulator path is one multiply deep.
+// colour premultiply(c, alpha) (AlphaBits + AccGuardBits wide, golden
+// premultiply()), so it is computed before the accumulator is needed, and
+// the accumulator path is one multiply deep. The accumulator ports are
+// AccGuardBits wider than the sample: the guard bits keep the sub-LSB
+// contributions of translucent samples (docs/fixed-point.md).
 //
 // The ray-alignment FIFOs are outside: the predecessor accumulator acc_*_i
 // enters AccDelay = 6 cycles after its sample (valid_i) and the result
@@ -38,13 +41,15 @@
 // width, CutBits x (AlphaBits + CutInvShift) bits.
 //
 // Parameters (defaults = golden Precision, kCutInvShift): VoxelBits,
-// WeightBits, AlphaBits, CutBits, CutInvShift; PosBits, CutCoefBits;
+// WeightBits, AlphaBits, AccGuardBits (<= AlphaBits), CutBits, CutInvShift;
+// PosBits, CutCoefBits;
 // HasCutPlane (0: no cut-plane hardware, cut_enabled_i is ignored; equals
 // golden with cut_enabled false; same latency).
 module cube4_composite #(
   parameter int unsigned VoxelBits   = 12,
   parameter int unsigned WeightBits  = 8,
-  parameter int unsigned AlphaBits   = 12,
+  parameter int unsigned AlphaBits   = 16,
+  parameter int unsigned AccGuardBits = 8,
   parameter int unsigned CutBits     = 32,
   parameter int unsigned CutInvShift = 24,
   parameter int unsigned PosBits     = 16,
@@ -89,23 +94,25 @@ module cube4_composite #(
   input  logic [WeightBits-1:0]                wy_i,
   input  logic [WeightBits-1:0]                wz_i,
   // Predecessor accumulator (golden RayAcc), AccDelay cycles after valid_i.
-  input  logic [AlphaBits-1:0]                 acc_red_i,
-  input  logic [AlphaBits-1:0]                 acc_green_i,
-  input  logic [AlphaBits-1:0]                 acc_blue_i,
-  input  logic [AlphaBits-1:0]                 acc_alpha_i,
+  input  logic [AlphaBits+AccGuardBits-1:0]    acc_red_i,
+  input  logic [AlphaBits+AccGuardBits-1:0]    acc_green_i,
+  input  logic [AlphaBits+AccGuardBits-1:0]    acc_blue_i,
+  input  logic [AlphaBits+AccGuardBits-1:0]    acc_alpha_i,
   input  logic [VoxelBits-1:0]                 acc_value_i,
   input  logic                                 acc_selected_i,  // RayAcc::valid
   // New accumulator.
   output logic                                 valid_o,
-  output logic [AlphaBits-1:0]                 red_o,
-  output logic [AlphaBits-1:0]                 green_o,
-  output logic [AlphaBits-1:0]                 blue_o,
-  output logic [AlphaBits-1:0]                 alpha_o,
+  output logic [AlphaBits+AccGuardBits-1:0]    red_o,
+  output logic [AlphaBits+AccGuardBits-1:0]    green_o,
+  output logic [AlphaBits+AccGuardBits-1:0]    blue_o,
+  output logic [AlphaBits+AccGuardBits-1:0]    alpha_o,
   output logic [VoxelBits-1:0]                 value_o,
   output logic                                 selected_o
 );
 
   localparam int unsigned A        = AlphaBits;
+  localparam int unsigned G        = AccGuardBits;
+  localparam int unsigned AB       = AlphaBits + AccGuardBits;       // accumulator domain
   localparam int unsigned PwBits   = PosBits + WeightBits;           // (x << W) + wx
   localparam int unsigned TermBits = CutCoefBits + PwBits;           // a * X, signed
   localparam int unsigned SumBits  = TermBits + 2;                   // a*X + b*Y + c*Z
@@ -121,6 +128,30 @@ module cube4_composite #(
     f_unit   = {1'b0, f} + (A+1)'(f[A-1]);
     prod     = (2*A+1)'(x) * (2*A+1)'(f_unit) + ((2*A+1)'(1) << (A - 1));
     mul_frac = A'(prod >> A);
+  endfunction
+
+  // The same product in the accumulator domain (golden mul_frac at A + G).
+  function automatic logic [AB-1:0] mul_frac_acc(input logic [AB-1:0] x, input logic [AB-1:0] f);
+    logic [AB:0]    f_unit;
+    logic [2*AB:0]  prod;
+    f_unit       = {1'b0, f} + (AB+1)'(f[AB-1]);
+    prod         = (2*AB+1)'(x) * (2*AB+1)'(f_unit) + ((2*AB+1)'(1) << (AB - 1));
+    mul_frac_acc = AB'(prod >> AB);
+  endfunction
+
+  // golden to_acc(): a unit value widened by bit replication, 1.0 -> 1.0.
+  function automatic logic [AB-1:0] to_acc(input logic [A-1:0] v);
+    to_acc = (AB'(v) << G) | (AB'(v) >> (A - G));
+  endfunction
+
+  // golden premultiply() = mul_frac(to_acc(c), alpha, A): never above
+  // to_acc(c), so AB bits hold it.
+  function automatic logic [AB-1:0] premultiply(input logic [A-1:0] c, input logic [A-1:0] f);
+    logic [A:0]      f_unit;
+    logic [AB+A:0]   prod;
+    f_unit      = {1'b0, f} + (A+1)'(f[A-1]);
+    prod        = (AB+A+1)'(to_acc(c)) * (AB+A+1)'(f_unit) + ((AB+A+1)'(1) << (A - 1));
+    premultiply = AB'(prod >> A);
   endfunction
 
   logic [Latency-1:0] valid_q;
@@ -279,28 +310,28 @@ module cube4_composite #(
   ///////////////////////////////////////////
   // Stage 6: premultiplied sample colour  //
   ///////////////////////////////////////////
-  logic [A-1:0] pre_red_q, pre_green_q, pre_blue_q, pre_alpha_q;
-  logic         pre_visible_q;
+  logic [AB-1:0] pre_red_q, pre_green_q, pre_blue_q, pre_alpha_q;
+  logic          pre_visible_q;
   always_ff @(posedge clk_i) begin : stage6_regs
-    pre_red_q     <= mul_frac(rgb_q[4*3*A+2*A +: A], cut_alpha_q);
-    pre_green_q   <= mul_frac(rgb_q[4*3*A+A +: A], cut_alpha_q);
-    pre_blue_q    <= mul_frac(rgb_q[4*3*A +: A], cut_alpha_q);
-    pre_alpha_q   <= cut_alpha_q;
+    pre_red_q     <= premultiply(rgb_q[4*3*A+2*A +: A], cut_alpha_q);
+    pre_green_q   <= premultiply(rgb_q[4*3*A+A +: A], cut_alpha_q);
+    pre_blue_q    <= premultiply(rgb_q[4*3*A +: A], cut_alpha_q);
+    pre_alpha_q   <= to_acc(cut_alpha_q);
     pre_visible_q <= visible_q;
   end
 
   ////////////////////////////////////////////////
   // Stage 7: blend with the accumulator        //
   ////////////////////////////////////////////////
-  // Front to back: t = one - acc.a; c += mul_frac(t, pre_c), saturated;
-  // a += mul_frac(t, alpha) (never passes one).
-  logic [A-1:0] transparency;
-  assign transparency = {A{1'b1}} - acc_alpha_i;
+  // Front to back, in the accumulator domain: t = one - acc.a;
+  // c += mul_frac(t, pre_c), saturated; a += mul_frac(t, alpha) (never passes one).
+  logic [AB-1:0] transparency;
+  assign transparency = {AB{1'b1}} - acc_alpha_i;
 
-  function automatic logic [A-1:0] add_sat(input logic [A-1:0] acc, input logic [A-1:0] inc);
-    logic [A:0] sum;
+  function automatic logic [AB-1:0] add_sat(input logic [AB-1:0] acc, input logic [AB-1:0] inc);
+    logic [AB:0] sum;
     sum     = {1'b0, acc} + {1'b0, inc};
-    add_sat = sum[A] ? {A{1'b1}} : sum[A-1:0];
+    add_sat = sum[AB] ? {AB{1'b1}} : sum[AB-1:0];
   endfunction
 
   logic [VoxelBits-1:0] sample_value;
@@ -329,10 +360,10 @@ module cube4_composite #(
           selected_o <= 1'b1;
         end
       end else begin
-        red_o   <= add_sat(acc_red_i, mul_frac(transparency, pre_red_q));
-        green_o <= add_sat(acc_green_i, mul_frac(transparency, pre_green_q));
-        blue_o  <= add_sat(acc_blue_i, mul_frac(transparency, pre_blue_q));
-        alpha_o <= acc_alpha_i + mul_frac(transparency, pre_alpha_q);
+        red_o   <= add_sat(acc_red_i, mul_frac_acc(transparency, pre_red_q));
+        green_o <= add_sat(acc_green_i, mul_frac_acc(transparency, pre_green_q));
+        blue_o  <= add_sat(acc_blue_i, mul_frac_acc(transparency, pre_blue_q));
+        alpha_o <= acc_alpha_i + mul_frac_acc(transparency, pre_alpha_q);
       end
     end
   end

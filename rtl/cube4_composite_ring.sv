@@ -20,7 +20,7 @@
 //
 // Parameters:
 //   NumPipes                          - p, pipelines (>= 1)
-//   VoxelBits, WeightBits, AlphaBits,
+//   VoxelBits, WeightBits, AlphaBits, AccGuardBits,
 //   CutBits, CutInvShift, PosBits,
 //   CutCoefBits, HasCutPlane          - as cube4_composite
 //   MaxDim                            - largest nx and ny the ray storage holds
@@ -31,7 +31,8 @@ module cube4_composite_ring #(
   parameter int unsigned  NumPipes    = 4,
   parameter int unsigned  VoxelBits   = 12,
   parameter int unsigned  WeightBits  = 8,
-  parameter int unsigned  AlphaBits   = 12,
+  parameter int unsigned  AlphaBits   = 16,
+  parameter int unsigned  AccGuardBits = 8,
   parameter int unsigned  CutBits     = 32,
   parameter int unsigned  CutInvShift = 24,
   parameter int unsigned  PosBits     = 16,
@@ -102,7 +103,7 @@ module cube4_composite_ring #(
 );
 
   localparam int unsigned A        = AlphaBits;
-  localparam int unsigned LinkBits = 4 * AlphaBits + VoxelBits + 1;
+  localparam int unsigned LinkBits = 4 * (AlphaBits + AccGuardBits) + VoxelBits + 1;
 
   // Links as a packed vector (yosys 0.23: no unpacked wire arrays).
   logic [NumPipes*LinkBits-1:0] link;
@@ -116,6 +117,7 @@ module cube4_composite_ring #(
       .VoxelBits  (VoxelBits),
       .WeightBits (WeightBits),
       .AlphaBits  (AlphaBits),
+      .AccGuardBits(AccGuardBits),
       .CutBits    (CutBits),
       .CutInvShift(CutInvShift),
       .PosBits    (PosBits),

@@ -75,8 +75,8 @@
 // golden (a change of the DDA offset by 0 or 1 per slice).
 //
 // Parameters:
-//   VoxelBits, WeightBits, AlphaBits, CutBits, CutInvShift, PosBits,
-//   CutCoefBits           - as cube4_composite (golden Precision defaults)
+//   VoxelBits, WeightBits, AlphaBits, AccGuardBits, CutBits, CutInvShift,
+//   PosBits, CutCoefBits  - as cube4_composite (golden Precision defaults)
 //   HasCutPlane           - as cube4_composite (0: no cut-plane hardware)
 //   BeamDepth             - ray beam delay entries: max partial beams per beam
 //   SliceDepth            - ray slice store entries: max ny * partial beams
@@ -87,7 +87,8 @@
 module cube4_composite_unit #(
   parameter int unsigned  VoxelBits   = 12,
   parameter int unsigned  WeightBits  = 8,
-  parameter int unsigned  AlphaBits   = 12,
+  parameter int unsigned  AlphaBits   = 16,
+  parameter int unsigned  AccGuardBits = 8,
   parameter int unsigned  CutBits     = 32,
   parameter int unsigned  CutInvShift = 24,
   parameter int unsigned  PosBits     = 16,
@@ -96,7 +97,7 @@ module cube4_composite_unit #(
   parameter int unsigned  BeamDepth   = 64,
   parameter int unsigned  SliceDepth  = 16384,
   parameter bit           WrapIn      = 1'b0,
-  localparam int unsigned AccBits     = 4 * AlphaBits + VoxelBits + 1
+  localparam int unsigned AccBits     = 4 * (AlphaBits + AccGuardBits) + VoxelBits + 1
 ) (
   input  logic                             clk_i,
   input  logic                             rst_ni,
@@ -163,6 +164,8 @@ module cube4_composite_unit #(
 );
 
   localparam int unsigned A              = AlphaBits;
+  localparam int unsigned G              = AccGuardBits;
+  localparam int unsigned AB             = AlphaBits + AccGuardBits;  // accumulator channel
   // cube4_composite's timing (its header): the predecessor enters AccDelay
   // cycles after the sample, the result leaves Latency cycles after it.
   localparam int unsigned AccDelay       = 6;
@@ -216,7 +219,7 @@ module cube4_composite_unit #(
   // Compositing datapath; its result is the ray of this slice.
   logic [AccBits-1:0] pred, result;
   logic               result_valid;
-  logic [A-1:0]       res_red, res_green, res_blue, res_alpha;
+  logic [AB-1:0]      res_red, res_green, res_blue, res_alpha;
   logic [VoxelBits-1:0] res_value;
   logic               res_selected;
 
@@ -224,6 +227,7 @@ module cube4_composite_unit #(
     .VoxelBits  (VoxelBits),
     .WeightBits (WeightBits),
     .AlphaBits  (AlphaBits),
+    .AccGuardBits(AccGuardBits),
     .CutBits    (CutBits),
     .CutInvShift(CutInvShift),
     .PosBits    (PosBits),
@@ -262,12 +266,12 @@ module cube4_composite_unit #(
     .wx_i             (wx_i),
     .wy_i             (wy_i),
     .wz_i             (wz_i),
-    .acc_red_i        (pred[0 +: A]),
-    .acc_green_i      (pred[A +: A]),
-    .acc_blue_i       (pred[2*A +: A]),
-    .acc_alpha_i      (pred[3*A +: A]),
-    .acc_value_i      (pred[4*A +: VoxelBits]),
-    .acc_selected_i   (pred[4*A+VoxelBits]),
+    .acc_red_i        (pred[0 +: AB]),
+    .acc_green_i      (pred[AB +: AB]),
+    .acc_blue_i       (pred[2*AB +: AB]),
+    .acc_alpha_i      (pred[3*AB +: AB]),
+    .acc_value_i      (pred[4*AB +: VoxelBits]),
+    .acc_selected_i   (pred[4*AB+VoxelBits]),
     .valid_o          (result_valid),
     .red_o            (res_red),
     .green_o          (res_green),
@@ -382,7 +386,17 @@ module cube4_composite_unit #(
   assign pred    = no_pred ? '0 : (dx_a ? left_cand : own_cand);
 
   // -------------------------------------------------------------------------
-  // Pixel port: the finished rays, straight from the compositing datapath.
+  // Pixel port: the finished rays from the compositing datapath, scaled
+  // from the accumulator domain to AlphaBits (golden acc_to_pixel():
+  // (v - (v >> A) + half) >> G, full -> full, so it needs no saturation).
+  // v - (v >> A) + half stays below 2^AB, and its top AB - G bits below 2^A.
+  localparam logic [AB-1:0] PixelHalf = (G > 0) ? (AB'(1) << (G - 1)) : '0;
+  function automatic logic [A-1:0] to_pixel(input logic [AB-1:0] v);
+    logic [AB-1:0] scaled;
+    scaled   = v - (v >> A) + PixelHalf;
+    to_pixel = A'(scaled >> G);
+  endfunction
+
   logic               exit_o;
   logic [PosBits-1:0] u_o, v_o;
   assign {exit_o, u_o, v_o} = exit_q[(Latency-1)*ExitBits +: ExitBits];
@@ -390,9 +404,9 @@ module cube4_composite_unit #(
   assign pixel_valid_o = result_valid && exit_o;
   assign pixel_u_o     = u_o;
   assign pixel_v_o     = v_o;
-  assign pixel_red_o   = res_red;
-  assign pixel_green_o = res_green;
-  assign pixel_blue_o  = res_blue;
-  assign pixel_alpha_o = res_alpha;
+  assign pixel_red_o   = to_pixel(res_red);
+  assign pixel_green_o = to_pixel(res_green);
+  assign pixel_blue_o  = to_pixel(res_blue);
+  assign pixel_alpha_o = to_pixel(res_alpha);
 
 endmodule

@@ -25,7 +25,7 @@ module cube4_shade_classify #(
   parameter int unsigned VoxelBits     = 12,
   parameter int unsigned MagnitudeBits = 8,
   parameter int unsigned ColorBits     = 8,
-  parameter int unsigned AlphaBits     = 12,
+  parameter int unsigned AlphaBits     = 16,
   parameter int unsigned GmlutBits     = 8
 ) (
   input  logic                                 clk_i,

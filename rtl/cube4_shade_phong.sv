@@ -21,7 +21,7 @@
 // Parameters (defaults = golden Precision): AlphaBits, MapBits,
 // MapFracBits, CoefBits, CoefFracBits.
 module cube4_shade_phong #(
-  parameter int unsigned AlphaBits    = 12,
+  parameter int unsigned AlphaBits    = 16,
   parameter int unsigned MapBits      = 16,
   parameter int unsigned MapFracBits  = 8,
   parameter int unsigned CoefBits     = 10,

@@ -28,7 +28,7 @@ module cube4_shade_unit #(
   parameter int unsigned MagnitudeBits   = 8,
   parameter int unsigned NrIterations    = 3,
   parameter int unsigned ColorBits       = 8,
-  parameter int unsigned AlphaBits       = 12,
+  parameter int unsigned AlphaBits       = 16,
   parameter int unsigned GmlutBits       = 8,
   parameter int unsigned MapFaceRes      = 8,
   parameter int unsigned MapBits         = 16,

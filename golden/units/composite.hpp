@@ -1,5 +1,12 @@
-// Compositor: front-to-back α-blending, MIP and MinIP (VolumePro Table 1),
-// all at alpha_bits. Colours in the accumulator are premultiplied by α.
+// Compositor: front-to-back α-blending, MIP and MinIP (VolumePro Table 1).
+// Samples arrive at alpha_bits (n); the accumulator holds colour and α at
+// n + acc_guard_bits (the accumulator domain, A), premultiplied by α, and a
+// finished ray is rounded back to n bits for the base plane (pixel_of).
+// The guard bits are what keeps translucent material stable: a sample's
+// contribution t·α·C is often well under one LSB of n bits, and rounding it
+// there (as VolumePro's 12-bit compositor does) is a systematic error that
+// grows with the ray's length (docs/fixed-point.md, "Compositing error").
+// With acc_guard_bits = 0 this is VolumePro's compositor exactly.
 #pragma once
 #include <cstdint>
 
@@ -12,7 +19,7 @@ namespace cube4::golden {
 enum class BlendMode : uint8_t { Composite = 0, Mip = 1, MinIp = 2 };
 
 struct RayAcc {
-  uint16_t r = 0, g = 0, b = 0, a = 0;  // premultiplied colour and opacity
+  uint32_t r = 0, g = 0, b = 0, a = 0;  // premultiplied colour and opacity, A bits
   uint16_t value = 0;                   // MIP/MinIP: the selected sample value
   bool valid = false;                   // MIP/MinIP: a sample has been selected
   friend constexpr bool operator==(const RayAcc& x, const RayAcc& y) {
@@ -28,21 +35,38 @@ struct ShadedSample {
   bool visible = true;  // cropping and cut plane
 };
 
-// C += (1 - α_acc)·α·C_s ; α_acc += (1 - α_acc)·α. The increment is a
-// fraction of the remaining transparency, so α_acc never passes full
-// opacity; colour rounding can pass it by an LSB, hence the saturation.
+constexpr int acc_bits(const Precision& p) { return p.alpha_bits + p.acc_guard_bits; }
+
+// A unit value (colour or α, alpha_bits) widened to the accumulator domain,
+// 1.0 -> 1.0 (bit replication).
+constexpr uint32_t to_acc(uint32_t v, const Precision& p) {
+  return static_cast<uint32_t>(expand_bits(v, p.alpha_bits, acc_bits(p)));
+}
+
+// A sample's premultiplied colour C·α in the accumulator domain: the colour
+// widened first, so the product keeps acc_guard_bits more of its fraction
+// than mul_frac(C, α) would (one rounding, half up), and full colour at full
+// α is full.
+constexpr uint32_t premultiply(uint32_t c, uint32_t alpha, const Precision& p) {
+  return static_cast<uint32_t>(mul_frac(to_acc(c, p), alpha, p.alpha_bits));
+}
+
+// C += (1 - α_acc)·C_s·α ; α_acc += (1 - α_acc)·α, in the accumulator
+// domain. The increment is a fraction of the remaining transparency, so
+// α_acc never passes full opacity; colour rounding can pass it by an LSB,
+// hence the saturation.
 constexpr RayAcc blend_front_to_back(const RayAcc& acc, const ShadedSample& s, const Precision& p) {
   if (!s.visible) return acc;
-  const int n = p.alpha_bits;
-  const int64_t t = max_unsigned(n) - acc.a;
+  const int a = acc_bits(p);
+  const int64_t t = max_unsigned(a) - acc.a;
   RayAcc r = acc;
-  auto add = [&](uint16_t c_acc, uint32_t c) {
-    return static_cast<uint16_t>(sat_unsigned(c_acc + mul_frac(t, mul_frac(c, s.alpha, n), n), n));
+  auto add = [&](uint32_t c_acc, uint32_t c) {
+    return static_cast<uint32_t>(sat_unsigned(c_acc + mul_frac(t, premultiply(c, s.alpha, p), a), a));
   };
   r.r = add(acc.r, s.rgb[0]);
   r.g = add(acc.g, s.rgb[1]);
   r.b = add(acc.b, s.rgb[2]);
-  r.a = static_cast<uint16_t>(acc.a + mul_frac(t, s.alpha, n));
+  r.a = static_cast<uint32_t>(acc.a + mul_frac(t, to_acc(s.alpha, p), a));
   return r;
 }
 
@@ -53,15 +77,30 @@ constexpr RayAcc blend_extreme(const RayAcc& acc, const ShadedSample& s, bool ma
   if (!s.visible) return acc;
   const bool take = !acc.valid || (maximum ? s.value > acc.value : s.value < acc.value);
   if (!take) return acc;
-  const int n = p.alpha_bits;
   RayAcc r;
-  r.r = static_cast<uint16_t>(mul_frac(s.rgb[0], s.alpha, n));
-  r.g = static_cast<uint16_t>(mul_frac(s.rgb[1], s.alpha, n));
-  r.b = static_cast<uint16_t>(mul_frac(s.rgb[2], s.alpha, n));
-  r.a = static_cast<uint16_t>(s.alpha);
+  r.r = premultiply(s.rgb[0], s.alpha, p);
+  r.g = premultiply(s.rgb[1], s.alpha, p);
+  r.b = premultiply(s.rgb[2], s.alpha, p);
+  r.a = to_acc(s.alpha, p);
   r.value = static_cast<uint16_t>(s.value);
   r.valid = true;
   return r;
+}
+
+// A finished ray as a base-plane pixel: each channel scaled from the
+// accumulator domain (full = 2^A - 1) to alpha_bits (full = 2^n - 1),
+// rounded half up. A plain shift by the guard bits would read full scale as
+// 2^n - 2^-g and brighten every pixel by up to one LSB; v - (v >> n) is the
+// inverse of the bit replication of to_acc() (full -> full, 0 -> 0,
+// monotonic, never above 2^n - 1), within 2^-g LSB of the exact scaling.
+struct Pixel {
+  uint16_t r = 0, g = 0, b = 0, a = 0;
+};
+constexpr uint16_t acc_to_pixel(uint32_t v, const Precision& p) {
+  return static_cast<uint16_t>(round_shift(v - (v >> p.alpha_bits), p.acc_guard_bits));
+}
+constexpr Pixel pixel_of(const RayAcc& acc, const Precision& p) {
+  return {acc_to_pixel(acc.r, p), acc_to_pixel(acc.g, p), acc_to_pixel(acc.b, p), acc_to_pixel(acc.a, p)};
 }
 
 constexpr RayAcc blend(BlendMode mode, const RayAcc& acc, const ShadedSample& s, const Precision& p) {

@@ -43,5 +43,7 @@ cube4_rtl_variant(test_rtl_shader cube4_shader Vcube4_shader_noshade SOURCES ${_
 # cube4_composite at other widths (tb/rtl/test_composite.cpp).
 cube4_rtl_variant(test_rtl_shader cube4_composite Vcube4_composite_narrow
   PARAMS VoxelBits=10 WeightBits=6 AlphaBits=14 CutBits=24 PosBits=12 CutCoefBits=12)
+# VolumePro's compositor: 12-bit channels and no accumulator guard bits.
+cube4_rtl_variant(test_rtl_shader cube4_composite Vcube4_composite_volumepro PARAMS AlphaBits=12 AccGuardBits=0)
 # Without cut-plane hardware (the system's variant for scenes without one).
 cube4_rtl_variant(test_rtl_shader cube4_composite Vcube4_composite_nocut PARAMS HasCutPlane=0)

@@ -195,7 +195,7 @@ void check_rtl_precision(const golden::Registers& r) {
       p.nr_iterations != d.nr_iterations || p.color_bits != d.color_bits || p.alpha_bits != d.alpha_bits ||
       p.gmlut_bits != d.gmlut_bits || p.map_face_res != d.map_face_res || p.map_bits != d.map_bits ||
       p.map_frac_bits != d.map_frac_bits || p.coef_bits != d.coef_bits || p.coef_frac_bits != d.coef_frac_bits ||
-      p.eye_bits != d.eye_bits || p.cut_bits != d.cut_bits)
+      p.eye_bits != d.eye_bits || p.cut_bits != d.cut_bits || p.acc_guard_bits != d.acc_guard_bits)
     throw std::invalid_argument("precision: the system's RTL is verilated with the default widths "
                                 "(docs/fixed-point.md); run other widths with --model tlm");
   if (r.dim[0] > kRtlMaxDim || r.dim[1] > kRtlMaxDim)

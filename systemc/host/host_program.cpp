@@ -120,7 +120,7 @@ HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay) {
       &q.voxel_bits, &q.weight_bits, &q.dda_frac_bits, &q.gradient_bits, &q.gradient_shift,
       &q.magnitude_bits, &q.nr_iterations, &q.color_bits, &q.alpha_bits, &q.gmlut_bits,
       &q.map_face_res, &q.map_bits, &q.map_frac_bits, &q.coef_bits, &q.coef_frac_bits,
-      &q.eye_bits, &q.cut_bits};
+      &q.eye_bits, &q.cut_bits, &q.acc_guard_bits};
   for (int i = 0; i < rm::kPrecisionFields; ++i) *fields[i] = static_cast<int>(p[i]);
   h.pipelines = static_cast<int>(id[2]);
   h.max_dim = static_cast<int>(id[3]);
@@ -195,7 +195,7 @@ void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const go
       {"map_face_res", {a.map_face_res, b.map_face_res}}, {"map_bits", {a.map_bits, b.map_bits}},
       {"map_frac_bits", {a.map_frac_bits, b.map_frac_bits}}, {"coef_bits", {a.coef_bits, b.coef_bits}},
       {"coef_frac_bits", {a.coef_frac_bits, b.coef_frac_bits}}, {"eye_bits", {a.eye_bits, b.eye_bits}},
-      {"cut_bits", {a.cut_bits, b.cut_bits}}};
+      {"cut_bits", {a.cut_bits, b.cut_bits}}, {"acc_guard_bits", {a.acc_guard_bits, b.acc_guard_bits}}};
   for (const auto& [name, v] : widths)
     check(v.first == v.second, std::string("regs.p.") + name + " = " + std::to_string(v.first) +
                                    ", the hardware's is " + std::to_string(v.second));

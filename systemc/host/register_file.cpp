@@ -21,7 +21,7 @@ constexpr int golden::Precision::*kPrecisionFields[rm::kPrecisionFields] = {
     &golden::Precision::map_face_res,   &golden::Precision::map_bits,
     &golden::Precision::map_frac_bits,  &golden::Precision::coef_bits,
     &golden::Precision::coef_frac_bits, &golden::Precision::eye_bits,
-    &golden::Precision::cut_bits,
+    &golden::Precision::cut_bits,       &golden::Precision::acc_guard_bits,
 };
 
 bool fits_unsigned(uint32_t v, int bits) { return bits >= 32 || v < (uint32_t{1} << bits); }
@@ -72,6 +72,7 @@ void check_hardware_params(const HardwareParams& hw) {
   in_range("precision.magnitude_bits", p.magnitude_bits, 1, 16);
   in_range("precision.color_bits", p.color_bits, 1, 8);
   in_range("precision.alpha_bits", p.alpha_bits, 1, 16);
+  in_range("precision.acc_guard_bits", p.acc_guard_bits, 0, p.alpha_bits);
   in_range("precision.gmlut_bits", p.gmlut_bits, 1, 16);
   in_range("precision.map_face_res", p.map_face_res, 2, 64);
   in_range("precision.map_bits", p.map_bits, 1, 32);

@@ -29,7 +29,7 @@ constexpr Named kNames[] = {
     {kPrecision + 0x28, "P_MAP_FACE_RES"}, {kPrecision + 0x2C, "P_MAP_BITS"},
     {kPrecision + 0x30, "P_MAP_FRAC_BITS"}, {kPrecision + 0x34, "P_COEF_BITS"},
     {kPrecision + 0x38, "P_COEF_FRAC_BITS"}, {kPrecision + 0x3C, "P_EYE_BITS"},
-    {kPrecision + 0x40, "P_CUT_BITS"},
+    {kPrecision + 0x40, "P_CUT_BITS"}, {kPrecision + 0x44, "P_ACC_GUARD_BITS"},
     {kDimX, "DIM_X"}, {kDimY, "DIM_Y"}, {kDimZ, "DIM_Z"}, {kPerm, "PERM"}, {kFlip, "FLIP"},
     {kSupersampling, "SUPERSAMPLING"},
     {kXStartLo, "X_START_LO"}, {kXStartHi, "X_START_HI"}, {kXStepLo, "X_STEP_LO"},

@@ -46,10 +46,10 @@ constexpr uint64_t kIdBaseMax = 0x060;        // largest base-plane width and he
 constexpr uint32_t kMagic = 0x43554234;       // "CUB4"
 constexpr uint32_t kVersion = 0x00010000;     // 1.0
 
-// ---- Precision (0x080-0x0C3), read-only: one word per golden::Precision
-// field, in the struct's order (voxel_bits first, cut_bits last).
+// ---- Precision (0x080-0x0C7), read-only: one word per golden::Precision
+// field, in the struct's order (voxel_bits first, acc_guard_bits last).
 constexpr uint64_t kPrecision = 0x080;
-constexpr int kPrecisionFields = 17;
+constexpr int kPrecisionFields = 18;
 
 // ---- View and DDA (0x100-0x137) -------------------------------------------
 constexpr uint64_t kDimX = 0x100;             // permuted dims, 1..max_dim

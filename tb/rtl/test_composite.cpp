@@ -28,6 +28,7 @@
 #include "Vcube4_composite.h"
 #include "Vcube4_composite_narrow.h"
 #include "Vcube4_composite_nocut.h"
+#include "Vcube4_composite_volumepro.h"
 #include "golden/host_driver.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/scene_io.hpp"
@@ -52,6 +53,8 @@ struct Widths {
   int inv_bits() const { return p.alpha_bits + g::kCutInvShift; }
   int64_t pos_max() const { return (int64_t{1} << pos_bits) - 1; }
   int64_t amax() const { return g::max_unsigned(p.alpha_bits); }
+  int acc_bits() const { return g::acc_bits(p); }
+  int64_t accmax() const { return g::max_unsigned(acc_bits()); }
   int64_t vmax() const { return g::max_unsigned(p.voxel_bits); }
   int64_t wmax() const { return g::max_unsigned(p.weight_bits); }
 };
@@ -69,6 +72,16 @@ Widths narrow_widths() {
   w.cut_coef_bits = 12;
   return w;
 }
+// VolumePro's compositor (Vcube4_composite_volumepro): the accumulator is
+// the sample's width, every product rounded to it.
+Widths volumepro_widths() {
+  Widths w;
+  w.p.alpha_bits = 12;
+  w.p.acc_guard_bits = 0;
+  return w;
+}
+const char* kVolumeProPrecisionJson = R"(, "precision": {"alpha_bits": 12, "acc_guard_bits": 0})";
+
 const char* kNarrowPrecisionJson =
     R"(, "precision": {"voxel_bits": 10, "weight_bits": 6, "alpha_bits": 14, "cut_bits": 24})";
 
@@ -199,7 +212,7 @@ class CompositeBench {
     in.cfg = cfg;
     if (!has_cut_plane_) in.cfg.cut_enabled = false;
     const g::Precision& p = w.p;
-    const int a = p.alpha_bits;
+    const int a = p.alpha_bits, ab = w.acc_bits();
     m->valid_i = valid;
     put(m->red_i, in.s.rgb[0], a);
     put(m->green_i, in.s.rgb[1], a);
@@ -218,17 +231,17 @@ class CompositeBench {
       acc = pending_.front().second;
       pending_.pop_front();
     } else {
-      acc.r = static_cast<uint16_t>(junk_.bits(a));
-      acc.g = static_cast<uint16_t>(junk_.bits(a));
-      acc.b = static_cast<uint16_t>(junk_.bits(a));
-      acc.a = static_cast<uint16_t>(junk_.bits(a));
+      acc.r = static_cast<uint32_t>(junk_.bits(ab));
+      acc.g = static_cast<uint32_t>(junk_.bits(ab));
+      acc.b = static_cast<uint32_t>(junk_.bits(ab));
+      acc.a = static_cast<uint32_t>(junk_.bits(ab));
       acc.value = static_cast<uint16_t>(junk_.bits(p.voxel_bits));
       acc.valid = junk_.chance(0.5);
     }
-    put(m->acc_red_i, acc.r, a);
-    put(m->acc_green_i, acc.g, a);
-    put(m->acc_blue_i, acc.b, a);
-    put(m->acc_alpha_i, acc.a, a);
+    put(m->acc_red_i, acc.r, ab);
+    put(m->acc_green_i, acc.g, ab);
+    put(m->acc_blue_i, acc.b, ab);
+    put(m->acc_alpha_i, acc.a, ab);
     put(m->acc_value_i, acc.value, p.voxel_bits);
     m->acc_selected_i = acc.valid;
     rtl::settle(*m);
@@ -279,10 +292,10 @@ class CompositeBench {
  private:
   AccOut read() const {
     AccOut o;
-    o.acc.r = static_cast<uint16_t>(m->red_o);
-    o.acc.g = static_cast<uint16_t>(m->green_o);
-    o.acc.b = static_cast<uint16_t>(m->blue_o);
-    o.acc.a = static_cast<uint16_t>(m->alpha_o);
+    o.acc.r = static_cast<uint32_t>(m->red_o);
+    o.acc.g = static_cast<uint32_t>(m->green_o);
+    o.acc.b = static_cast<uint32_t>(m->blue_o);
+    o.acc.a = static_cast<uint32_t>(m->alpha_o);
     o.acc.value = static_cast<uint16_t>(m->value_o);
     o.acc.valid = m->selected_o;
     return o;
@@ -303,9 +316,9 @@ class CompositeBench {
       ++(out == in.acc ? c.extreme_kept : c.extreme_taken);
       if (in.acc.valid && in.s.value == in.acc.value) ++c.extreme_tie;
     } else {
-      if (in.acc.a == w.amax()) ++c.ftb_opaque;
-      for (uint16_t ch : {out.r, out.g, out.b})
-        if (ch == w.amax()) ++c.ftb_saturated;
+      if (in.acc.a == w.accmax()) ++c.ftb_opaque;
+      for (uint32_t ch : {out.r, out.g, out.b})
+        if (ch == w.accmax()) ++c.ftb_saturated;
     }
   }
 
@@ -329,10 +342,10 @@ class CompositeBench {
 
 g::RayAcc random_acc(Random& rnd, const Widths& w) {
   g::RayAcc a;
-  a.r = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.2));
-  a.g = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.2));
-  a.b = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.2));
-  a.a = static_cast<uint16_t>(rnd.edgy(w.amax(), 0.3));
+  a.r = static_cast<uint32_t>(rnd.edgy(w.accmax(), 0.2));
+  a.g = static_cast<uint32_t>(rnd.edgy(w.accmax(), 0.2));
+  a.b = static_cast<uint32_t>(rnd.edgy(w.accmax(), 0.2));
+  a.a = static_cast<uint32_t>(rnd.edgy(w.accmax(), 0.3));
   a.value = static_cast<uint16_t>(rnd.edgy(w.vmax(), 0.1));
   a.valid = rnd.chance(0.7);
   return a;
@@ -574,9 +587,12 @@ template <class M>
 void composite_ties_and_extremes(const Widths& w, const std::string& name) {
   CompositeBench<M> b(w, name);
   Random rnd(704);
-  const int64_t amax = w.amax(), vmax = w.vmax();
+  const int64_t amax = w.amax(), vmax = w.vmax(), accmax = w.accmax();
   const uint16_t aedge[] = {0, 1, static_cast<uint16_t>(amax / 2), static_cast<uint16_t>(amax - 1),
                             static_cast<uint16_t>(amax)};
+  // The accumulator's edges are those of its own, wider domain.
+  const uint32_t accedge[] = {0, 1, static_cast<uint32_t>(accmax / 2), static_cast<uint32_t>(accmax - 1),
+                              static_cast<uint32_t>(accmax)};
   const uint16_t vedge[] = {0, 1, static_cast<uint16_t>(vmax / 2), static_cast<uint16_t>(vmax - 1),
                             static_cast<uint16_t>(vmax)};
   for (uint8_t mode : {0, 1, 2, 3})
@@ -592,14 +608,14 @@ void composite_ties_and_extremes(const Widths& w, const std::string& name) {
       for (uint16_t acc_value : vedge)
         for (int dv : {-1, 0, 1})
           for (bool selected : {false, true})
-            for (uint16_t acc_a : aedge)
+            for (uint32_t acc_a : accedge)
               for (uint16_t alpha : aedge) {
                 CompIn in = random_sample(rnd, w, 63);
                 in.acc.value = acc_value;
                 in.s.value = static_cast<uint32_t>(std::clamp<int64_t>(acc_value + dv, 0, vmax));
                 in.acc.valid = selected;
                 in.acc.a = acc_a;
-                in.acc.r = in.acc.g = in.acc.b = aedge[rnd.range(0, 4)];
+                in.acc.r = in.acc.g = in.acc.b = accedge[rnd.range(0, 4)];
                 in.s.alpha = alpha;
                 in.s.rgb = {aedge[rnd.range(0, 4)], static_cast<uint32_t>(amax), 0};
                 in.x = static_cast<int32_t>(rnd.range(0, 1));
@@ -710,6 +726,14 @@ TEST(RtlComposite, OtherWidths) {
   composite_cut_boundaries<Vcube4_composite_narrow>(w, name);
   composite_ties_and_extremes<Vcube4_composite_narrow>(w, name);
   composite_host<Vcube4_composite_narrow>(w, name, kNarrowPrecisionJson);
+}
+
+TEST(RtlComposite, VolumeProWidthsWithoutGuardBits) {
+  const Widths w = volumepro_widths();
+  const std::string name = "cube4_composite (AlphaBits=12, AccGuardBits=0)";
+  composite_random<Vcube4_composite_volumepro>(w, name, 300000);
+  composite_ties_and_extremes<Vcube4_composite_volumepro>(w, name);
+  composite_host<Vcube4_composite_volumepro>(w, name, kVolumeProPrecisionJson);
 }
 
 }  // namespace

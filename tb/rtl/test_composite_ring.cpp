@@ -52,7 +52,10 @@ using namespace cube4::rtl;  // the shared bench: rtl_check.hpp, ring_bench.hpp
 // Ring parameters, as in rtl/groups/composite.cmake.
 // The ring's default widths (golden Precision defaults; cube4_composite's
 // PosBits and CutCoefBits).
-constexpr int kVoxelBits = 12, kWeightBits = 8, kAlphaBits = 12, kCutBits = 32, kPosBits = 16, kCutCoefBits = 12;
+// The ring is verilated with the golden defaults (its parameters' defaults).
+constexpr g::Precision kDefaults{};
+constexpr int kVoxelBits = kDefaults.voxel_bits, kWeightBits = kDefaults.weight_bits,
+              kAlphaBits = kDefaults.alpha_bits, kCutBits = kDefaults.cut_bits, kPosBits = 16, kCutCoefBits = 12;
 constexpr int kInvBits = kAlphaBits + g::kCutInvShift;
 // From a sample to the pixel of the ray it ends.
 constexpr int kLatency = 7;

@@ -30,12 +30,13 @@ struct Case {
   std::string up = "[0, 1, 0]";
   std::string effects = R"("shading": true)";
   int S = 1;
+  std::string transfer = kTransfer;
 };
 
 inline std::string scene_json(const Case& c) {
   std::ostringstream s;
   s << R"({"volume": )" << c.volume << R"(, "view": {"direction": )" << c.direction << R"(, "up": )" << c.up
-    << R"(}, "supersampling": )" << c.S << ", " << kTransfer << ", " << c.effects << "}";
+    << R"(}, "supersampling": )" << c.S << ", " << c.transfer << ", " << c.effects << "}";
   return s.str();
 }
 

@@ -10,7 +10,7 @@
 using namespace cube4::golden;
 
 namespace {
-const Precision kP;  // VolumePro widths
+const Precision kP = volumepro_precision();  // VolumePro widths
 }
 
 TEST(Fixed, RoundShiftRoundsHalfUp) {
@@ -301,6 +301,93 @@ TEST(Composite, MonotonicAndNeverPastFullOpacity) {
       acc = next;
     }
   }
+}
+
+TEST(Composite, WithoutGuardBitsIsVolumeProsTwoRoundings) {
+  // acc_guard_bits = 0: premultiply() is mul_frac(c, α) and the accumulator
+  // domain is the sample's, so the blend is VolumePro's
+  // C += mul_frac(t, mul_frac(c, α)), α += mul_frac(t, α), exactly.
+  std::mt19937 gen(12);
+  for (int i = 0; i < 200000; ++i) {
+    RayAcc acc;
+    acc.a = gen() % 4096;
+    acc.r = gen() % 4096;
+    ShadedSample s;
+    s.alpha = gen() % 4096;
+    s.rgb = {static_cast<uint32_t>(gen() % 4096), 0, 0};
+    const RayAcc next = blend_front_to_back(acc, s, kP);
+    const int64_t t = 4095 - acc.a;
+    ASSERT_EQ(next.r, static_cast<uint32_t>(sat_unsigned(acc.r + mul_frac(t, mul_frac(s.rgb[0], s.alpha, 12), 12), 12)));
+    ASSERT_EQ(next.a, static_cast<uint32_t>(acc.a + mul_frac(t, s.alpha, 12)));
+    ASSERT_EQ(pixel_of(next, kP).r, next.r);
+  }
+}
+
+TEST(Composite, GuardBitsKeepSubLsbContributions) {
+  // Defaults: one 16-bit LSB of α and a 10 % colour premultiply to 0.1 LSB,
+  // which 16 bits round to zero; the accumulator keeps them.
+  const Precision p;
+  EXPECT_EQ(mul_frac(6554, 1, p.alpha_bits), 0);
+  ShadedSample s;
+  s.alpha = 1;
+  s.rgb = {6554, 0, 0};
+  EXPECT_EQ(premultiply(6554, 1, p), 26u);  // 6554 · 2^8 / 2^16 = 25.6
+  RayAcc acc;
+  for (int i = 0; i < 1000; ++i) acc = blend_front_to_back(acc, s, p);
+  // 1000 samples of α = 1/65535: α ≈ 0.01514 of full scale; colour 0.1 of it.
+  const double a = 1 - std::pow(1 - 1 / 65535.0, 1000);
+  EXPECT_NEAR(pixel_of(acc, p).a / 65535.0, a, 1e-4);
+  EXPECT_NEAR(pixel_of(acc, p).r / 65535.0, 0.1 * a, 1e-4);
+}
+
+TEST(Composite, PixelOfScalesTheAccumulatorDomainExactlyEnough) {
+  // Every accumulator value: monotonic, full -> full, 0 -> 0, and within
+  // 1/2 + 2^-g LSB of the exact scaling v (2^n - 1) / (2^A - 1).
+  const Precision p;
+  const uint32_t full = static_cast<uint32_t>(max_unsigned(acc_bits(p)));
+  const double scale = 65535.0 / full, limit = 0.5 + std::ldexp(1.0, -p.acc_guard_bits);
+  uint16_t previous = 0;
+  for (uint32_t v = 0; v <= full; ++v) {
+    const uint16_t px = acc_to_pixel(v, p);
+    ASSERT_GE(px, previous) << v;
+    ASSERT_LE(std::fabs(px - v * scale), limit) << v;
+    previous = px;
+  }
+  EXPECT_EQ(acc_to_pixel(full, p), 65535);
+  EXPECT_EQ(acc_to_pixel(0, p), 0);
+  EXPECT_EQ(acc_to_pixel(to_acc(12345, p), p), 12345);
+}
+
+TEST(Composite, DefaultWidthsMonotonicAndNeverPastFullOpacity) {
+  const Precision p;
+  const uint32_t full = static_cast<uint32_t>(max_unsigned(acc_bits(p)));
+  std::mt19937 gen(13);
+  for (int ray = 0; ray < 2000; ++ray) {
+    RayAcc acc;
+    for (int i = 0; i < 300; ++i) {
+      ShadedSample s;
+      s.alpha = gen() % 65536;
+      s.rgb = {static_cast<uint32_t>(gen() % 65536), static_cast<uint32_t>(gen() % 65536),
+               static_cast<uint32_t>(gen() % 65536)};
+      const RayAcc next = blend_front_to_back(acc, s, p);
+      ASSERT_GE(next.a, acc.a);
+      ASSERT_LE(next.a, full);
+      ASSERT_GE(next.r, acc.r);
+      ASSERT_LE(next.r, full);
+      ASSERT_LE(pixel_of(next, p).r, 65535);
+      acc = next;
+    }
+  }
+  // Full α stops the ray in the accumulator domain, as at 12 bits.
+  ShadedSample opaque;
+  opaque.alpha = 65535;
+  opaque.rgb = {65535, 0, 100};
+  const RayAcc stopped = blend_front_to_back(RayAcc{}, opaque, p);
+  EXPECT_EQ(stopped.a, full);
+  EXPECT_EQ(pixel_of(stopped, p).a, 65535);
+  EXPECT_EQ(pixel_of(stopped, p).b, 100);
+  opaque.rgb = {0, 65535, 65535};
+  EXPECT_EQ(blend_front_to_back(stopped, opaque, p), stopped);
 }
 
 TEST(Composite, OpaqueSampleStopsTheRay) {

@@ -75,6 +75,32 @@ TEST(System, MipWithUnneededGradientUnit) {
   c.effects = R"("shading": false, "blend": "mip")";
   run(c, 4, kRtl, false, sysc::Kernel::SystemC, true);
 }
+// Translucent material (docs/fixed-point.md, "Compositing error"): long rays
+// of per-sample α a few LSB of VolumePro's 12 bits, where the accumulator's
+// guard bits carry every contribution: RTL equals golden bit for bit.
+TEST(System, TranslucentLongRaysRtlP4) {
+  for (int S : {1, 4})
+    for (const char* effects : {R"("shading": true, "material": {"ke": 0.75, "kd": 0, "ks": 0})",
+                                R"("shading": false)"}) {
+      Case c;
+      c.volume = R"({"synthetic": "constant", "size": [9, 9, 40], "value": 0.5})";
+      c.direction = "[0, 0, 1]";
+      c.S = S;
+      c.transfer = R"("transfer": {"color": [[0, 1, 0.5, 0.1], [1, 1, 0.5, 0.1]], "opacity": [[0, 0.002], [1, 0.002]]})";
+      c.effects = effects;
+      SCOPED_TRACE(std::string("S = ") + std::to_string(S) + ", " + effects);
+      run(c, 4, kRtl);
+    }
+}
+
+TEST(System, TranslucentCloudRtlP4) {
+  Case c;
+  c.volume = R"({"synthetic": "field", "field": "gaussian", "size": [16, 14, 12]})";
+  c.S = 2;
+  c.transfer = R"("transfer": {"color": [[0, 0.7, 0.8, 1], [1, 1, 0.6, 0.3]], "opacity": [[0, 0], [0.05, 0.003], [0.5, 0.003], [0.6, 1], [1, 1]]})";
+  run(c, 4, kRtl);
+}
+
 TEST(System, ShadingOff) { Case c; c.effects = R"("shading": false)"; run(c, 4, kRtl); }
 TEST(System, Specular) {
   Case c;
