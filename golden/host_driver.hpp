@@ -1,4 +1,4 @@
-// Host driver: from a scene to the integer register values (ARCHITECTURE.md).
+// Host driver: from a scene to the integer register values (docs/architecture.md).
 // Floating point stops here; every value below is an integer of stated width.
 #pragma once
 #include "golden/registers.hpp"

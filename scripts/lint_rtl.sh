@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Lint of every rtl/*.sv, the RTL acceptance rule of ARCHITECTURE.md:
+# Lint of every rtl/*.sv, the RTL acceptance rule (docs/architecture.md, Conventions):
 #   1. verilator --lint-only -Wall -Irtl <file>: no warning, no error;
 #   2. yosys: read_verilog -sv of all rtl/*.sv (packages first), then
 #      synth -top <module> for every file that defines the module it is

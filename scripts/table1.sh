@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cube-4's Table 1 (../shared/data/cube4-table1.csv: 64^3, 128^3, 256^3 with
+# Cube-4's Table 1 (docs/data/cube4-table1.csv: 64^3, 128^3, 256^3 with
 # 8 to 128 pipelines, 33 MHz) beside this model's cycles for the same
 # configurations, plus VolumePro's (256^3, 4 pipelines, 125 MHz), written to
 # the "table1" section of docs/performance.md. The cycles are the system
@@ -12,7 +12,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # CUBE4_BIN: a cube4 binary already built (skips the set-up).
 if [ -z "${CUBE4_BIN:-}" ]; then "$here/scripts/setup.sh" >/dev/null; fi
 cube4=${CUBE4_BIN:-$here/build/tb/cube4}
-csv=${CUBE4_TABLE1:-$here/../shared/data/cube4-table1.csv}
+csv=${CUBE4_TABLE1:-$here/docs/data/cube4-table1.csv}
 [ -r "$csv" ] || { echo "table1: cannot read $csv" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT

@@ -2,7 +2,7 @@
 // and p: the traversal sizes, the per-slice control of the weight generator
 // (golden slice_control()) and the stream tag that carries it through the
 // interpolation unit to the gradient unit. The cycle model of a frame
-// (systemc/core/cycle_model.hpp) is computed from the same sizes.
+// (frame_cycles(), systemc/core/cycle_model.cpp) is computed from the same sizes.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -13,7 +13,7 @@
 namespace cube4::sysc {
 
 // Tag field widths of the gradient ring as the system builds it
-// (rtl/groups/system.cmake): S up to 15, slice numbers below 2^16.
+// (systemc/CMakeLists.txt): S up to 15, slice numbers below 2^16.
 constexpr int kSupersamplingBits = 4;
 constexpr int kUserTagBits = 16;
 
