@@ -8,6 +8,7 @@
 #include <chrono>
 #include <vector>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -44,7 +45,20 @@ struct RenderArgs {
   int frames = 1;
   std::string trace;       // FST file (RTL units)
   std::vector<uint64_t> trace_window;  // first, last cycle
+  std::optional<uint32_t> seed;        // default: CUBE4_SEED, else 1
 };
+
+// The RTL's random-reset seed: --seed, else the environment's CUBE4_SEED
+// (what the RTL unit tests read), else 1.
+uint32_t rtl_seed(const RenderArgs& a) {
+  if (a.seed) return *a.seed;
+  const char* env = std::getenv("CUBE4_SEED");
+  if (!env || !*env) return 1;
+  char* end = nullptr;
+  const unsigned long v = std::strtoul(env, &end, 10);
+  if (*end || v > 0xFFFFFFFFul) throw InputError(std::string("CUBE4_SEED = \"") + env + "\" is not a seed (0..4294967295)");
+  return static_cast<uint32_t>(v);
+}
 
 bool is_system_model(const std::string& m) { return m == "tlm" || m == "rtl" || m.rfind("mixed:", 0) == 0; }
 
@@ -136,6 +150,7 @@ int run_render(const RenderArgs& a) {
     cfg.check = a.check < 0 ? !cfg.all_tlm() : a.check == 1;
     cfg.simulate_unneeded = a.simulate_all;
     cfg.frames = a.frames;
+    cfg.seed = rtl_seed(a);
     if (a.frames > 1 && cfg.all_tlm())
       throw InputError("--frames: the tlm model has no clock to stream frames on (its interval is the cycle model's)");
     if (!a.trace.empty()) {
@@ -290,6 +305,7 @@ int main(int argc, char** argv) {
                    "system model: simulate every unit and all RTL hardware, needed or not (to measure what skipping saves)");
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
   render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
+  render->add_option("--seed", ra.seed, "system model: Verilator random-reset seed of the RTL units (default: CUBE4_SEED, else 1)");
   std::string info_scene;
   CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");
   info->add_option("scene", info_scene, "scene JSON file (default: the default scene)");

@@ -31,6 +31,7 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
       {"simulated_cycles_per_wall_second",
        wall_seconds > 0 ? static_cast<double>(r.simulated_cycles ? r.simulated_cycles : r.frame_cycles) / wall_seconds
                         : 0.0},
+      {"seed", cfg.seed},
       {"timing", cfg.all_tlm() ? "cycle model (loosely timed, no clock simulated)" : "simulated clock cycles"},
       {"check", cfg.check ? (check_failure.empty() ? "passed: base plane and unit streams bit-exact" : check_failure)
                           : "off"},
@@ -52,6 +53,8 @@ void print_system_summary(const sysc::SystemResult& r, const sysc::SystemConfig&
                static_cast<unsigned long long>(r.stream_cycles), clock_mhz * 1e6 / static_cast<double>(r.stream_cycles),
                clock_mhz, static_cast<double>(r.samples) / static_cast<double>(r.stream_cycles),
                cfg.check ? "; check passed (bit-exact)" : "");
+  if (!cfg.all_tlm())
+    std::fprintf(stderr, "cube4: RTL random reset seed %u (--seed or CUBE4_SEED to change)\n", cfg.seed);
 }
 
 }  // namespace cube4::tb

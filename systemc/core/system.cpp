@@ -274,6 +274,8 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
 #ifdef CUBE4_HAVE_RTL
     VerilatedContext ctx;
     if (!cfg.trace.file.empty()) ctx.traceEverOn(true);
+    ctx.randReset(2);
+    ctx.randSeed(static_cast<int>(cfg.seed & 0x7FFFFFFF));
     VerilatedContext* rtl_ctx = &ctx;
 #else
     VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit

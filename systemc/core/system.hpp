@@ -37,6 +37,10 @@ struct SystemConfig {
   // saves): the gradient unit, and at RTL the full shading and compositing hardware.
   bool simulate_unneeded = false;
   int frames = 1;            // cycle-level runs: frames of the same view streamed back to back
+  // Verilator's random reset: every register and memory the RTL does not
+  // reset starts from values drawn from this seed (the RTL is verilated with
+  // --x-initial unique), so runs with two seeds are two X-states.
+  uint32_t seed = 1;
   bool all_tlm() const {
     for (Level l : levels)
       if (l != Level::Tlm) return false;

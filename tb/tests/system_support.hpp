@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdlib>
+#include <vector>
 #include <sstream>
 #include <string>
 
@@ -40,10 +42,39 @@ inline std::string scene_json(const Case& c) {
   return s.str();
 }
 
-// Renders the case through the system at `levels` with p pipelines and
-// checks the base plane and the cycle count.
+// The RTL's random-reset seeds a system test runs with: CUBE4_SYSTEM_SEED_COUNT
+// of them (2 in the default suite, more in the slow one), from CUBE4_SEED
+// (else 1) on, so that an X-dependence shows as a difference between runs.
+#ifndef CUBE4_SYSTEM_SEED_COUNT
+#define CUBE4_SYSTEM_SEED_COUNT 2
+#endif
+inline std::vector<uint32_t> system_seeds() {
+  const char* env = std::getenv("CUBE4_SEED");
+  const uint32_t base = env && *env ? static_cast<uint32_t>(std::strtoul(env, nullptr, 10)) : 1u;
+  std::vector<uint32_t> seeds;
+  for (uint32_t i = 0; i < CUBE4_SYSTEM_SEED_COUNT; ++i) seeds.push_back(base + i);
+  return seeds;
+}
+
+inline void run_seeded(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bool cycle_level,
+                       sysc::Kernel kernel, bool simulate_unneeded, uint32_t seed);
+
+// Renders the case through the system at `levels` with p pipelines, once per
+// seed of system_seeds() when a unit runs at RTL.
 inline void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bool cycle_level = false,
-         sysc::Kernel kernel = sysc::Kernel::SystemC, bool simulate_unneeded = false) {
+                sysc::Kernel kernel = sysc::Kernel::SystemC, bool simulate_unneeded = false) {
+  bool any_rtl = false;
+  for (Level l : levels) any_rtl = any_rtl || l == Level::Rtl;
+  for (uint32_t seed : any_rtl ? system_seeds() : std::vector<uint32_t>{1}) {
+    SCOPED_TRACE("RTL random reset seed " + std::to_string(seed));
+    run_seeded(c, p, levels, cycle_level, kernel, simulate_unneeded, seed);
+    if (::testing::Test::HasFatalFailure() || ::testing::Test::IsSkipped()) return;
+  }
+}
+
+// One run: checks the base plane and the cycle count.
+inline void run_seeded(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bool cycle_level,
+                       sysc::Kernel kernel, bool simulate_unneeded, uint32_t seed) {
   const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
   const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
   const golden::Registers regs = golden::program_host(scene, vol).regs;
@@ -54,6 +85,7 @@ inline void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bo
   cfg.cycle_level = cycle_level;
   cfg.kernel = kernel;
   cfg.simulate_unneeded = simulate_unneeded;
+  cfg.seed = seed;
   if (!cfg.all_tlm() && !sysc::rtl_available(p)) GTEST_SKIP() << "no RTL build for p = " << p;
   const sysc::SystemResult res = sysc::run_frame(regs, vol, cfg);
   const golden::BasePlane want = golden::render_fixed(vol, regs);
