@@ -21,6 +21,7 @@
 #include "golden/volume_io.hpp"
 #include "tb/image_io.hpp"
 #include "tb/progress.hpp"
+#include "tb/regress.hpp"
 #include "tb/report.hpp"
 #include "systemc/host/host_program.hpp"
 #include "tb/system_report.hpp"
@@ -309,8 +310,21 @@ int main(int argc, char** argv) {
   std::string info_scene;
   CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");
   info->add_option("scene", info_scene, "scene JSON file (default: the default scene)");
-  if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "render" && std::string(argv[1]) != "info") {
-    std::fprintf(stderr, "cube4: error: unknown command '%s' (commands: render, info; see --help)\n", argv[1]);
+  tb::RegressArgs rg;
+  CLI::App* regress = app.add_subcommand(
+      "regress", "render scenes at several model levels with --check, in parallel; JUnit XML and a summary");
+  regress->add_option("scenes", rg.inputs, "scene files, folders of *.json scenes, or lists of scenes (.txt)")->required();
+  regress->add_option("--levels", rg.levels, "model levels (fixed, float, tlm, rtl, mixed:UNIT,...)")
+      ->delimiter(' ')->capture_default_str();
+  regress->add_option("-j,--jobs", rg.jobs, "parallel renders (default: one per core)")->check(CLI::Range(1, 256));
+  regress->add_option("--pipes", rg.pipes, "system levels: pipelines p (default: each scene's)")->check(CLI::Range(1, 256));
+  regress->add_option("--junit", rg.junit, "JUnit XML output (each case's files in <name>.cases/ beside it)")
+      ->capture_default_str();
+  regress->add_option("--summary", rg.summary, "Markdown summary output");
+  regress->add_flag("-q,--quiet", rg.quiet, "no progress on stderr");
+  const std::string cmd = argc > 1 ? argv[1] : "";
+  if (argc > 1 && argv[1][0] != '-' && cmd != "render" && cmd != "info" && cmd != "regress") {
+    std::fprintf(stderr, "cube4: error: unknown command '%s' (commands: render, info, regress; see --help)\n", argv[1]);
     return 2;
   }
   try {
@@ -321,6 +335,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*render) return run_render(ra);
+    if (*regress) return tb::run_regress(rg, std::filesystem::canonical("/proc/self/exe").string());
     return run_info(info_scene);
   } catch (const InputError& e) {
     std::fprintf(stderr, "cube4: error: %s\n", e.what());

@@ -74,17 +74,20 @@ nlohmann::json describe_registers(const golden::Registers& r) {
   };
 }
 
-void write_json(const std::string& path, const nlohmann::json& j) {
+void write_text(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
   {
     std::ofstream out(tmp);
-    if (!out) throw golden::InputError("cannot write report '" + path + "'");
-    out << j.dump(2) << "\n";
-    if (!out) throw golden::InputError("cannot write report '" + path + "'");
+    if (!out) throw golden::InputError("cannot write '" + path + "'");
+    out << text;
+    out.flush();
+    if (!out) throw golden::InputError("cannot write '" + path + "'");
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
-  if (ec) throw golden::InputError("cannot write report '" + path + "': " + ec.message());
+  if (ec) throw golden::InputError("cannot write '" + path + "': " + ec.message());
 }
+
+void write_json(const std::string& path, const nlohmann::json& j) { write_text(path, j.dump(2) + "\n"); }
 
 }  // namespace cube4::tb

@@ -18,7 +18,8 @@ nlohmann::json describe_volume(const golden::Volume& v);
 nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& h);
 nlohmann::json describe_registers(const golden::Registers& r);
 
-// Writes `j` to `path` whole (temporary file, then rename).
+// Writes `text` (or `j`) to `path` whole (temporary file, then rename).
+void write_text(const std::string& path, const std::string& text);
 void write_json(const std::string& path, const nlohmann::json& j);
 
 }  // namespace cube4::tb
