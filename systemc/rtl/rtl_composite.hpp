@@ -16,7 +16,7 @@ namespace cube4::sysc {
 template <class M>
 class RtlComposite final : public CompositeIf {
  public:
-  static constexpr int kPosBits = 16, kCutCoefBits = 12, kLatency = 7;
+  static constexpr int kPosBits = golden::kPositionBits, kCutCoefBits = golden::kCutCoefBits, kLatency = 7;
 
   RtlComposite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite") {

@@ -39,13 +39,23 @@ inline std::string scene_json(const Case& c) {
   return s.str();
 }
 
+// A case as the host programs it.
+struct Programmed {
+  golden::Volume vol;
+  golden::Registers regs;
+};
+inline Programmed program(const Case& c) {
+  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
+  Programmed f{golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR), {}};
+  f.regs = golden::program_host(scene, f.vol).regs;
+  return f;
+}
+
 // Renders the case through the system at `levels` with p pipelines and
 // checks the base plane and the cycle count.
 inline void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bool cycle_level = false,
          sysc::Kernel kernel = sysc::Kernel::SystemC, bool simulate_unneeded = false) {
-  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
-  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
-  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  const auto [vol, regs] = program(c);
   sysc::SystemConfig cfg;
   cfg.p = p;
   cfg.levels = levels;
