@@ -518,12 +518,7 @@ template <class M>
 void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
                 uint64_t salt, uint64_t* pixels_checked = nullptr) {
   std::string what;
-  for (const Frame* f : frames) {
-    what += (what.empty() ? "" : " + ") + f->name;
-    const int B = (f->nx + rp.p - 1) / rp.p;
-    ASSERT_LE(B, rp.beam_depth()) << f->name << ": the beam does not fit the ring's ray beam delay";
-    ASSERT_LE(B * f->ny, rp.slice_depth()) << f->name << ": the slice does not fit the ring's ray slice store";
-  }
+  ASSERT_TRUE(frames_fit(rp, frames, what));
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.stall > 0 ? ", stalls" : ", no stalls") + ": " + what);
   Random rng(salt);
   const Stream s = make_stream(frames, rp.p, opt, rng);

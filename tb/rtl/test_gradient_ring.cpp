@@ -382,15 +382,7 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
   auto fail = [&](uint64_t cycle, int pipe, const Expect* e, const std::string& what, const std::string& detail) {
     if (!r.ok) return;
     r.ok = false;
-    std::ostringstream o;
-    o << "first mismatch at cycle " << cycle << ", pipeline " << pipe << ": " << what;
-    if (e) {
-      const Frame& f = *frames[e->frame];
-      o << "\n  frame " << e->frame << " (" << f.name << ", dim " << f.nx << "x" << f.ny << "x" << f.nz
-        << "), gradient of x=" << e->j * p + pipe << " y=" << e->y << " slice k=" << e->k;
-    }
-    if (!detail.empty()) o << "\n  " << detail;
-    r.report = o.str();
+    r.report = mismatch_report(cycle, pipe, p, frames, e, "gradient of", what, detail);
   };
   size_t ii = 0, ei = 0;
   for (uint64_t cycle = 0; cycle < s.end; ++cycle) {
@@ -525,13 +517,8 @@ template <class G, class I>
 void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
                 uint64_t salt, uint64_t* gradients_checked = nullptr) {
   std::string what;
-  for (const Frame* f : frames) {
-    what += (what.empty() ? "" : " + ") + f->name;
-    const int B = (f->nx + rp.p - 1) / rp.p;
-    ASSERT_LE(B, rp.beam_depth()) << f->name << ": the beam does not fit the ring's beam delay";
-    ASSERT_LE(B * f->ny, rp.slice_depth()) << f->name << ": the slice does not fit the ring's slice delay";
-    ASSERT_LE(f->S, (1 << kSupersamplingBits) - 1);
-  }
+  ASSERT_TRUE(frames_fit(rp, frames, what));
+  for (const Frame* f : frames) ASSERT_LE(f->S, (1 << kSupersamplingBits) - 1) << f->name;
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.chain ? ", chain" : ", direct") +
                (opt.stall > 0 ? ", stalls" : ", no stalls") + (opt.junk ? ", junk" : "") + ": " + what);
   Random rng(salt);
