@@ -1,6 +1,7 @@
 // The pipeline's bit widths: one struct, VolumePro's widths by default.
 // Every golden unit function and every RTL unit takes its widths from here.
 #pragma once
+#include <stdexcept>
 
 namespace cube4::golden {
 
@@ -58,6 +59,15 @@ inline constexpr PrecisionField kPrecisionFields[] = {
 };
 
 inline constexpr int kPrecisionFieldCount = sizeof kPrecisionFields / sizeof kPrecisionFields[0];
+static_assert(sizeof(Precision) == kPrecisionFieldCount * sizeof(int),
+              "a Precision member without its line in kPrecisionFields");
+
+// The table's entry of a member (every member has one).
+inline const PrecisionField& precision_field(int Precision::*member) {
+  for (const PrecisionField& f : kPrecisionFields)
+    if (f.member == member) return f;
+  throw std::logic_error("golden::kPrecisionFields lacks a Precision member");
+}
 
 // The first field in which a and b differ, or nullptr; only the widths
 // some RTL unit is built with if rtl_only.

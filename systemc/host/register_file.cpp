@@ -33,19 +33,18 @@ void check_hardware_params(const HardwareParams& hw) {
     require(v >= lo && v <= hi, name + " = " + std::to_string(v) + " is out of range " + std::to_string(lo) + ".." +
                                     std::to_string(hi));
   };
-  const golden::Precision& p = hw.precision;
   in_range("pipelines", hw.pipelines, 1, rm::kMaxPipelines);
   in_range("max_dim", hw.max_dim, 2, rm::kMaxDimLimit);
   // The windows and packings of docs/registers.md bound these widths.
-  in_range("precision.voxel_bits", p.voxel_bits, 1, 16);
-  in_range("precision.magnitude_bits", p.magnitude_bits, 1, 16);
-  in_range("precision.color_bits", p.color_bits, 1, 8);
-  in_range("precision.alpha_bits", p.alpha_bits, 1, 16);
-  in_range("precision.gmlut_bits", p.gmlut_bits, 1, 16);
-  in_range("precision.map_face_res", p.map_face_res, 2, 64);
-  in_range("precision.map_bits", p.map_bits, 1, 32);
-  in_range("precision.coef_bits", p.coef_bits, 1, 32);
-  in_range("precision.eye_bits", p.eye_bits, 2, 32);
+  using P = golden::Precision;
+  const struct {
+    int P::*member;
+    int lo, hi;
+  } bounds[] = {{&P::voxel_bits, 1, 16}, {&P::magnitude_bits, 1, 16}, {&P::color_bits, 1, 8},
+                {&P::alpha_bits, 1, 16}, {&P::gmlut_bits, 1, 16},     {&P::map_face_res, 2, 64},
+                {&P::map_bits, 1, 32},   {&P::coef_bits, 1, 32},      {&P::eye_bits, 2, 32}};
+  for (const auto& b : bounds)
+    in_range(std::string("precision.") + golden::precision_field(b.member).key, hw.precision.*b.member, b.lo, b.hi);
 }
 
 RegisterFile::RegisterFile(const HardwareParams& hw) : hw_(hw) {

@@ -28,14 +28,8 @@ std::string word_name(const Register& r, uint64_t a) {
   return std::string(r.name) + (a == r.addr ? "_LO" : "_HI");
 }
 
-const char* precision_key(int golden::Precision::*m) {
-  for (const golden::PrecisionField& f : golden::kPrecisionFields)
-    if (f.member == m) return f.key;
-  return "?";
-}
-
 std::string width_text(const Register& r) {
-  std::string w = r.width.plus ? "`" + std::string(precision_key(r.width.plus)) + "`" : "";
+  std::string w = r.width.plus ? "`" + std::string(golden::precision_field(r.width.plus).key) + "`" : "";
   if (r.width.plus && r.width.bits) w += "+" + std::to_string(r.width.bits);
   if (!r.width.plus) w = std::to_string(r.width.bits);
   if (r.sign == Sign::Signed) w += " signed";
