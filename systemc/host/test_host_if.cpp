@@ -380,8 +380,8 @@ TEST(HostInterface, IdentificationAndPrecisionReportTheHardware) {
     EXPECT_EQ(read(*h, rm::kIdGmLutEntries), 1u << hw.precision.magnitude_bits);
     EXPECT_EQ(read(*h, rm::kIdMapEntries), uint32_t(6 * hw.precision.map_face_res * hw.precision.map_face_res));
     EXPECT_EQ(read(*h, rm::kIdBaseMax), uint32_t(2 * hw.max_dim));
-    EXPECT_EQ(read(*h, rm::kPrecision + 4 * 8), uint32_t(hw.precision.alpha_bits));   // alpha_bits: 9th
-    EXPECT_EQ(read(*h, rm::kPrecision + 4 * 16), uint32_t(hw.precision.cut_bits));    // cut_bits: last
+    for (const golden::PrecisionField& f : golden::kPrecisionFields)
+      EXPECT_EQ(read(*h, rm::address_of(f.register_name)), uint32_t(hw.precision.*f.member)) << f.register_name;
     sc_time delay = SC_ZERO_TIME;
     const HardwareId id = read_hardware_id(h->target(), delay);
     expect_precision_equal(id.precision, hw.precision, h->name());
