@@ -2,6 +2,7 @@
 // for the compositing channels (see volumepro_precision()).
 // Every golden unit function and every RTL unit takes its widths from here.
 #pragma once
+#include <stdexcept>
 
 namespace cube4::golden {
 
@@ -25,6 +26,59 @@ struct Precision {
   int cut_bits = 32;        // signed cut-plane distance, saturated
   int acc_guard_bits = 8;   // compositing accumulator: alpha_bits + these fraction bits (VolumePro: 0)
 };
+
+// Every consumer of the widths as a set (the scene's "precision" keys, the
+// host interface's precision registers, the host's and the system's
+// comparisons) walks this table, so a new width is one line here. The order
+// is the precision registers' (docs/registers.md): append, never reorder.
+struct PrecisionField {
+  const char* key;             // scene key "precision.<key>"
+  int Precision::*member;
+  int lo, hi;                  // the widest range a scene may ask for; scene_io narrows the dependent ones
+  const char* register_name;   // host interface precision register
+  const char* rtl_parameter;   // the RTL units' parameter; nullptr: no RTL unit has the width
+};
+
+inline constexpr PrecisionField kPrecisionFields[] = {
+    {"voxel_bits", &Precision::voxel_bits, 8, 16, "P_VOXEL_BITS", "VoxelBits"},
+    {"weight_bits", &Precision::weight_bits, 2, 14, "P_WEIGHT_BITS", "WeightBits"},
+    // The DDA runs in C++ in the system (FramePlan's slice control).
+    {"dda_frac_bits", &Precision::dda_frac_bits, 2, 30, "P_DDA_FRAC_BITS", nullptr},
+    {"gradient_bits", &Precision::gradient_bits, 4, 16, "P_GRADIENT_BITS", "GradientBits"},
+    {"gradient_shift", &Precision::gradient_shift, 0, 16, "P_GRADIENT_SHIFT", "GradientShift"},
+    {"magnitude_bits", &Precision::magnitude_bits, 4, 16, "P_MAGNITUDE_BITS", "MagnitudeBits"},
+    {"nr_iterations", &Precision::nr_iterations, 0, 8, "P_NR_ITERATIONS", "NrIterations"},
+    {"color_bits", &Precision::color_bits, 4, 8, "P_COLOR_BITS", "ColorBits"},
+    {"alpha_bits", &Precision::alpha_bits, 8, 16, "P_ALPHA_BITS", "AlphaBits"},
+    {"gmlut_bits", &Precision::gmlut_bits, 4, 16, "P_GMLUT_BITS", "GmlutBits"},
+    {"map_face_res", &Precision::map_face_res, 2, 64, "P_MAP_FACE_RES", "MapFaceRes"},
+    {"map_bits", &Precision::map_bits, 8, 32, "P_MAP_BITS", "MapBits"},
+    {"map_frac_bits", &Precision::map_frac_bits, 0, 31, "P_MAP_FRAC_BITS", "MapFracBits"},
+    {"coef_bits", &Precision::coef_bits, 4, 16, "P_COEF_BITS", "CoefBits"},
+    {"coef_frac_bits", &Precision::coef_frac_bits, 0, 15, "P_COEF_FRAC_BITS", "CoefFracBits"},
+    {"eye_bits", &Precision::eye_bits, 4, 16, "P_EYE_BITS", "EyeBits"},
+    {"cut_bits", &Precision::cut_bits, 16, 40, "P_CUT_BITS", "CutBits"},
+    {"acc_guard_bits", &Precision::acc_guard_bits, 0, 8, "P_ACC_GUARD_BITS", "AccGuardBits"},
+};
+
+inline constexpr int kPrecisionFieldCount = sizeof kPrecisionFields / sizeof kPrecisionFields[0];
+static_assert(sizeof(Precision) == kPrecisionFieldCount * sizeof(int),
+              "a Precision member without its line in kPrecisionFields");
+
+// The table's entry of a member (every member has one).
+inline const PrecisionField& precision_field(int Precision::*member) {
+  for (const PrecisionField& f : kPrecisionFields)
+    if (f.member == member) return f;
+  throw std::logic_error("golden::kPrecisionFields lacks a Precision member");
+}
+
+// The first field in which a and b differ, or nullptr; only the widths
+// some RTL unit is built with if rtl_only.
+inline const PrecisionField* first_difference(const Precision& a, const Precision& b, bool rtl_only = false) {
+  for (const PrecisionField& f : kPrecisionFields)
+    if ((!rtl_only || f.rtl_parameter) && a.*f.member != b.*f.member) return &f;
+  return nullptr;
+}
 
 // VolumePro's widths (VolumePro §3, Table 1): 12-bit α and colour channels
 // and a compositor that rounds every product to them. Reachable as scene

@@ -548,33 +548,6 @@ void read_cut_plane(const Node& n, CutPlane& c) {
 
 // ---- precision ------------------------------------------------------------
 
-struct PrecisionField {
-  const char* key;
-  int Precision::*member;
-  int lo, hi;  // the widest range; finish_scene narrows the dependent ones
-};
-
-constexpr PrecisionField kPrecisionFields[] = {
-    {"voxel_bits", &Precision::voxel_bits, 8, 16},
-    {"weight_bits", &Precision::weight_bits, 2, 14},
-    {"dda_frac_bits", &Precision::dda_frac_bits, 2, 30},
-    {"gradient_bits", &Precision::gradient_bits, 4, 16},
-    {"gradient_shift", &Precision::gradient_shift, 0, 16},
-    {"magnitude_bits", &Precision::magnitude_bits, 4, 16},
-    {"nr_iterations", &Precision::nr_iterations, 0, 8},
-    {"color_bits", &Precision::color_bits, 4, 8},
-    {"alpha_bits", &Precision::alpha_bits, 8, 16},
-    {"acc_guard_bits", &Precision::acc_guard_bits, 0, 8},
-    {"gmlut_bits", &Precision::gmlut_bits, 4, 16},
-    {"map_face_res", &Precision::map_face_res, 2, 64},
-    {"map_bits", &Precision::map_bits, 8, 32},
-    {"map_frac_bits", &Precision::map_frac_bits, 0, 31},
-    {"coef_bits", &Precision::coef_bits, 4, 16},
-    {"coef_frac_bits", &Precision::coef_frac_bits, 0, 15},
-    {"eye_bits", &Precision::eye_bits, 4, 16},
-    {"cut_bits", &Precision::cut_bits, 16, 40},
-};
-
 void read_precision(const Node& n, Precision& p) {
   ObjectReader r(n);
   for (const auto& f : kPrecisionFields)

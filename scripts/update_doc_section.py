@@ -1,13 +1,20 @@
 #!/usr/bin/env python3
 """Replaces the text between '<!-- BEGIN name -->' and '<!-- END name -->' in a
 Markdown file with standard input (the section is appended if missing), so that
-several scripts can each own one generated section of a document."""
+several scripts can each own one generated section of a document. With
+--check, changes nothing and fails (showing the difference) when the file's
+section is not standard input: for tests that keep a generated section current."""
+import difflib
 import sys
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: update_doc_section.py FILE NAME < section.md")
-    path, name = sys.argv[1], sys.argv[2]
+    args = sys.argv[1:]
+    check = args[:1] == ["--check"]
+    if check:
+        args = args[1:]
+    if len(args) != 2:
+        sys.exit("usage: update_doc_section.py [--check] FILE NAME < section.md")
+    path, name = args
     begin, end = f"<!-- BEGIN {name} -->", f"<!-- END {name} -->"
     body = sys.stdin.read().rstrip("\n")
     try:
@@ -18,9 +25,14 @@ def main():
     if begin in text and end in text:
         head, rest = text.split(begin, 1)
         _, tail = rest.split(end, 1)
-        text = head + block + tail
+        new = head + block + tail
     else:
-        text = text.rstrip("\n") + ("\n\n" if text else "") + block + "\n"
-    open(path, "w").write(text)
+        new = text.rstrip("\n") + ("\n\n" if text else "") + block + "\n"
+    if check:
+        if new != text:
+            sys.stdout.writelines(difflib.unified_diff(text.splitlines(True), new.splitlines(True), path, "generated"))
+            sys.exit(f"{path}: section '{name}' is stale; regenerate it")
+        return
+    open(path, "w").write(new)
 
 main()

@@ -7,6 +7,10 @@
 
 namespace cube4::golden {
 
+// The hardware's unsigned width of permuted positions and crop slabs (the
+// RTL's PosBits); golden compares with any int32.
+constexpr int kPositionBits = 16;
+
 struct CropRegs {
   std::array<std::array<int32_t, 2>, 3> slab{{{0, 0}, {0, 0}, {0, 0}}};  // inclusive [lo, hi]
   uint8_t mask = 0x80;  // visible iff bit (inX | inY<<1 | inZ<<2) is set

@@ -20,6 +20,9 @@ struct CutRegs {
 };
 
 constexpr int kCutInvShift = 24;
+// The hardware holds the normal in signed registers of this width (the RTL's
+// CutCoefBits); golden computes with any int32.
+constexpr int kCutCoefBits = 12;
 
 constexpr int64_t cut_distance(const CutRegs& r, int64_t x, int64_t y, int64_t z, const Precision& p) {
   return sat_signed(int64_t{r.a} * x + int64_t{r.b} * y + int64_t{r.c} * z, p.cut_bits);
@@ -35,9 +38,13 @@ constexpr uint32_t cut_factor(int64_t d, const CutRegs& r, const Precision& p) {
   } else if (outside >= r.falloff) {
     inside_factor = 0;
   } else {
-    // One minus the distance into the transition, as a fraction of its width.
-    const int64_t ramp = round_shift((r.falloff - outside) * static_cast<int64_t>(r.inv_falloff), kCutInvShift);
-    inside_factor = ramp > one ? one : ramp;
+    // One minus the distance into the transition, as a fraction of its width,
+    // rounded half up. Exact in 128 bits: with the falloff and its reciprocal
+    // both at their register limits the product passes 2^63 (the RTL's is exact).
+    const unsigned __int128 ramp =
+        (static_cast<unsigned __int128>(r.falloff - outside) * r.inv_falloff + (uint64_t{1} << (kCutInvShift - 1))) >>
+        kCutInvShift;
+    inside_factor = ramp > static_cast<unsigned __int128>(one) ? one : static_cast<int64_t>(ramp);
   }
   return static_cast<uint32_t>(r.keep_inside ? inside_factor : one - inside_factor);
 }

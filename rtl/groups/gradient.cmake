@@ -10,10 +10,8 @@
 set(_gradient_sources cube4_lerp.sv cube4_gradient.sv cube4_delay_ram.sv cube4_gradient_unit.sv)
 set(_gradient_interp_sources cube4_lerp.sv cube4_trilinear.sv cube4_delay_ram.sv cube4_interp_unit.sv)
 
-# The gradient ring's tag: four realign fields of WeightBits + 1, the
-# supersampling factor, the zero-slice bit, the user tag (ring defaults:
-# WeightBits 8, SupersamplingBits 4, UserTagBits 8).
-math(EXPR _gradient_tag_bits "4 * (8 + 1) + 4 + 1 + 8")
+# The gradient ring's tag, with the ring's default UserTagBits 8.
+cube4_gradient_tag_bits(_gradient_tag_bits 8)
 
 cube4_rtl_test(test_rtl_gradient_ring
   TOPS cube4_gradient_ring

@@ -27,26 +27,14 @@ int FramePlan::pass_voxel_slice(int pass) const {
 }
 
 uint64_t FramePlan::pass_tag(int pass) const {
-  const int w = r.p.weight_bits;
-  uint64_t t = 0;
-  int pos = 0;
-  auto put = [&](uint64_t v, int bits) {
-    t |= (v & ((uint64_t{1} << bits) - 1)) << pos;
-    pos += bits;
-  };
-  if (!zero_pass(pass)) {
-    const golden::SliceControl& c = slices[static_cast<size_t>(pass)];
-    for (const golden::Realign& a : {c.behind_x, c.behind_y, c.ahead_x, c.ahead_y}) {
-      put(a.weight, w);
-      put(a.base < 0 ? 1 : 0, 1);
-    }
-  } else {
-    put(0, 4 * (w + 1));
-  }
-  put(static_cast<uint64_t>(r.supersampling), kSupersamplingBits);
-  put(zero_pass(pass) ? 1 : 0, 1);
-  put(static_cast<uint64_t>(pass), kUserTagBits);
-  return t;
+  const golden::SliceControl* control = zero_pass(pass) ? nullptr : &slices[static_cast<size_t>(pass)];
+  return rtl::gradient_tag(control, 0, static_cast<uint64_t>(r.supersampling), static_cast<uint64_t>(pass),
+                           r.p.weight_bits, kUserTagBits);
 }
+
+#ifdef CUBE4_SYSTEM_TAG_BITS
+static_assert(rtl::gradient_tag_bits(golden::Precision{}.weight_bits, kUserTagBits) == CUBE4_SYSTEM_TAG_BITS,
+              "the system's verilated rings carry another tag width (cube4_gradient_tag_bits)");
+#endif
 
 }  // namespace cube4::sysc

@@ -9,12 +9,13 @@
 
 #include "golden/pipeline.hpp"
 #include "golden/registers.hpp"
+#include "systemc/rtl/gradient_tag.hpp"
 
 namespace cube4::sysc {
 
-// Tag field widths of the gradient ring as the system builds it
-// (systemc/CMakeLists.txt): S up to 15, slice numbers below 2^16.
-constexpr int kSupersamplingBits = 4;
+// The gradient ring's user tag as the system builds it (systemc/CMakeLists.txt):
+// the slice number, below 2^16.
+using rtl::kSupersamplingBits;
 constexpr int kUserTagBits = 16;
 
 struct FramePlan {
@@ -35,7 +36,7 @@ struct FramePlan {
   // The interpolation ring's tag of a pass: the gradient ring's control
   // fields (realign x4, S, ZeroSlice), then the slice number.
   uint64_t pass_tag(int pass) const;
-  int tag_bits() const { return 4 * (r.p.weight_bits + 1) + kSupersamplingBits + 1 + kUserTagBits; }
+  int tag_bits() const { return rtl::gradient_tag_bits(r.p.weight_bits, kUserTagBits); }
   uint32_t tag_slice(uint64_t tag) const {
     return static_cast<uint32_t>(tag >> (tag_bits() - kUserTagBits)) & ((1u << kUserTagBits) - 1);
   }

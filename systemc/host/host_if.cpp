@@ -248,6 +248,8 @@ HostInterface::Outcome HostInterface::start_frame() {
   const int base_max = 2 * config_.hw.max_dim;
   if (w < 1 || w > base_max || h < 1 || h > base_max) return fail(ErrorCode::BasePlaneTooLarge);
   if (r.cut_enabled && r.cut.falloff < 0) return fail(ErrorCode::CutFalloffNegative);
+  if (const rm::Register* wide = regs_.wide_value_out_of_range())
+    return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, wide->addr};
 
   const uint64_t before = backend_.frames_done();
   try {

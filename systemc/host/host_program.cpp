@@ -68,9 +68,6 @@ void burst(TlmTarget& target, tlm::tlm_command cmd, uint64_t addr, uint32_t* wor
   }
 }
 
-uint32_t lo(int64_t v) { return static_cast<uint32_t>(static_cast<uint64_t>(v)); }
-uint32_t hi(int64_t v) { return static_cast<uint32_t>(static_cast<uint64_t>(v) >> 32); }
-uint32_t u(int32_t v) { return static_cast<uint32_t>(v); }
 
 void check(bool ok, const std::string& what) {
   if (!ok) throw HostError("host program: " + what);
@@ -82,7 +79,21 @@ void check_table(size_t size, size_t expected, bool used, const char* field) {
             std::to_string(expected) + (used ? "" : " (or 0: the mode bits leave it unused)"));
 }
 
-size_t map_entries(const golden::Precision& p) { return size_t{6} * p.map_face_res * p.map_face_res; }
+// The writable registers' words, one block per run of consecutive
+// addresses: the volume's (VOL_DIM) or the frame's (all the others).
+std::vector<RegisterBlock> writable_blocks(const rm::RegisterValues& v, bool volume) {
+  const HardwareParams no_hardware;  // writable registers' getters read only the values
+  std::vector<RegisterBlock> blocks;
+  for (const rm::Register& reg : rm::kRegisters) {
+    if (!reg.set || (reg.block == rm::Block::Volume) != volume) continue;
+    if (blocks.empty() || blocks.back().addr + 4 * blocks.back().words.size() != reg.addr)
+      blocks.push_back({reg.addr, {}});
+    const uint64_t value = reg.get(v, no_hardware);
+    blocks.back().words.push_back(static_cast<uint32_t>(value));
+    if (reg.words == 2) blocks.back().words.push_back(static_cast<uint32_t>(value >> 32));
+  }
+  return blocks;
+}
 
 
 }  // namespace
@@ -115,13 +126,8 @@ HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay) {
   uint32_t p[rm::kPrecisionFields];
   read_words(target, rm::kPrecision, p, rm::kPrecisionFields, delay);
   HardwareId h;
-  golden::Precision& q = h.precision;
-  int* fields[rm::kPrecisionFields] = {
-      &q.voxel_bits, &q.weight_bits, &q.dda_frac_bits, &q.gradient_bits, &q.gradient_shift,
-      &q.magnitude_bits, &q.nr_iterations, &q.color_bits, &q.alpha_bits, &q.gmlut_bits,
-      &q.map_face_res, &q.map_bits, &q.map_frac_bits, &q.coef_bits, &q.coef_frac_bits,
-      &q.eye_bits, &q.cut_bits, &q.acc_guard_bits};
-  for (int i = 0; i < rm::kPrecisionFields; ++i) *fields[i] = static_cast<int>(p[i]);
+  for (int i = 0; i < rm::kPrecisionFields; ++i)
+    h.precision.*golden::kPrecisionFields[i].member = static_cast<int>(p[i]);
   h.pipelines = static_cast<int>(id[2]);
   h.max_dim = static_cast<int>(id[3]);
   h.base_max = static_cast<int>(id[8]);
@@ -131,8 +137,9 @@ HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay) {
 void load_volume_over_tlm(TlmTarget& target, const golden::Volume& vol, sc_core::sc_time& delay) {
   check(vol.data.size() == vol.size(), "the volume holds " + std::to_string(vol.data.size()) +
                                            " voxels, its dimensions say " + std::to_string(vol.size()));
-  const uint32_t dims[3] = {u(vol.dim[0]), u(vol.dim[1]), u(vol.dim[2])};
-  write_words(target, rm::kVolDim, dims, 3, delay);
+  rm::RegisterValues dims;
+  dims.vol_dim = vol.dim;
+  for (const RegisterBlock& b : writable_blocks(dims, true)) write_words(target, b.addr, b.words.data(), b.words.size(), delay);
   // Two voxels per word, x fastest: the volume's own order, so a plain pack.
   std::vector<uint32_t> words((vol.data.size() + 1) / 2, 0);
   for (size_t i = 0; i < vol.data.size(); ++i) words[i / 2] |= uint32_t{vol.data[i]} << (16 * (i % 2));
@@ -154,25 +161,7 @@ void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_
 }
 
 std::vector<RegisterBlock> register_blocks(const golden::Registers& r) {
-  const uint64_t inv = r.cut.inv_falloff;
-  return {
-      {rm::kDimX,
-       {u(r.dim[0]), u(r.dim[1]), u(r.dim[2]), u(r.perm[0] | r.perm[1] << 2 | r.perm[2] << 4),
-        u(int{r.flip[0]} | int{r.flip[1]} << 1 | int{r.flip[2]} << 2), u(r.supersampling),
-        lo(r.x_start), hi(r.x_start), lo(r.x_step), hi(r.x_step),
-        lo(r.y_start), hi(r.y_start), lo(r.y_step), hi(r.y_step)}},
-      {rm::kMode, {rm::mode_word(r)}},
-      {rm::kCropSlab,
-       {u(r.crop.slab[0][0]), u(r.crop.slab[0][1]), u(r.crop.slab[1][0]), u(r.crop.slab[1][1]),
-        u(r.crop.slab[2][0]), u(r.crop.slab[2][1]), r.crop.mask}},
-      {rm::kCutA,
-       {u(r.cut.a), u(r.cut.b), u(r.cut.c), r.cut.keep_inside ? rm::kCutKeepInside : 0,
-        lo(r.cut.dmin), hi(r.cut.dmin), lo(r.cut.dmax), hi(r.cut.dmax), lo(r.cut.falloff), hi(r.cut.falloff),
-        static_cast<uint32_t>(inv), static_cast<uint32_t>(inv >> 32)}},
-      {rm::kKe,
-       {r.coefs.ke, r.coefs.kd, r.coefs.ks, r.coefs.specular[0], r.coefs.specular[1], r.coefs.specular[2],
-        u(r.eye[0]), u(r.eye[1]), u(r.eye[2])}},
-  };
+  return writable_blocks(rm::RegisterValues{r, {0, 0, 0}}, false);
 }
 
 void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay) {
@@ -183,22 +172,9 @@ void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const go
                       sc_core::sc_time& delay) {
   const HardwareId hw = read_hardware_id(target, delay);
   const golden::Precision& a = regs.p;
-  const golden::Precision& b = hw.precision;
-  const std::pair<const char*, std::pair<int, int>> widths[] = {
-      {"voxel_bits", {a.voxel_bits, b.voxel_bits}}, {"weight_bits", {a.weight_bits, b.weight_bits}},
-      {"dda_frac_bits", {a.dda_frac_bits, b.dda_frac_bits}},
-      {"gradient_bits", {a.gradient_bits, b.gradient_bits}},
-      {"gradient_shift", {a.gradient_shift, b.gradient_shift}},
-      {"magnitude_bits", {a.magnitude_bits, b.magnitude_bits}},
-      {"nr_iterations", {a.nr_iterations, b.nr_iterations}}, {"color_bits", {a.color_bits, b.color_bits}},
-      {"alpha_bits", {a.alpha_bits, b.alpha_bits}}, {"gmlut_bits", {a.gmlut_bits, b.gmlut_bits}},
-      {"map_face_res", {a.map_face_res, b.map_face_res}}, {"map_bits", {a.map_bits, b.map_bits}},
-      {"map_frac_bits", {a.map_frac_bits, b.map_frac_bits}}, {"coef_bits", {a.coef_bits, b.coef_bits}},
-      {"coef_frac_bits", {a.coef_frac_bits, b.coef_frac_bits}}, {"eye_bits", {a.eye_bits, b.eye_bits}},
-      {"cut_bits", {a.cut_bits, b.cut_bits}}, {"acc_guard_bits", {a.acc_guard_bits, b.acc_guard_bits}}};
-  for (const auto& [name, v] : widths)
-    check(v.first == v.second, std::string("regs.p.") + name + " = " + std::to_string(v.first) +
-                                   ", the hardware's is " + std::to_string(v.second));
+  if (const golden::PrecisionField* f = golden::first_difference(a, hw.precision))
+    check(false, std::string("regs.p.") + f->key + " = " + std::to_string(a.*f->member) + ", the hardware's is " +
+                     std::to_string(hw.precision.*f->member));
   for (int i = 0; i < 3; ++i) {
     check(vol.dim[i] >= 1 && vol.dim[i] <= hw.max_dim,
           "volume dim[" + std::to_string(i) + "] = " + std::to_string(vol.dim[i]) + " is out of range 1.." +
@@ -210,10 +186,10 @@ void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const go
                                             ", the volume's dim[perm[" + std::to_string(i) + "] = " +
                                             std::to_string(axis) + "] = " + std::to_string(vol.dim[axis]));
   }
-  check_table(regs.classification.size(), size_t{1} << a.voxel_bits, true, "classification");
-  check_table(regs.gm_lut.size(), size_t{1} << a.magnitude_bits, regs.magnitude, "gm_lut");
-  check_table(regs.diffuse_map.size(), map_entries(a), regs.shading, "diffuse_map");
-  check_table(regs.specular_map.size(), map_entries(a), regs.specular, "specular_map");
+  check_table(regs.classification.size(), rm::class_entries(a), true, "classification");
+  check_table(regs.gm_lut.size(), rm::gm_entries(a), regs.magnitude, "gm_lut");
+  check_table(regs.diffuse_map.size(), rm::map_entries(a), regs.shading, "diffuse_map");
+  check_table(regs.specular_map.size(), rm::map_entries(a), regs.specular, "specular_map");
 
   load_volume_over_tlm(target, vol, delay);
   write_tables_over_tlm(target, regs, delay);

@@ -49,8 +49,9 @@ struct HardwareId {
 };
 HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay);
 
-// The register words of regs, block by block (view and DDA, mode, cropping,
-// cut plane, shading): what write_view_over_tlm writes, one burst each.
+// The words of regs' writable registers (all but VOL_DIM), one block per run
+// of consecutive addresses in regmap::kRegisters: what write_view_over_tlm
+// writes, one burst each.
 struct RegisterBlock {
   uint64_t addr;
   std::vector<uint32_t> words;

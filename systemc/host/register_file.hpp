@@ -12,14 +12,6 @@
 
 namespace cube4::sysc {
 
-// The hardware's fixed parameters: what the identification and precision
-// registers report and what bounds the writable fields.
-struct HardwareParams {
-  golden::Precision precision;
-  int pipelines = 4;
-  int max_dim = 256;
-};
-
 // Throws std::invalid_argument naming the parameter when the map cannot hold it.
 void check_hardware_params(const HardwareParams& hw);
 
@@ -37,6 +29,11 @@ class RegisterFile {
   void write(uint64_t addr, uint32_t value);
   regmap::ErrorCode read(uint64_t addr, uint32_t& value) const;
 
+  // The first 64-bit register holding a value its hardware field cannot
+  // take, or nullptr. Its two words are written apart, so only START, which
+  // sees both, can check it.
+  const regmap::Register* wide_value_out_of_range() const;
+
   // Bytes of a window the hardware holds (the rest of the window is unmapped).
   uint64_t table_bytes(regmap::Region r) const;
 
@@ -44,7 +41,7 @@ class RegisterFile {
   // bits say the pipeline uses it (classification: always), as program_host
   // leaves unused tables empty.
   golden::Registers decoded() const;
-  std::array<int, 3> volume_dims() const { return vol_dim_; }
+  std::array<int, 3> volume_dims() const { return values_.vol_dim; }
   const HardwareParams& hardware() const { return hw_; }
 
  private:
@@ -54,8 +51,7 @@ class RegisterFile {
   bool read_register(uint64_t addr, uint32_t& value) const;
 
   HardwareParams hw_;
-  golden::Registers regs_;             // tables always at full size
-  std::array<int, 3> vol_dim_{0, 0, 0};
+  regmap::RegisterValues values_;      // tables always at full size
 };
 
 }  // namespace cube4::sysc

@@ -2,53 +2,10 @@
 
 #include <cstdio>
 
+#include "golden/fixed.hpp"
+
 namespace cube4::sysc::regmap {
 namespace {
-
-struct Named {
-  uint64_t addr;
-  const char* name;
-};
-
-// The register-space names used by docs/registers.md.
-constexpr Named kNames[] = {
-    {kCtrl, "CTRL"}, {kStatus, "STATUS"}, {kLastError, "LAST_ERROR"},
-    {kErrorAddrLo, "ERROR_ADDR_LO"}, {kErrorAddrHi, "ERROR_ADDR_HI"},
-    {kFrameCountLo, "FRAME_COUNT_LO"}, {kFrameCountHi, "FRAME_COUNT_HI"},
-    {kCyclesLo, "CYCLES_LO"}, {kCyclesHi, "CYCLES_HI"},
-    {kBaseWidth, "BASE_WIDTH"}, {kBaseHeight, "BASE_HEIGHT"},
-    {kIdMagic, "ID_MAGIC"}, {kIdVersion, "ID_VERSION"}, {kIdPipelines, "ID_PIPELINES"},
-    {kIdMaxDim, "ID_MAX_DIM"}, {kIdVoxelBits, "ID_VOXEL_BITS"},
-    {kIdClassEntries, "ID_CLASS_ENTRIES"}, {kIdGmLutEntries, "ID_GMLUT_ENTRIES"},
-    {kIdMapEntries, "ID_MAP_ENTRIES"}, {kIdBaseMax, "ID_BASE_MAX"},
-    {kPrecision + 0x00, "P_VOXEL_BITS"}, {kPrecision + 0x04, "P_WEIGHT_BITS"},
-    {kPrecision + 0x08, "P_DDA_FRAC_BITS"}, {kPrecision + 0x0C, "P_GRADIENT_BITS"},
-    {kPrecision + 0x10, "P_GRADIENT_SHIFT"}, {kPrecision + 0x14, "P_MAGNITUDE_BITS"},
-    {kPrecision + 0x18, "P_NR_ITERATIONS"}, {kPrecision + 0x1C, "P_COLOR_BITS"},
-    {kPrecision + 0x20, "P_ALPHA_BITS"}, {kPrecision + 0x24, "P_GMLUT_BITS"},
-    {kPrecision + 0x28, "P_MAP_FACE_RES"}, {kPrecision + 0x2C, "P_MAP_BITS"},
-    {kPrecision + 0x30, "P_MAP_FRAC_BITS"}, {kPrecision + 0x34, "P_COEF_BITS"},
-    {kPrecision + 0x38, "P_COEF_FRAC_BITS"}, {kPrecision + 0x3C, "P_EYE_BITS"},
-    {kPrecision + 0x40, "P_CUT_BITS"}, {kPrecision + 0x44, "P_ACC_GUARD_BITS"},
-    {kDimX, "DIM_X"}, {kDimY, "DIM_Y"}, {kDimZ, "DIM_Z"}, {kPerm, "PERM"}, {kFlip, "FLIP"},
-    {kSupersampling, "SUPERSAMPLING"},
-    {kXStartLo, "X_START_LO"}, {kXStartHi, "X_START_HI"}, {kXStepLo, "X_STEP_LO"},
-    {kXStepHi, "X_STEP_HI"}, {kYStartLo, "Y_START_LO"}, {kYStartHi, "Y_START_HI"},
-    {kYStepLo, "Y_STEP_LO"}, {kYStepHi, "Y_STEP_HI"},
-    {kMode, "MODE"},
-    {kCropSlab + 0x00, "CROP_X_LO"}, {kCropSlab + 0x04, "CROP_X_HI"},
-    {kCropSlab + 0x08, "CROP_Y_LO"}, {kCropSlab + 0x0C, "CROP_Y_HI"},
-    {kCropSlab + 0x10, "CROP_Z_LO"}, {kCropSlab + 0x14, "CROP_Z_HI"}, {kCropMask, "CROP_MASK"},
-    {kCutA, "CUT_A"}, {kCutB, "CUT_B"}, {kCutC, "CUT_C"}, {kCutFlags, "CUT_FLAGS"},
-    {kCutDminLo, "CUT_DMIN_LO"}, {kCutDminHi, "CUT_DMIN_HI"},
-    {kCutDmaxLo, "CUT_DMAX_LO"}, {kCutDmaxHi, "CUT_DMAX_HI"},
-    {kCutFalloffLo, "CUT_FALLOFF_LO"}, {kCutFalloffHi, "CUT_FALLOFF_HI"},
-    {kCutInvFalloffLo, "CUT_INV_FALLOFF_LO"}, {kCutInvFalloffHi, "CUT_INV_FALLOFF_HI"},
-    {kKe, "KE"}, {kKd, "KD"}, {kKs, "KS"},
-    {kSpecularColor + 0x0, "SPEC_R"}, {kSpecularColor + 0x4, "SPEC_G"}, {kSpecularColor + 0x8, "SPEC_B"},
-    {kEye + 0x0, "EYE_X"}, {kEye + 0x4, "EYE_Y"}, {kEye + 0x8, "EYE_Z"},
-    {kVolDim + 0x0, "VOL_DIM_X"}, {kVolDim + 0x4, "VOL_DIM_Y"}, {kVolDim + 0x8, "VOL_DIM_Z"},
-};
 
 std::string hex(uint64_t a) {
   char buf[24];
@@ -56,20 +13,136 @@ std::string hex(uint64_t a) {
   return buf;
 }
 
+std::string offset(uint64_t a) {
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "0x%03llX", static_cast<unsigned long long>(a));
+  return buf;
+}
+
 std::string indexed(const char* window, uint64_t index, const char* part) {
   return std::string(window) + "[" + std::to_string(index) + "]" + part;
 }
 
+std::string word_name(const Register& r, uint64_t a) {
+  if (r.words == 1) return r.name;
+  return std::string(r.name) + (a == r.addr ? "_LO" : "_HI");
+}
+
+std::string width_text(const Register& r) {
+  std::string w = r.width.plus ? "`" + std::string(golden::precision_field(r.width.plus).key) + "`" : "";
+  if (r.width.plus && r.width.bits) w += "+" + std::to_string(r.width.bits);
+  if (!r.width.plus) w = std::to_string(r.width.bits);
+  if (r.sign == Sign::Signed) w += " signed";
+  if (r.sign == Sign::Symmetric) w += " symmetric";
+  return w;
+}
+
+std::string range_text(const Register& r, const HardwareParams& hw) {
+  if (r.access == Access::R || r.block == Block::Control) return "—";
+  switch (r.rule) {
+    case Rule::Dim: return "1..max dim";
+    case Rule::Supersampling: return "1.." + std::to_string(kMaxSupersampling);
+    case Rule::Permutation: return "a permutation";
+    case Rule::Mode: return "bits below, blend ≤ 2";
+    case Rule::Width: break;
+  }
+  const int full = 32 * r.words;
+  if (r.width.bits >= full && r.sign != Sign::Symmetric) return "any";
+  if (r.width.plus) {
+    const char* lo = r.sign == Sign::Unsigned ? "0" : (r.sign == Sign::Signed ? "−2^(w−1)" : "−(2^(w−1)−1)");
+    const char* hi = r.sign == Sign::Unsigned ? "2^w−1" : "2^(w−1)−1";
+    return std::string(lo) + ".." + hi;
+  }
+  const Limits l = *limits(r, hw);
+  return std::to_string(l.lo) + ".." + std::to_string(l.hi);
+}
+
+std::string reset_text(const Register& r, const HardwareParams& hw) {
+  if (!r.get || r.block == Block::Identification || r.block == Block::Precision) return "—";
+  const int64_t v = field_value(r, reset_value(r, hw));
+  return v >= 0 && v < 10 ? std::to_string(v) : hex(static_cast<uint64_t>(v));
+}
+
+const char* access_text(Access a) {
+  switch (a) {
+    case Access::R: return "R";
+    case Access::W: return "W";
+    case Access::RW: return "RW";
+  }
+  return "?";
+}
+
+// Identifiers in code font; none: a dash.
+std::string code(const std::string& s) {
+  if (s.empty()) return "—";
+  return (s[0] >= 'a' && s[0] <= 'z') || (s[0] >= 'A' && s[0] <= 'Z') ? "`" + s + "`" : s;
+}
+
+struct Section {
+  Block block;
+  const char* title;
+};
+constexpr Section kSections[] = {
+    {Block::Control, "Control and status"}, {Block::Identification, "Identification, read-only"},
+    {Block::Precision, "Precision, read-only"}, {Block::View, "View and DDA"}, {Block::Mode, "Mode"},
+    {Block::Cropping, "Cropping"}, {Block::CutPlane, "Cut plane"}, {Block::Shading, "Shading"},
+    {Block::Volume, "Volume"},
+};
+
 }  // namespace
+
+std::optional<Limits> limits(const Register& r, const HardwareParams& hw) {
+  switch (r.rule) {
+    case Rule::Dim: return Limits{1, hw.max_dim};
+    case Rule::Supersampling: return Limits{1, kMaxSupersampling};
+    case Rule::Permutation:
+    case Rule::Mode: return std::nullopt;
+    case Rule::Width: break;
+  }
+  const int w = r.width.of(hw.precision);
+  switch (r.sign) {
+    case Sign::Unsigned: return Limits{0, w >= 63 ? INT64_MAX : static_cast<int64_t>(golden::max_unsigned(w))};
+    case Sign::Signed:
+      return w >= 64 ? Limits{INT64_MIN, INT64_MAX} : Limits{-golden::max_signed(w) - 1, golden::max_signed(w)};
+    case Sign::Symmetric: return Limits{-golden::max_signed(w), golden::max_signed(w)};
+  }
+  return std::nullopt;
+}
+
+bool fits(const Register& r, uint64_t raw, const HardwareParams& hw) {
+  if (r.words == 1 && r.sign == Sign::Unsigned && raw > 0xFFFF'FFFFull) return false;
+  switch (r.rule) {
+    case Rule::Permutation: {
+      if (raw >> 6) return false;
+      uint32_t seen = 0;
+      for (int i = 0; i < 3; ++i) seen |= 1u << (raw >> (2 * i) & 3);
+      return seen == 7;  // each axis exactly once
+    }
+    case Rule::Mode:
+      return (raw & ~uint64_t{kModeMask}) == 0 && (raw & kModeBlendMask) >> kModeBlendShift <= 2;
+    default: break;
+  }
+  const Limits l = *limits(r, hw);
+  if (r.sign == Sign::Unsigned && r.words == 2 && l.hi == INT64_MAX) return true;  // the full 64 bits
+  const int64_t v = field_value(r, raw);
+  if (r.sign == Sign::Unsigned && r.words == 2 && v < 0) return false;
+  return v >= l.lo && v <= l.hi;
+}
+
+uint64_t reset_value(const Register& r, const HardwareParams& hw) {
+  RegisterValues v;
+  v.regs.p = hw.precision;
+  return r.get ? r.get(v, hw) : 0;
+}
 
 std::string describe_address(uint64_t a) {
   std::string name;
   switch (region_of(a)) {
-    case Region::Registers:
-      name = "unnamed register";
-      for (const Named& n : kNames)
-        if (n.addr == (a & ~uint64_t{3})) name = n.name;
+    case Region::Registers: {
+      const Register* r = register_at(a & ~uint64_t{3});
+      name = r ? word_name(*r, a & ~uint64_t{3}) : "unnamed register";
       break;
+    }
     case Region::Class: {
       const uint64_t off = a - kClassBase;
       name = indexed("CLASS", off / 8, (off & 4) ? ".a" : ".rgb");
@@ -89,18 +162,24 @@ std::string describe_address(uint64_t a) {
   return name + " (" + hex(a) + ")";
 }
 
-uint32_t mode_word(const golden::Registers& r) {
-  uint32_t m = static_cast<uint32_t>(r.blend) << kModeBlendShift;
-  if (r.gradient) m |= kModeGradient;
-  if (r.magnitude) m |= kModeMagnitude;
-  if (r.shading) m |= kModeShading;
-  if (r.specular) m |= kModeSpecular;
-  if (r.gm_opacity) m |= kModeGmOpacity;
-  if (r.gm_diffuse) m |= kModeGmDiffuse;
-  if (r.gm_specular) m |= kModeGmSpecular;
-  if (r.crop_enabled) m |= kModeCrop;
-  if (r.cut_enabled) m |= kModeCut;
-  return m;
+std::string register_doc() {
+  const HardwareParams hw;
+  std::string out;
+  for (const Section& s : kSections) {
+    out += "### " + std::string(s.title) + "\n\n";
+    out += "| offset | name | width | range | access | reset | golden field | RTL | meaning |\n";
+    out += "|---|---|---|---|---|---|---|---|---|\n";
+    for (const Register& r : kRegisters) {
+      if (r.block != s.block) continue;
+      const std::string name = r.words == 2 ? std::string(r.name) + "_LO/HI" : r.name;
+      out += "| " + offset(r.addr) + " | " + name + " | " + width_text(r) + " | " + range_text(r, hw) + " | " +
+             access_text(r.access) + " | " + reset_text(r, hw) + " | " + code((r.block == Block::Precision ? "p." : "") + std::string(r.golden_field)) + " | " +
+             code(r.rtl_port) + " | " + r.meaning + " |\n";
+    }
+    out += "\n";
+  }
+  out.pop_back();
+  return out;
 }
 
 }  // namespace cube4::sysc::regmap

@@ -2,26 +2,83 @@
 // 64-bit address space of 32-bit registers and table windows. 64-bit values
 // are two words, low word first, 8-byte aligned, so one 8-byte transaction
 // moves a whole value. Signed values are two's complement in 32 (or 64) bits.
+//
+// kRegisters declares every register once: its address, access, hardware
+// width, the golden::Registers field it carries and the RTL input it drives.
+// The address constants below, the register file's decoder and checks, the
+// host program's writes and the tables of docs/registers.md (register_doc)
+// are all derived from it.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
 
 #include "golden/registers.hpp"
 
+namespace cube4::sysc {
+
+// The hardware's fixed parameters: what the identification and precision
+// registers report and what bounds the writable fields.
+struct HardwareParams {
+  golden::Precision precision;
+  int pipelines = 4;
+  int max_dim = 256;
+};
+
+}  // namespace cube4::sysc
+
 namespace cube4::sysc::regmap {
 
-// ---- Control and status (0x000-0x03F) --------------------------------------
-constexpr uint64_t kCtrl = 0x000;            // W: kCtrl* bits; reads 0
-constexpr uint64_t kStatus = 0x004;          // R: kStatus* bits
-constexpr uint64_t kLastError = 0x008;       // R: ErrorCode of the latest error
-constexpr uint64_t kErrorAddrLo = 0x010;     // R: address of the word at fault
-constexpr uint64_t kErrorAddrHi = 0x014;
-constexpr uint64_t kFrameCountLo = 0x018;    // R: frames completed by the backend
-constexpr uint64_t kFrameCountHi = 0x01C;
-constexpr uint64_t kCyclesLo = 0x020;        // R: clock cycles of the last frame
-constexpr uint64_t kCyclesHi = 0x024;
-constexpr uint64_t kBaseWidth = 0x028;       // R: base plane of the last frame
-constexpr uint64_t kBaseHeight = 0x02C;
+// What the writable registers hold: a frame's registers and the volume's
+// object-order dimensions.
+struct RegisterValues {
+  golden::Registers regs;
+  std::array<int, 3> vol_dim{0, 0, 0};
+};
+
+enum class Block { Control, Identification, Precision, View, Mode, Cropping, CutPlane, Shading, Volume };
+enum class Access { R, W, RW };
+// Symmetric: ±(2^(width-1)-1), as golden saturates.
+enum class Sign { Unsigned, Signed, Symmetric };
+// The values a write may take: those of the width, or a rule of its own.
+enum class Rule { Width, Dim, Supersampling, Permutation, Mode };
+
+// A hardware field's width: `bits`, plus the golden::Precision width `plus` names.
+struct Width {
+  int bits = 32;
+  int golden::Precision::*plus = nullptr;
+  constexpr int of(const golden::Precision& p) const { return bits + (plus ? p.*plus : 0); }
+};
+
+using Getter = uint64_t (*)(const RegisterValues&, const HardwareParams&);
+using Setter = void (*)(RegisterValues&, uint64_t);
+
+struct Register {
+  const char* name = "";
+  uint64_t addr = 0;
+  Block block = Block::Control;
+  Access access = Access::R;
+  int words = 1;                  // 2: a 64-bit value, NAME_LO at addr, NAME_HI at addr + 4
+  Width width;
+  Sign sign = Sign::Unsigned;
+  Rule rule = Rule::Width;
+  const char* golden_field = "";  // in golden::Registers (VOL_DIM: golden::Volume::dim)
+  Getter get = nullptr;           // nullptr: the control block, which HostInterface reads
+  Setter set = nullptr;           // nullptr: not writable through the register file
+  const char* rtl_port = "";      // the RTL input it drives (or the RTL parameter it reports)
+  const char* meaning = "";
+};
+
+constexpr int kMaxDimLimit = 1024;   // volume window: 2 bytes * 1024^3 = 2 GiB
+constexpr int kMaxPipelines = 256;
+constexpr int kMaxSupersampling = 8;
+
+constexpr uint32_t kMagic = 0x43554234;       // "CUB4"
+constexpr uint32_t kVersion = 0x00010000;     // 1.0
 
 constexpr uint32_t kCtrlStart = 1u << 0;
 constexpr uint32_t kCtrlReset = 1u << 1;       // register file, error state and DONE
@@ -32,43 +89,6 @@ constexpr uint32_t kStatusBusy = 1u << 0;
 constexpr uint32_t kStatusDone = 1u << 1;      // the frame started last has completed
 constexpr uint32_t kStatusError = 1u << 2;     // sticky until CLEAR_ERROR or RESET
 
-// ---- Identification (0x040-0x07F), read-only ------------------------------
-constexpr uint64_t kIdMagic = 0x040;
-constexpr uint64_t kIdVersion = 0x044;
-constexpr uint64_t kIdPipelines = 0x048;
-constexpr uint64_t kIdMaxDim = 0x04C;
-constexpr uint64_t kIdVoxelBits = 0x050;
-constexpr uint64_t kIdClassEntries = 0x054;
-constexpr uint64_t kIdGmLutEntries = 0x058;
-constexpr uint64_t kIdMapEntries = 0x05C;     // per map: 6 faces * res^2
-constexpr uint64_t kIdBaseMax = 0x060;        // largest base-plane width and height
-
-constexpr uint32_t kMagic = 0x43554234;       // "CUB4"
-constexpr uint32_t kVersion = 0x00010000;     // 1.0
-
-// ---- Precision (0x080-0x0C7), read-only: one word per golden::Precision
-// field, in the struct's order (voxel_bits first, acc_guard_bits last).
-constexpr uint64_t kPrecision = 0x080;
-constexpr int kPrecisionFields = 18;
-
-// ---- View and DDA (0x100-0x137) -------------------------------------------
-constexpr uint64_t kDimX = 0x100;             // permuted dims, 1..max_dim
-constexpr uint64_t kDimY = 0x104;
-constexpr uint64_t kDimZ = 0x108;
-constexpr uint64_t kPerm = 0x10C;             // perm[i] in bits 2i+1:2i
-constexpr uint64_t kFlip = 0x110;             // flip[i] in bit i
-constexpr uint64_t kSupersampling = 0x114;    // 1..8
-constexpr uint64_t kXStartLo = 0x118;         // int64, dda_frac_bits fraction
-constexpr uint64_t kXStartHi = 0x11C;
-constexpr uint64_t kXStepLo = 0x120;
-constexpr uint64_t kXStepHi = 0x124;
-constexpr uint64_t kYStartLo = 0x128;
-constexpr uint64_t kYStartHi = 0x12C;
-constexpr uint64_t kYStepLo = 0x130;
-constexpr uint64_t kYStepHi = 0x134;
-
-// ---- Mode (0x140) ------------------------------------------------------------
-constexpr uint64_t kMode = 0x140;
 constexpr uint32_t kModeGradient = 1u << 0;
 constexpr uint32_t kModeMagnitude = 1u << 1;
 constexpr uint32_t kModeShading = 1u << 2;
@@ -82,36 +102,338 @@ constexpr uint32_t kModeCrop = 1u << 12;
 constexpr uint32_t kModeCut = 1u << 13;
 constexpr uint32_t kModeMask = 0x7F | kModeBlendMask | kModeCrop | kModeCut;
 
-// ---- Cropping (0x180-0x19B) --------------------------------------------------
-constexpr uint64_t kCropSlab = 0x180;         // int32 x lo, x hi, y lo, y hi, z lo, z hi
-constexpr uint64_t kCropMask = 0x198;         // 8 bits
-
-// ---- Cut plane (0x1C0-0x1EF) -------------------------------------------------
-constexpr uint64_t kCutA = 0x1C0;             // int32
-constexpr uint64_t kCutB = 0x1C4;
-constexpr uint64_t kCutC = 0x1C8;
-constexpr uint64_t kCutFlags = 0x1CC;         // bit 0: keep_inside
-constexpr uint64_t kCutDminLo = 0x1D0;        // int64
-constexpr uint64_t kCutDminHi = 0x1D4;
-constexpr uint64_t kCutDmaxLo = 0x1D8;        // int64
-constexpr uint64_t kCutDmaxHi = 0x1DC;
-constexpr uint64_t kCutFalloffLo = 0x1E0;     // int64, >= 0 at START
-constexpr uint64_t kCutFalloffHi = 0x1E4;
-constexpr uint64_t kCutInvFalloffLo = 0x1E8;  // uint64
-constexpr uint64_t kCutInvFalloffHi = 0x1EC;
 constexpr uint32_t kCutKeepInside = 1u << 0;
 
-// ---- Shading (0x200-0x223) ---------------------------------------------------
-constexpr uint64_t kKe = 0x200;               // coef_bits
-constexpr uint64_t kKd = 0x204;
-constexpr uint64_t kKs = 0x208;
-constexpr uint64_t kSpecularColor = 0x20C;    // r, g, b: alpha_bits each
-constexpr uint64_t kEye = 0x218;              // x, y, z: int32, |e| <= 2^(eye_bits-1)-1
+// The MODE register's word for the registers' mode bits, and back.
+constexpr uint32_t mode_word(const golden::Registers& r) {
+  uint32_t m = static_cast<uint32_t>(r.blend) << kModeBlendShift;
+  if (r.gradient) m |= kModeGradient;
+  if (r.magnitude) m |= kModeMagnitude;
+  if (r.shading) m |= kModeShading;
+  if (r.specular) m |= kModeSpecular;
+  if (r.gm_opacity) m |= kModeGmOpacity;
+  if (r.gm_diffuse) m |= kModeGmDiffuse;
+  if (r.gm_specular) m |= kModeGmSpecular;
+  if (r.crop_enabled) m |= kModeCrop;
+  if (r.cut_enabled) m |= kModeCut;
+  return m;
+}
+constexpr void set_mode(golden::Registers& r, uint64_t v) {
+  r.gradient = v & kModeGradient;
+  r.magnitude = v & kModeMagnitude;
+  r.shading = v & kModeShading;
+  r.specular = v & kModeSpecular;
+  r.gm_opacity = v & kModeGmOpacity;
+  r.gm_diffuse = v & kModeGmDiffuse;
+  r.gm_specular = v & kModeGmSpecular;
+  r.blend = static_cast<golden::BlendMode>((v & kModeBlendMask) >> kModeBlendShift);
+  r.crop_enabled = v & kModeCrop;
+  r.cut_enabled = v & kModeCut;
+}
 
-// ---- Volume (0x240-0x24B) ----------------------------------------------------
-constexpr uint64_t kVolDim = 0x240;           // object-order nx, ny, nz, 1..max_dim
+constexpr size_t class_entries(const golden::Precision& p) { return size_t{1} << p.voxel_bits; }
+constexpr size_t gm_entries(const golden::Precision& p) { return size_t{1} << p.magnitude_bits; }
+constexpr size_t map_entries(const golden::Precision& p) { return size_t{6} * p.map_face_res * p.map_face_res; }
+
+constexpr uint64_t kPrecisionBase = 0x080;
+constexpr uint64_t kPrecisionEnd = 0x100;  // room for 32 widths
+static_assert(kPrecisionBase + 4 * golden::kPrecisionFieldCount <= kPrecisionEnd,
+              "the precision block is full: move the view block up");
+
+namespace detail {
+
+// A golden::Registers (or RegisterValues) member as a register: its name for
+// the docs, a getter and a setter. Signed members reach the bus sign-extended.
+#define CUBE4_REG_BITS(member, expr_get, expr_set)                                                        \
+  #member, [](const RegisterValues& v, const HardwareParams&) -> uint64_t { const auto& f = v.regs.member; return expr_get; }, \
+      [](RegisterValues& v, uint64_t w) { auto& f = v.regs.member; expr_set; }
+#define CUBE4_REG_FIELD(member) \
+  CUBE4_REG_BITS(member, static_cast<uint64_t>(f), f = static_cast<std::remove_reference_t<decltype(f)>>(w))
+#define CUBE4_REG_HW(expr) \
+  "", [](const RegisterValues&, [[maybe_unused]] const HardwareParams& hw) { return static_cast<uint64_t>(expr); }, nullptr
+
+using golden::Precision;
+constexpr Width bits(int n) { return Width{n, nullptr}; }
+constexpr Width precision_bits(int Precision::*w, int plus = 0) { return Width{plus, w}; }
+
+// Everything but the precision block, which golden::kPrecisionFields lays out.
+inline constexpr Register kListed[] = {
+    // ---- Control and status: HostInterface's, as they act on the system model.
+    {"CTRL", 0x000, Block::Control, Access::W, 1, bits(3), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "bit 0 START, bit 1 RESET, bit 2 CLEAR_ERROR; applied RESET, CLEAR_ERROR, START in that order"},
+    {"STATUS", 0x004, Block::Control, Access::R, 1, bits(3), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "bit 0 BUSY (a frame is running), bit 1 DONE (the frame started last has completed), bit 2 ERROR (sticky)"},
+    {"LAST_ERROR", 0x008, Block::Control, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "error code of the latest error response (table below); 0 after RESET"},
+    {"ERROR_ADDR", 0x010, Block::Control, Access::R, 2, bits(64), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "address of the word at fault (START checks: CTRL, or the 64-bit register out of range); 0 after RESET"},
+    {"FRAME_COUNT", 0x018, Block::Control, Access::R, 2, bits(64), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "frames completed by the system model"},
+    {"CYCLES", 0x020, Block::Control, Access::R, 2, bits(64), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "clock cycles of the last frame"},
+    {"BASE_WIDTH", 0x028, Block::Control, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "last frame's base-plane width (0 before a frame)"},
+    {"BASE_HEIGHT", 0x02C, Block::Control, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width, "", nullptr, nullptr, "",
+     "last frame's base-plane height"},
+
+    // ---- Identification: what the built hardware is.
+    {"ID_MAGIC", 0x040, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(kMagic), "", "0x43554234 (\"CUB4\")"},
+    {"ID_VERSION", 0x044, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(kVersion), "", "major.minor in 16.16; a host refuses another major"},
+    {"ID_PIPELINES", 0x048, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(hw.pipelines), "NumPipes", "p"},
+    {"ID_MAX_DIM", 0x04C, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(hw.max_dim), "MaxDim", "largest volume dimension (2..1024)"},
+    {"ID_VOXEL_BITS", 0x050, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(hw.precision.voxel_bits), "VoxelBits", "`voxel_bits`"},
+    {"ID_CLASS_ENTRIES", 0x054, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(class_entries(hw.precision)), "", "2^`voxel_bits`"},
+    {"ID_GMLUT_ENTRIES", 0x058, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(gm_entries(hw.precision)), "", "2^`magnitude_bits`"},
+    {"ID_MAP_ENTRIES", 0x05C, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(map_entries(hw.precision)), "", "6·`map_face_res`² per reflectance map"},
+    {"ID_BASE_MAX", 0x060, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(2 * hw.max_dim), "", "2·max dim: largest base-plane width and height (pixel memory)"},
+
+    // ---- View and DDA.
+    {"DIM_X", 0x100, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, CUBE4_REG_FIELD(dim[0]),
+     "cube4_skew_addr.dim_i, cube4_composite_ring.nx_i", "permuted nx"},
+    {"DIM_Y", 0x104, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, CUBE4_REG_FIELD(dim[1]),
+     "cube4_skew_addr.dim_i", "permuted ny"},
+    {"DIM_Z", 0x108, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, CUBE4_REG_FIELD(dim[2]),
+     "cube4_skew_addr.dim_i", "permuted nz"},
+    {"PERM", 0x10C, Block::View, Access::RW, 1, bits(6), Sign::Unsigned, Rule::Permutation,
+     CUBE4_REG_BITS(perm, uint64_t(f[0] | f[1] << 2 | f[2] << 4),
+                    for (int i = 0; i < 3; ++i) f[i] = static_cast<int>(w >> (2 * i) & 3)),
+     "cube4_skew_addr.perm_i", "`perm[i]` in bits 2i+1:2i; must be a permutation of 0, 1, 2"},
+    {"FLIP", 0x110, Block::View, Access::RW, 1, bits(3), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_BITS(flip, uint64_t(f[0] | f[1] << 1 | f[2] << 2),
+                    for (int i = 0; i < 3; ++i) f[i] = (w >> i & 1) != 0),
+     "cube4_skew_addr.flip_i", "`flip[i]` in bit i"},
+    {"SUPERSAMPLING", 0x114, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Supersampling,
+     CUBE4_REG_FIELD(supersampling), "cube4_skew_addr.repeat_slice_i", "samples per voxel along the rays"},
+    {"X_START", 0x118, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(x_start),
+     "— (FramePlan slice control)", "`dda_frac_bits` fraction"},
+    {"X_STEP", 0x120, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(x_step),
+     "— (FramePlan slice control)", "per sample slice"},
+    {"Y_START", 0x128, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(y_start),
+     "— (FramePlan slice control)", ""},
+    {"Y_STEP", 0x130, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(y_step),
+     "— (FramePlan slice control)", ""},
+
+    // ---- Mode.
+    {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(14), Sign::Unsigned, Rule::Mode,
+     "gradient … cut_enabled",
+     [](const RegisterValues& v, const HardwareParams&) { return uint64_t{mode_word(v.regs)}; },
+     [](RegisterValues& v, uint64_t w) { set_mode(v.regs, w); },
+     "cube4_shade_unit magnitude_i … gm_specular_i, cube4_composite_ring blend_mode_i, crop_enabled_i, "
+     "cut_enabled_i",
+     "bit 0 `gradient`, 1 `magnitude`, 2 `shading`, 3 `specular`, 4 `gm_opacity`, 5 `gm_diffuse`, "
+     "6 `gm_specular`, bits 9:8 `blend` (0 composite, 1 MIP, 2 MinIP; 3 is out of range), "
+     "bit 12 `crop_enabled`, bit 13 `cut_enabled`"},
+
+    // ---- Cropping.
+    {"CROP_X_LO", 0x180, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(crop.slab[0][0]), "cube4_composite_ring.crop_x_lo_i",
+     "inclusive slab, permuted voxel coordinates"},
+    {"CROP_X_HI", 0x184, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(crop.slab[0][1]), "cube4_composite_ring.crop_x_hi_i", ""},
+    {"CROP_Y_LO", 0x188, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(crop.slab[1][0]), "cube4_composite_ring.crop_y_lo_i", ""},
+    {"CROP_Y_HI", 0x18C, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(crop.slab[1][1]), "cube4_composite_ring.crop_y_hi_i", ""},
+    {"CROP_Z_LO", 0x190, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(crop.slab[2][0]), "cube4_composite_ring.crop_z_lo_i", ""},
+    {"CROP_Z_HI", 0x194, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(crop.slab[2][1]), "cube4_composite_ring.crop_z_hi_i", ""},
+    {"CROP_MASK", 0x198, Block::Cropping, Access::RW, 1, bits(8), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(crop.mask), "cube4_composite_ring.crop_mask_i",
+     "visible iff bit (inX \\| inY<<1 \\| inZ<<2)"},
+
+    // ---- Cut plane.
+    {"CUT_A", 0x1C0, Block::CutPlane, Access::RW, 1, bits(golden::kCutCoefBits), Sign::Signed, Rule::Width,
+     CUBE4_REG_FIELD(cut.a), "cube4_composite_ring.cut_a_i", "normal, 2^10 scale (`kCutNormalBits`)"},
+    {"CUT_B", 0x1C4, Block::CutPlane, Access::RW, 1, bits(golden::kCutCoefBits), Sign::Signed, Rule::Width,
+     CUBE4_REG_FIELD(cut.b), "cube4_composite_ring.cut_b_i", ""},
+    {"CUT_C", 0x1C8, Block::CutPlane, Access::RW, 1, bits(golden::kCutCoefBits), Sign::Signed, Rule::Width,
+     CUBE4_REG_FIELD(cut.c), "cube4_composite_ring.cut_c_i", ""},
+    {"CUT_FLAGS", 0x1CC, Block::CutPlane, Access::RW, 1, bits(1), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_BITS(cut.keep_inside, f ? kCutKeepInside : 0, f = (w & kCutKeepInside) != 0),
+     "cube4_composite_ring.cut_keep_inside_i", "bit 0"},
+    {"CUT_DMIN", 0x1D0, Block::CutPlane, Access::RW, 2, precision_bits(&Precision::cut_bits), Sign::Signed,
+     Rule::Width, CUBE4_REG_FIELD(cut.dmin), "cube4_composite_ring.cut_dmin_i", "distance units of d"},
+    {"CUT_DMAX", 0x1D8, Block::CutPlane, Access::RW, 2, precision_bits(&Precision::cut_bits), Sign::Signed,
+     Rule::Width, CUBE4_REG_FIELD(cut.dmax), "cube4_composite_ring.cut_dmax_i", ""},
+    {"CUT_FALLOFF", 0x1E0, Block::CutPlane, Access::RW, 2, precision_bits(&Precision::cut_bits), Sign::Unsigned,
+     Rule::Width, CUBE4_REG_FIELD(cut.falloff), "cube4_composite_ring.cut_falloff_i", "0: hard cut"},
+    {"CUT_INV_FALLOFF", 0x1E8, Block::CutPlane, Access::RW, 2,
+     precision_bits(&Precision::alpha_bits, golden::kCutInvShift), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(cut.inv_falloff), "cube4_composite_ring.cut_inv_falloff_i", "host-computed reciprocal"},
+
+    // ---- Shading.
+    {"KE", 0x200, Block::Shading, Access::RW, 1, precision_bits(&Precision::coef_bits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(coefs.ke), "cube4_shade_unit.ke_i", "`coef_frac_bits` fraction"},
+    {"KD", 0x204, Block::Shading, Access::RW, 1, precision_bits(&Precision::coef_bits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(coefs.kd), "cube4_shade_unit.kd_i", ""},
+    {"KS", 0x208, Block::Shading, Access::RW, 1, precision_bits(&Precision::coef_bits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(coefs.ks), "cube4_shade_unit.ks_i", ""},
+    {"SPEC_R", 0x20C, Block::Shading, Access::RW, 1, precision_bits(&Precision::alpha_bits), Sign::Unsigned,
+     Rule::Width, CUBE4_REG_FIELD(coefs.specular[0]), "cube4_shade_unit.spec_red_i", "specular colour"},
+    {"SPEC_G", 0x210, Block::Shading, Access::RW, 1, precision_bits(&Precision::alpha_bits), Sign::Unsigned,
+     Rule::Width, CUBE4_REG_FIELD(coefs.specular[1]), "cube4_shade_unit.spec_green_i", ""},
+    {"SPEC_B", 0x214, Block::Shading, Access::RW, 1, precision_bits(&Precision::alpha_bits), Sign::Unsigned,
+     Rule::Width, CUBE4_REG_FIELD(coefs.specular[2]), "cube4_shade_unit.spec_blue_i", ""},
+    {"EYE_X", 0x218, Block::Shading, Access::RW, 1, precision_bits(&Precision::eye_bits), Sign::Symmetric,
+     Rule::Width, CUBE4_REG_FIELD(eye[0]), "cube4_shade_unit.eye_x_i", "sign-extended to 32 bits"},
+    {"EYE_Y", 0x21C, Block::Shading, Access::RW, 1, precision_bits(&Precision::eye_bits), Sign::Symmetric,
+     Rule::Width, CUBE4_REG_FIELD(eye[1]), "cube4_shade_unit.eye_y_i", ""},
+    {"EYE_Z", 0x220, Block::Shading, Access::RW, 1, precision_bits(&Precision::eye_bits), Sign::Symmetric,
+     Rule::Width, CUBE4_REG_FIELD(eye[2]), "cube4_shade_unit.eye_z_i", ""},
+
+    // ---- Volume.
+    {"VOL_DIM_X", 0x240, Block::Volume, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, "golden::Volume::dim[0]",
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim[0]); },
+     [](RegisterValues& v, uint64_t w) { v.vol_dim[0] = static_cast<int>(w); }, "— (voxel memory layout)",
+     "object-order nx"},
+    {"VOL_DIM_Y", 0x244, Block::Volume, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, "golden::Volume::dim[1]",
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim[1]); },
+     [](RegisterValues& v, uint64_t w) { v.vol_dim[1] = static_cast<int>(w); }, "— (voxel memory layout)", "ny"},
+    {"VOL_DIM_Z", 0x248, Block::Volume, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, "golden::Volume::dim[2]",
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim[2]); },
+     [](RegisterValues& v, uint64_t w) { v.vol_dim[2] = static_cast<int>(w); }, "— (voxel memory layout)", "nz"},
+};
+
+#undef CUBE4_REG_FIELD
+#undef CUBE4_REG_BITS
+#undef CUBE4_REG_HW
+
+
+template <size_t I>
+constexpr Register precision_register() {
+  constexpr const golden::PrecisionField& f = golden::kPrecisionFields[I];
+  Register r;
+  r.name = f.register_name;
+  r.addr = kPrecisionBase + 4 * I;
+  r.block = Block::Precision;
+  r.golden_field = f.key;
+  r.rtl_port = f.rtl_parameter ? f.rtl_parameter : "—";
+  r.get = [](const RegisterValues&, const HardwareParams& hw) {
+    return static_cast<uint64_t>(hw.precision.*golden::kPrecisionFields[I].member);
+  };
+  return r;
+}
+
+constexpr size_t kRegisterCount = std::size(kListed) + golden::kPrecisionFieldCount;
+
+template <size_t... I>
+constexpr std::array<Register, kRegisterCount> sorted_registers(std::index_sequence<I...>) {
+  std::array<Register, kRegisterCount> all{};
+  size_t n = 0;
+  for (const Register& r : kListed) all[n++] = r;
+  ((all[n++] = precision_register<I>()), ...);
+  for (size_t i = 1; i < n; ++i)
+    for (size_t j = i; j > 0 && all[j - 1].addr > all[j].addr; --j) {
+      const Register t = all[j];
+      all[j] = all[j - 1];
+      all[j - 1] = t;
+    }
+  return all;
+}
+
+}  // namespace detail
+
+// Every register, by address.
+inline constexpr std::array<Register, detail::kRegisterCount> kRegisters =
+    detail::sorted_registers(std::make_index_sequence<golden::kPrecisionFieldCount>{});
+
+// The register named `name` (for 64-bit ones also NAME_LO and NAME_HI), or nullptr.
+constexpr const Register* find_register(std::string_view name) {
+  for (const Register& r : kRegisters) {
+    if (name == r.name) return &r;
+    if (r.words == 2 && name.size() == std::string_view(r.name).size() + 3 &&
+        name.substr(0, name.size() - 3) == r.name && (name.substr(name.size() - 3) == "_LO" ||
+                                                     name.substr(name.size() - 3) == "_HI"))
+      return &r;
+  }
+  return nullptr;
+}
+
+// The register holding the word at a (4-byte aligned), or nullptr.
+constexpr const Register* register_at(uint64_t a) {
+  for (const Register& r : kRegisters)
+    if (a >= r.addr && a < r.addr + 4 * uint64_t(r.words)) return &r;
+  return nullptr;
+}
+
+// A name's address: unknown names do not compile where a constant is needed.
+constexpr uint64_t address_of(std::string_view name) {
+  const Register* r = find_register(name);
+  if (!r) throw "no such register";
+  return r->addr + (name.size() > 3 && name.substr(name.size() - 3) == "_HI" && r->words == 2 ? 4 : 0);
+}
+
+// ---- Addresses ---------------------------------------------------------------------
+constexpr uint64_t kCtrl = address_of("CTRL");
+constexpr uint64_t kStatus = address_of("STATUS");
+constexpr uint64_t kLastError = address_of("LAST_ERROR");
+constexpr uint64_t kErrorAddrLo = address_of("ERROR_ADDR_LO");
+constexpr uint64_t kErrorAddrHi = address_of("ERROR_ADDR_HI");
+constexpr uint64_t kFrameCountLo = address_of("FRAME_COUNT_LO");
+constexpr uint64_t kFrameCountHi = address_of("FRAME_COUNT_HI");
+constexpr uint64_t kCyclesLo = address_of("CYCLES_LO");
+constexpr uint64_t kCyclesHi = address_of("CYCLES_HI");
+constexpr uint64_t kBaseWidth = address_of("BASE_WIDTH");
+constexpr uint64_t kBaseHeight = address_of("BASE_HEIGHT");
+constexpr uint64_t kIdMagic = address_of("ID_MAGIC");
+constexpr uint64_t kIdVersion = address_of("ID_VERSION");
+constexpr uint64_t kIdPipelines = address_of("ID_PIPELINES");
+constexpr uint64_t kIdMaxDim = address_of("ID_MAX_DIM");
+constexpr uint64_t kIdVoxelBits = address_of("ID_VOXEL_BITS");
+constexpr uint64_t kIdClassEntries = address_of("ID_CLASS_ENTRIES");
+constexpr uint64_t kIdGmLutEntries = address_of("ID_GMLUT_ENTRIES");
+constexpr uint64_t kIdMapEntries = address_of("ID_MAP_ENTRIES");
+constexpr uint64_t kIdBaseMax = address_of("ID_BASE_MAX");
+constexpr uint64_t kPrecision = kPrecisionBase;
+constexpr int kPrecisionFields = golden::kPrecisionFieldCount;
+constexpr uint64_t kDimX = address_of("DIM_X");
+constexpr uint64_t kDimY = address_of("DIM_Y");
+constexpr uint64_t kDimZ = address_of("DIM_Z");
+constexpr uint64_t kPerm = address_of("PERM");
+constexpr uint64_t kFlip = address_of("FLIP");
+constexpr uint64_t kSupersampling = address_of("SUPERSAMPLING");
+constexpr uint64_t kXStartLo = address_of("X_START_LO");
+constexpr uint64_t kXStartHi = address_of("X_START_HI");
+constexpr uint64_t kXStepLo = address_of("X_STEP_LO");
+constexpr uint64_t kXStepHi = address_of("X_STEP_HI");
+constexpr uint64_t kYStartLo = address_of("Y_START_LO");
+constexpr uint64_t kYStartHi = address_of("Y_START_HI");
+constexpr uint64_t kYStepLo = address_of("Y_STEP_LO");
+constexpr uint64_t kYStepHi = address_of("Y_STEP_HI");
+constexpr uint64_t kMode = address_of("MODE");
+constexpr uint64_t kCropSlab = address_of("CROP_X_LO");  // x lo, x hi, y lo, y hi, z lo, z hi
+constexpr uint64_t kCropMask = address_of("CROP_MASK");
+constexpr uint64_t kCutA = address_of("CUT_A");
+constexpr uint64_t kCutB = address_of("CUT_B");
+constexpr uint64_t kCutC = address_of("CUT_C");
+constexpr uint64_t kCutFlags = address_of("CUT_FLAGS");
+constexpr uint64_t kCutDminLo = address_of("CUT_DMIN_LO");
+constexpr uint64_t kCutDminHi = address_of("CUT_DMIN_HI");
+constexpr uint64_t kCutDmaxLo = address_of("CUT_DMAX_LO");
+constexpr uint64_t kCutDmaxHi = address_of("CUT_DMAX_HI");
+constexpr uint64_t kCutFalloffLo = address_of("CUT_FALLOFF_LO");
+constexpr uint64_t kCutFalloffHi = address_of("CUT_FALLOFF_HI");
+constexpr uint64_t kCutInvFalloffLo = address_of("CUT_INV_FALLOFF_LO");
+constexpr uint64_t kCutInvFalloffHi = address_of("CUT_INV_FALLOFF_HI");
+constexpr uint64_t kKe = address_of("KE");
+constexpr uint64_t kKd = address_of("KD");
+constexpr uint64_t kKs = address_of("KS");
+constexpr uint64_t kSpecularColor = address_of("SPEC_R");  // r, g, b
+constexpr uint64_t kEye = address_of("EYE_X");             // x, y, z
+constexpr uint64_t kVolDim = address_of("VOL_DIM_X");      // x, y, z
 
 constexpr uint64_t kRegisterSpace = 0x1000;   // everything above is a window
+static_assert(kRegisters.back().addr + 4 * kRegisters.back().words <= kRegisterSpace);
 
 // ---- Windows ---------------------------------------------------------------------
 // Each window is sized for the largest parameters the map allows; only the
@@ -128,10 +450,6 @@ constexpr uint64_t kBaseSize = 0x0800'0000;
 constexpr uint64_t kVolumeBase = 0x1'0000'0000;  // two voxels per word, x fastest
 constexpr uint64_t kVolumeSize = 0x1'0000'0000;
 
-constexpr int kMaxDimLimit = 1024;   // volume window: 2 bytes * 1024^3 = 2 GiB
-constexpr int kMaxPipelines = 256;
-constexpr int kMaxSupersampling = 8;
-
 enum class Region { None, Registers, Class, GmLut, Diffuse, Specular, Base, Volume };
 
 constexpr Region region_of(uint64_t a) {
@@ -144,6 +462,26 @@ constexpr Region region_of(uint64_t a) {
   if (a >= kVolumeBase && a - kVolumeBase < kVolumeSize) return Region::Volume;
   return Region::None;
 }
+
+// ---- Field values --------------------------------------------------------------------
+
+// The smallest and largest value of a field, for the rules that are a range.
+struct Limits {
+  int64_t lo, hi;
+};
+std::optional<Limits> limits(const Register& r, const HardwareParams& hw);
+
+// The value a register's word(s) carry: one word sign-extended when signed.
+constexpr int64_t field_value(const Register& r, uint64_t raw) {
+  if (r.words == 1 && r.sign != Sign::Unsigned) return static_cast<int32_t>(static_cast<uint32_t>(raw));
+  return static_cast<int64_t>(raw);
+}
+
+// Whether the hardware takes raw (the register's whole value, both words of a 64-bit one).
+bool fits(const Register& r, uint64_t raw, const HardwareParams& hw);
+
+// The register's reset value (golden::Registers' defaults).
+uint64_t reset_value(const Register& r, const HardwareParams& hw);
 
 // LAST_ERROR codes. Every error response sets STATUS.ERROR and records one.
 enum class ErrorCode : uint32_t {
@@ -192,8 +530,7 @@ constexpr const char* error_name(ErrorCode e) {
 // "MODE (0x140)", "CLASS[17].a (0x100088)": for error messages.
 std::string describe_address(uint64_t a);
 
-// The MODE register's word for the registers' mode bits (the one encoder:
-// the host writes it, the register file reads it back).
-uint32_t mode_word(const golden::Registers& r);
+// The register-space tables of docs/registers.md, in Markdown.
+std::string register_doc();
 
 }  // namespace cube4::sysc::regmap

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -220,12 +221,8 @@ void fresh(HostInterface& h, TestBackend& b) {
 #define EXPECT_FIELD(f) EXPECT_EQ(a.f, b.f) << where << ": field " #f
 
 void expect_precision_equal(const golden::Precision& a, const golden::Precision& b, const std::string& where) {
-  EXPECT_FIELD(voxel_bits); EXPECT_FIELD(weight_bits); EXPECT_FIELD(dda_frac_bits);
-  EXPECT_FIELD(gradient_bits); EXPECT_FIELD(gradient_shift); EXPECT_FIELD(magnitude_bits);
-  EXPECT_FIELD(nr_iterations); EXPECT_FIELD(color_bits); EXPECT_FIELD(alpha_bits);
-  EXPECT_FIELD(gmlut_bits); EXPECT_FIELD(map_face_res); EXPECT_FIELD(map_bits);
-  EXPECT_FIELD(map_frac_bits); EXPECT_FIELD(coef_bits); EXPECT_FIELD(coef_frac_bits);
-  EXPECT_FIELD(eye_bits); EXPECT_FIELD(cut_bits);
+  for (const golden::PrecisionField& f : golden::kPrecisionFields)
+    EXPECT_EQ(a.*f.member, b.*f.member) << where << ": precision." << f.key;
 }
 
 template <class T, class Eq>
@@ -311,7 +308,6 @@ SceneSetup narrow_scene() {
 golden::Registers random_registers(const golden::Precision& p, std::mt19937_64& rng, golden::Volume& vol) {
   auto bits = [&](int n) { return static_cast<uint32_t>(n >= 32 ? rng() : rng() & ((uint64_t{1} << n) - 1)); };
   auto coin = [&] { return (rng() & 1) != 0; };
-  auto any32 = [&] { return static_cast<int32_t>(static_cast<uint32_t>(rng())); };
   golden::Registers r;
   r.p = p;
   std::shuffle(r.perm.begin(), r.perm.end(), rng);
@@ -349,11 +345,17 @@ golden::Registers random_registers(const golden::Precision& p, std::mt19937_64& 
   const int64_t e = golden::max_signed(p.eye_bits);
   for (auto& c : r.eye) c = static_cast<int32_t>(static_cast<int64_t>(rng() % (2 * e + 1)) - e);
   r.crop_enabled = coin();
-  for (auto& s : r.crop.slab) s = {any32(), any32()};
+  // Fields narrower than their registers: any value the hardware field holds.
+  auto in_field = [&, hw = HardwareParams{p}](const char* name) {
+    const rm::Limits l = *rm::limits(*rm::find_register(name), hw);
+    return l.lo + static_cast<int64_t>(rng() % static_cast<uint64_t>(l.hi - l.lo + 1));
+  };
+  for (auto& s : r.crop.slab) s = {static_cast<int32_t>(in_field("CROP_X_LO")), static_cast<int32_t>(in_field("CROP_X_HI"))};
   r.crop.mask = static_cast<uint8_t>(rng());
   r.cut_enabled = coin();
-  r.cut = {any32(), any32(), any32(), static_cast<int64_t>(rng()), static_cast<int64_t>(rng()),
-           static_cast<int64_t>(rng()), rng(), coin()};
+  r.cut = {static_cast<int32_t>(in_field("CUT_A")), static_cast<int32_t>(in_field("CUT_B")),
+           static_cast<int32_t>(in_field("CUT_C")), in_field("CUT_DMIN"), in_field("CUT_DMAX"),
+           in_field("CUT_FALLOFF"), static_cast<uint64_t>(in_field("CUT_INV_FALLOFF")), coin()};
   vol = golden::Volume{};
   vol.bits = p.voxel_bits;
   for (int i = 0; i < 3; ++i) vol.dim[r.perm[i]] = r.dim[i];
@@ -378,8 +380,8 @@ TEST(HostInterface, IdentificationAndPrecisionReportTheHardware) {
     EXPECT_EQ(read(*h, rm::kIdGmLutEntries), 1u << hw.precision.magnitude_bits);
     EXPECT_EQ(read(*h, rm::kIdMapEntries), uint32_t(6 * hw.precision.map_face_res * hw.precision.map_face_res));
     EXPECT_EQ(read(*h, rm::kIdBaseMax), uint32_t(2 * hw.max_dim));
-    EXPECT_EQ(read(*h, rm::kPrecision + 4 * 8), uint32_t(hw.precision.alpha_bits));   // alpha_bits: 9th
-    EXPECT_EQ(read(*h, rm::kPrecision + 4 * 16), uint32_t(hw.precision.cut_bits));    // cut_bits: last
+    for (const golden::PrecisionField& f : golden::kPrecisionFields)
+      EXPECT_EQ(read(*h, rm::address_of(f.register_name)), uint32_t(hw.precision.*f.member)) << f.register_name;
     sc_time delay = SC_ZERO_TIME;
     const HardwareId id = read_hardware_id(h->target(), delay);
     expect_precision_equal(id.precision, hw.precision, h->name());
@@ -769,6 +771,46 @@ TEST(HostInterface, EveryErrorPathGivesItsResponseAndSetsTheErrorBit) {
     EXPECT_EQ(read(e.host, rm::kLastError), 0u);
   }
   fresh(e.host, e.backend);
+}
+
+// Every field narrower than its register takes both ends of its hardware
+// range and refuses one past either (what the register can express): a
+// 32-bit register at the write, a 64-bit one at START, which sees both words.
+TEST(HostInterface, EveryFieldTakesItsLimitsAndRefusesOnePast) {
+  Env& e = env();
+  const HardwareParams& hw = e.host.config().hw;
+  int narrow = 0;
+  for (const rm::Register& reg : rm::kRegisters) {
+    const std::optional<rm::Limits> l = rm::limits(reg, hw);
+    if (!reg.set || !l) continue;
+    const int64_t reg_lo = reg.words == 2 ? INT64_MIN : (reg.sign == rm::Sign::Unsigned ? 0 : INT32_MIN);
+    const int64_t reg_hi = reg.words == 2 ? INT64_MAX : (reg.sign == rm::Sign::Unsigned ? UINT32_MAX : INT32_MAX);
+    auto attempt = [&](int64_t v) {
+      fresh(e.host, e.backend);
+      set_volume_and_view(e, {10, 10, 10});
+      const auto u = static_cast<uint64_t>(v);
+      std::vector<uint32_t> words{static_cast<uint32_t>(u)};
+      if (reg.words == 2) words.push_back(static_cast<uint32_t>(u >> 32));
+      tlm::tlm_response_status s = write(e.host, reg.addr, words);
+      if (s == tlm::TLM_OK_RESPONSE && reg.words == 2) s = write(e.host, rm::kCtrl, {rm::kCtrlStart});
+      return s;
+    };
+    if (l->lo == reg_lo && l->hi == reg_hi) continue;  // the whole register: the DDA, bounded at START
+    for (const int64_t v : {l->lo, l->hi}) {
+      SCOPED_TRACE(std::string(reg.name) + " = " + std::to_string(v));
+      EXPECT_EQ(attempt(v), tlm::TLM_OK_RESPONSE);
+    }
+    for (const int64_t v : {l->lo - (l->lo > reg_lo), l->hi + (l->hi < reg_hi)}) {
+      if (v >= l->lo && v <= l->hi) continue;  // the register holds no value past this end
+      SCOPED_TRACE(std::string(reg.name) + " = " + std::to_string(v));
+      ++narrow;
+      EXPECT_EQ(attempt(v), tlm::TLM_GENERIC_ERROR_RESPONSE);
+      EXPECT_EQ(read(e.host, rm::kLastError), static_cast<uint32_t>(ErrorCode::FieldRange));
+      EXPECT_EQ(read(e.host, rm::kErrorAddrLo), reg.addr);
+      EXPECT_EQ(e.backend.frames.size(), 0u);
+    }
+  }
+  EXPECT_GE(narrow, 45) << "values one past a field that its register can express";
 }
 
 TEST(HostInterface, RegisterWritesWhileBusyAreTakenForTheNextFrame) {

@@ -10,38 +10,19 @@
 #include "systemc/core/pixel_memory.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/unit_registers.hpp"
 
 namespace cube4::sysc {
 
 template <class M>
 class RtlComposite final : public CompositeIf {
  public:
-  static constexpr int kPosBits = 16, kCutCoefBits = 12, kLatency = 7;
+  static constexpr int kPosBits = golden::kPositionBits, kLatency = 7;
 
   RtlComposite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite") {
-    using rtl::put_bits;
-    const golden::Registers& r = plan.r;
-    const golden::Precision& p = r.p;
     M& m = *m_;
-    m.blend_mode_i = static_cast<uint8_t>(r.blend);
-    m.crop_enabled_i = r.crop_enabled;
-    put_bits(m.crop_x_lo_i, 0, kPosBits, static_cast<uint64_t>(r.crop.slab[0][0]));
-    put_bits(m.crop_x_hi_i, 0, kPosBits, static_cast<uint64_t>(r.crop.slab[0][1]));
-    put_bits(m.crop_y_lo_i, 0, kPosBits, static_cast<uint64_t>(r.crop.slab[1][0]));
-    put_bits(m.crop_y_hi_i, 0, kPosBits, static_cast<uint64_t>(r.crop.slab[1][1]));
-    put_bits(m.crop_z_lo_i, 0, kPosBits, static_cast<uint64_t>(r.crop.slab[2][0]));
-    put_bits(m.crop_z_hi_i, 0, kPosBits, static_cast<uint64_t>(r.crop.slab[2][1]));
-    m.crop_mask_i = r.crop.mask;
-    m.cut_enabled_i = r.cut_enabled;
-    put_bits(m.cut_a_i, 0, kCutCoefBits, static_cast<uint64_t>(r.cut.a));
-    put_bits(m.cut_b_i, 0, kCutCoefBits, static_cast<uint64_t>(r.cut.b));
-    put_bits(m.cut_c_i, 0, kCutCoefBits, static_cast<uint64_t>(r.cut.c));
-    put_bits(m.cut_dmin_i, 0, p.cut_bits, static_cast<uint64_t>(r.cut.dmin));
-    put_bits(m.cut_dmax_i, 0, p.cut_bits, static_cast<uint64_t>(r.cut.dmax));
-    put_bits(m.cut_falloff_i, 0, p.cut_bits, static_cast<uint64_t>(r.cut.falloff));
-    put_bits(m.cut_inv_falloff_i, 0, p.alpha_bits + golden::kCutInvShift, r.cut.inv_falloff);
-    m.cut_keep_inside_i = r.cut.keep_inside;
+    rtl::drive_composite_registers(m, plan.r);
     m.nx_i = static_cast<uint32_t>(plan.nx);
     m.last_ix_i = static_cast<uint32_t>(plan.slices[static_cast<size_t>(plan.K - 1)].ix);
     m.last_iy_i = static_cast<uint32_t>(plan.slices[static_cast<size_t>(plan.K - 1)].iy);

@@ -17,6 +17,11 @@
 #include "systemc/rtl/rtl_shade.hpp"
 
 namespace cube4::sysc {
+
+#ifdef CUBE4_SHADE_SIDE_BITS
+static_assert(kShadeSideBits == CUBE4_SHADE_SIDE_BITS, "the verilated shading unit's SideBits differ (systemc/CMakeLists.txt)");
+#endif
+
 namespace {
 
 [[noreturn]] void unavailable(int p) {

@@ -9,6 +9,7 @@
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/unit_registers.hpp"
 
 namespace cube4::sysc {
 
@@ -68,46 +69,16 @@ class RtlShade final : public ShadeIf {
 
  private:
   void load_tables(RtlModel<M>& u) {
-    using rtl::put_bits;
     const golden::Registers& r = plan_.r;
-    const golden::Precision& p = r.p;
     M& m = *u;
     m.valid_i = 0;
     m.class_we_i = m.gmlut_we_i = m.dmap_we_i = m.smap_we_i = 0;
-    // One entry per clock through a table's write port.
-    auto load = [&u](auto& we, auto& addr, auto& data, size_t n, auto&& entry) {
-      for (size_t i = 0; i < n; ++i) {
-        we = 1;
-        addr = static_cast<uint32_t>(i);
-        put_bits(data, 0, 64, entry(i));
-        u.edge();
-      }
-      we = 0;
-    };
-    load(m.class_we_i, m.class_waddr_i, m.class_wdata_i, r.classification.size(), [&](size_t i) {
-      const golden::ClassEntry& e = r.classification[i];
-      return ((((uint64_t{e.r} << p.color_bits | e.g) << p.color_bits) | e.b) << p.alpha_bits) | e.a;
-    });
-    load(m.gmlut_we_i, m.gmlut_waddr_i, m.gmlut_wdata_i, r.gm_lut.size(), [&](size_t i) { return uint64_t{r.gm_lut[i]}; });
-    load(m.dmap_we_i, m.dmap_waddr_i, m.dmap_wdata_i, r.diffuse_map.size(),
-         [&](size_t i) { return uint64_t{r.diffuse_map[i]}; });
-    load(m.smap_we_i, m.smap_waddr_i, m.smap_wdata_i, r.specular_map.size(),
-         [&](size_t i) { return uint64_t{r.specular_map[i]}; });
-    m.magnitude_i = r.magnitude;
-    m.shading_i = r.shading;
-    m.specular_i = r.specular;
-    m.gm_opacity_i = r.gm_opacity;
-    m.gm_diffuse_i = r.gm_diffuse;
-    m.gm_specular_i = r.gm_specular;
-    m.ke_i = r.coefs.ke;
-    m.kd_i = r.coefs.kd;
-    m.ks_i = r.coefs.ks;
-    m.spec_red_i = r.coefs.specular[0];
-    m.spec_green_i = r.coefs.specular[1];
-    m.spec_blue_i = r.coefs.specular[2];
-    put_bits(m.eye_x_i, 0, p.eye_bits, static_cast<uint64_t>(r.eye[0]));
-    put_bits(m.eye_y_i, 0, p.eye_bits, static_cast<uint64_t>(r.eye[1]));
-    put_bits(m.eye_z_i, 0, p.eye_bits, static_cast<uint64_t>(r.eye[2]));
+    auto edge = [&u] { u.edge(); };
+    rtl::load_class_table(m, r.p, r.classification, edge);
+    rtl::load_gm_lut(m, r.p, r.gm_lut, edge);
+    rtl::load_map(m, r.p, rtl::Map::Diffuse, r.diffuse_map, edge);
+    rtl::load_map(m, r.p, rtl::Map::Specular, r.specular_map, edge);
+    rtl::drive_shade_registers(m, r);
   }
 
   const FramePlan& plan_;

@@ -1,6 +1,7 @@
 // What the three ring testbenches (test_interp.cpp, test_gradient_ring.cpp,
 // test_composite_ring.cpp) share: the ring sizes the CMake groups verilate,
-// a stage timer, the views every ring is run through and the view's JSON.
+// the check that a frame fits a ring, the first-mismatch report, a stage
+// timer, the views every ring is run through and the view's JSON.
 #pragma once
 #include <array>
 #include <chrono>
@@ -10,6 +11,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "tb/rtl/rtl_check.hpp"
 
@@ -29,6 +32,39 @@ struct RingParams {
   }
 };
 constexpr RingParams kRingP1{1, 24}, kRingP2{2, 16}, kRingP4{4, 256}, kRingP5{5, 12};
+
+// Whether every frame's beam and slice fit the ring's storage (each one that
+// does not is a test failure); `names` gets the frames' names for the trace.
+template <class Frame>
+bool frames_fit(const RingParams& rp, const std::vector<const Frame*>& frames, std::string& names) {
+  bool fit = true;
+  for (const Frame* f : frames) {
+    names += (names.empty() ? "" : " + ") + f->name;
+    const int B = (f->nx + rp.p - 1) / rp.p;
+    if (B > rp.beam_depth()) ADD_FAILURE() << f->name << ": the beam does not fit the ring's beam storage";
+    if (B * f->ny > rp.slice_depth()) ADD_FAILURE() << f->name << ": the slice does not fit the ring's slice storage";
+    fit = fit && B <= rp.beam_depth() && B * f->ny <= rp.slice_depth();
+  }
+  return fit;
+}
+
+// The first mismatch of a ring whose pipeline q emits column x = j*p + q:
+// the cycle, the pipeline, what was wrong and, if one was due, which
+// output (`output` of x, y, slice k) of which frame.
+template <class Frame, class Expect>
+std::string mismatch_report(uint64_t cycle, int pipe, int p, const std::vector<const Frame*>& frames,
+                            const Expect* due, const char* output, const std::string& what,
+                            const std::string& detail) {
+  std::ostringstream o;
+  o << "first mismatch at cycle " << cycle << ", pipeline " << pipe << ": " << what;
+  if (due) {
+    const Frame& f = *frames[static_cast<size_t>(due->frame)];
+    o << "\n  frame " << due->frame << " (" << f.name << ", dim " << f.nx << "x" << f.ny << "x" << f.nz << "), "
+      << output << " x=" << due->j * p + pipe << " y=" << due->y << " slice k=" << due->k;
+  }
+  if (!detail.empty()) o << "\n  " << detail;
+  return o.str();
+}
 
 // Prints how long a stage of a test took (the rings' tests are the longest).
 struct Timer {

@@ -42,6 +42,7 @@
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
 #include "tb/rtl/ring_bench.hpp"
+#include "systemc/rtl/unit_registers.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -50,13 +51,10 @@ namespace g = cube4::golden;
 using namespace cube4::rtl;  // the shared bench: rtl_check.hpp, ring_bench.hpp
 
 // Ring parameters, as in rtl/groups/composite.cmake.
-// The ring's default widths (golden Precision defaults; cube4_composite's
-// PosBits and CutCoefBits).
 // The ring is verilated with the golden defaults (its parameters' defaults).
 constexpr g::Precision kDefaults{};
 constexpr int kVoxelBits = kDefaults.voxel_bits, kWeightBits = kDefaults.weight_bits,
-              kAlphaBits = kDefaults.alpha_bits, kCutBits = kDefaults.cut_bits, kPosBits = 16, kCutCoefBits = 12;
-constexpr int kInvBits = kAlphaBits + g::kCutInvShift;
+              kAlphaBits = kDefaults.alpha_bits, kPosBits = g::kPositionBits;
 // From a sample to the pixel of the ray it ends.
 constexpr int kLatency = 7;
 
@@ -199,29 +197,19 @@ const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const
 // The stream.
 
 // Frame registers of the compositor (changed only while nothing is in flight).
+// A frame's registers; the ring sees the compositing ones.
 struct Config {
-  uint8_t mode = 0;
-  bool crop_enabled = false;
-  g::CropRegs crop;
-  bool cut_enabled = false;
-  g::CutRegs cut;
+  g::Registers r;
   bool operator==(const Config& o) const {
-    return mode == o.mode && crop_enabled == o.crop_enabled && crop.slab == o.crop.slab && crop.mask == o.crop.mask &&
-           cut_enabled == o.cut_enabled && cut.a == o.cut.a && cut.b == o.cut.b && cut.c == o.cut.c &&
-           cut.dmin == o.cut.dmin && cut.dmax == o.cut.dmax && cut.falloff == o.cut.falloff &&
-           cut.inv_falloff == o.cut.inv_falloff && cut.keep_inside == o.cut.keep_inside;
+    const g::CutRegs &c = r.cut, &d = o.r.cut;
+    return r.blend == o.r.blend && r.crop_enabled == o.r.crop_enabled && r.crop.slab == o.r.crop.slab &&
+           r.crop.mask == o.r.crop.mask && r.cut_enabled == o.r.cut_enabled && c.a == d.a && c.b == d.b &&
+           c.c == d.c && c.dmin == d.dmin && c.dmax == d.dmax && c.falloff == d.falloff &&
+           c.inv_falloff == d.inv_falloff && c.keep_inside == d.keep_inside;
   }
 };
 
-Config config_of(const g::Registers& r) {
-  Config c;
-  c.mode = static_cast<uint8_t>(r.blend);
-  c.crop_enabled = r.crop_enabled;
-  c.crop = r.crop;
-  c.cut_enabled = r.cut_enabled;
-  c.cut = r.cut;
-  return c;
-}
+Config config_of(const g::Registers& r) { return Config{r}; }
 
 // One cycle of the input stream.
 struct Beat {
@@ -358,25 +346,7 @@ struct RunResult {
 
 template <class M>
 void drive_config(M& m, const Config& c) {
-  auto put = [](auto& port, int64_t v, int bits) { put_bits(port, 0, bits, static_cast<uint64_t>(v)); };
-  put(m.blend_mode_i, c.mode, 2);
-  m.crop_enabled_i = c.crop_enabled;
-  put(m.crop_x_lo_i, c.crop.slab[0][0], kPosBits);
-  put(m.crop_x_hi_i, c.crop.slab[0][1], kPosBits);
-  put(m.crop_y_lo_i, c.crop.slab[1][0], kPosBits);
-  put(m.crop_y_hi_i, c.crop.slab[1][1], kPosBits);
-  put(m.crop_z_lo_i, c.crop.slab[2][0], kPosBits);
-  put(m.crop_z_hi_i, c.crop.slab[2][1], kPosBits);
-  put(m.crop_mask_i, c.crop.mask, 8);
-  m.cut_enabled_i = c.cut_enabled;
-  put(m.cut_a_i, c.cut.a, kCutCoefBits);
-  put(m.cut_b_i, c.cut.b, kCutCoefBits);
-  put(m.cut_c_i, c.cut.c, kCutCoefBits);
-  put(m.cut_dmin_i, c.cut.dmin, kCutBits);
-  put(m.cut_dmax_i, c.cut.dmax, kCutBits);
-  put(m.cut_falloff_i, c.cut.falloff, kCutBits);
-  put(m.cut_inv_falloff_i, static_cast<int64_t>(c.cut.inv_falloff), kInvBits);
-  m.cut_keep_inside_i = c.cut.keep_inside;
+  drive_composite_registers(m, c.r);
 }
 
 template <class M>
@@ -549,12 +519,7 @@ template <class M>
 void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
                 uint64_t salt, uint64_t* pixels_checked = nullptr) {
   std::string what;
-  for (const Frame* f : frames) {
-    what += (what.empty() ? "" : " + ") + f->name;
-    const int B = (f->nx + rp.p - 1) / rp.p;
-    ASSERT_LE(B, rp.beam_depth()) << f->name << ": the beam does not fit the ring's ray beam delay";
-    ASSERT_LE(B * f->ny, rp.slice_depth()) << f->name << ": the slice does not fit the ring's ray slice store";
-  }
+  ASSERT_TRUE(frames_fit(rp, frames, what));
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.stall > 0 ? ", stalls" : ", no stalls") + ": " + what);
   Random rng(salt);
   const Stream s = make_stream(frames, rp.p, opt, rng);

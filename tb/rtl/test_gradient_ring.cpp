@@ -43,6 +43,7 @@
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "systemc/rtl/gradient_tag.hpp"
 #include "tb/rtl/ring_bench.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
@@ -55,11 +56,9 @@ using namespace cube4::rtl;  // the shared bench: rtl_check.hpp, ring_bench.hpp
 constexpr int kVoxelBits = 12;
 constexpr int kWeightBits = 8;
 constexpr int kGradientBits = 8;
-constexpr int kSupersamplingBits = 4;
 constexpr int kUserTagBits = 8;
-constexpr int kCtrlBits = 4 * (kWeightBits + 1) + kSupersamplingBits + 1;
 constexpr int kTagBits = CUBE4_GRADIENT_TAG_BITS;  // rtl/groups/gradient.cmake
-static_assert(kTagBits == kCtrlBits + kUserTagBits, "gradient.cmake's tag width differs from the ring's");
+static_assert(kTagBits == gradient_tag_bits(kWeightBits, kUserTagBits), "gradient.cmake's tag width differs from the ring's");
 static_assert(kTagBits <= 64, "the test packs a tag into 64 bits");
 // Interpolation ring: a sample 4 cycles after its input step (docs/rtl-interp.md).
 constexpr int kInterpLatency = 4;
@@ -150,29 +149,17 @@ uint32_t user_tag(int fi, int k) { return static_cast<uint32_t>(k + 61 * fi) & (
 // The gradient ring's tag for input slice k (k = K: the zero slice, whose
 // slice control is junk: the ring must not use it).
 uint64_t slice_tag(const Frame& f, int fi, int k, Random& rng) {
-  uint64_t t = 0;
-  int pos = 0;
-  auto put = [&](uint64_t v, int w) {
-    t |= (v & ((uint64_t{1} << w) - 1)) << pos;
-    pos += w;
-  };
-  if (k < f.K) {
-    const g::SliceControl c = g::slice_control(f.regs, k);
-    for (const g::Realign& r : {c.behind_x, c.behind_y, c.ahead_x, c.ahead_y}) {
-      EXPECT_TRUE(r.base == 0 || r.base == -1);
-      EXPECT_LT(r.weight, 1u << kWeightBits);
-      put(r.weight, kWeightBits);
-      put(r.base < 0 ? 1 : 0, 1);
-    }
-    put(static_cast<uint64_t>(f.S), kSupersamplingBits);
-    put(0, 1);
-  } else {
-    put(rng.bits(4 * (kWeightBits + 1)), 4 * (kWeightBits + 1));
-    put(rng.bits(kSupersamplingBits), kSupersamplingBits);
-    put(1, 1);  // ZeroSlice
+  if (k == f.K) {
+    const uint64_t realign = rng.bits(4 * (kWeightBits + 1));
+    const uint64_t supersampling = rng.bits(kSupersamplingBits);
+    return gradient_tag(nullptr, realign, supersampling, user_tag(fi, k), kWeightBits, kUserTagBits);
   }
-  put(user_tag(fi, k), kUserTagBits);
-  return t;
+  const g::SliceControl c = g::slice_control(f.regs, k);
+  for (const g::Realign& r : {c.behind_x, c.behind_y, c.ahead_x, c.ahead_y}) {
+    EXPECT_TRUE(r.base == 0 || r.base == -1);
+    EXPECT_LT(r.weight, 1u << kWeightBits);
+  }
+  return gradient_tag(&c, 0, static_cast<uint64_t>(f.S), user_tag(fi, k), kWeightBits, kUserTagBits);
 }
 
 // ===========================================================================
@@ -395,15 +382,7 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
   auto fail = [&](uint64_t cycle, int pipe, const Expect* e, const std::string& what, const std::string& detail) {
     if (!r.ok) return;
     r.ok = false;
-    std::ostringstream o;
-    o << "first mismatch at cycle " << cycle << ", pipeline " << pipe << ": " << what;
-    if (e) {
-      const Frame& f = *frames[e->frame];
-      o << "\n  frame " << e->frame << " (" << f.name << ", dim " << f.nx << "x" << f.ny << "x" << f.nz
-        << "), gradient of x=" << e->j * p + pipe << " y=" << e->y << " slice k=" << e->k;
-    }
-    if (!detail.empty()) o << "\n  " << detail;
-    r.report = o.str();
+    r.report = mismatch_report(cycle, pipe, p, frames, e, "gradient of", what, detail);
   };
   size_t ii = 0, ei = 0;
   for (uint64_t cycle = 0; cycle < s.end; ++cycle) {
@@ -538,13 +517,8 @@ template <class G, class I>
 void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
                 uint64_t salt, uint64_t* gradients_checked = nullptr) {
   std::string what;
-  for (const Frame* f : frames) {
-    what += (what.empty() ? "" : " + ") + f->name;
-    const int B = (f->nx + rp.p - 1) / rp.p;
-    ASSERT_LE(B, rp.beam_depth()) << f->name << ": the beam does not fit the ring's beam delay";
-    ASSERT_LE(B * f->ny, rp.slice_depth()) << f->name << ": the slice does not fit the ring's slice delay";
-    ASSERT_LE(f->S, (1 << kSupersamplingBits) - 1);
-  }
+  ASSERT_TRUE(frames_fit(rp, frames, what));
+  for (const Frame* f : frames) ASSERT_LE(f->S, (1 << kSupersamplingBits) - 1) << f->name;
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.chain ? ", chain" : ", direct") +
                (opt.stall > 0 ? ", stalls" : ", no stalls") + (opt.junk ? ", junk" : "") + ": " + what);
   Random rng(salt);

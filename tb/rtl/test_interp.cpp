@@ -311,15 +311,7 @@ RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const S
   auto fail = [&](uint64_t cycle, int pipe, const Expect* e, const std::string& what, const std::string& detail) {
     if (!r.ok) return;
     r.ok = false;
-    std::ostringstream o;
-    o << "first mismatch at cycle " << cycle << ", pipeline " << pipe << ": " << what;
-    if (e) {
-      const Frame& f = *frames[e->frame];
-      o << "\n  frame " << e->frame << " (" << f.name << ", dim " << f.nx << "x" << f.ny << "x" << f.nz
-        << "), sample x=" << e->j * p + pipe << " y=" << e->y << " slice k=" << e->k;
-    }
-    o << "\n  " << detail;
-    r.report = o.str();
+    r.report = mismatch_report(cycle, pipe, p, frames, e, "sample of", what, detail);
   };
   size_t ei = 0;
   const uint64_t end = s.beats.size() + 2 * kLatency;
@@ -391,12 +383,7 @@ template <class M>
 void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
                 uint64_t salt, uint64_t* samples_checked = nullptr) {
   std::string what;
-  for (const Frame* f : frames) {
-    what += (what.empty() ? "" : " + ") + f->name;
-    const int B = (f->nx + rp.p - 1) / rp.p;
-    ASSERT_LE(B, rp.beam_depth()) << f->name << ": the beam does not fit the ring's beam delay";
-    ASSERT_LE(B * f->ny, rp.slice_depth()) << f->name << ": the slice does not fit the ring's slice store";
-  }
+  ASSERT_TRUE(frames_fit(rp, frames, what));
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.stall > 0 ? ", stalls" : ", no stalls") + ": " + what);
   Random rng(salt);
   const Stream s = make_stream(frames, rp.p, opt, rng);

@@ -37,6 +37,7 @@
 #include "golden/pipeline.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "systemc/rtl/unit_registers.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -250,23 +251,9 @@ class ClassifyBench : public Bench<Vcube4_shade_classify, ClassIn, ClassOut> {
     drain();
     table = cls;
     gmlut = gm;
-    for (size_t i = 0; i < cls.size(); ++i) {
-      const g::ClassEntry& e = cls[i];
-      m->class_we_i = 1;
-      put(m->class_waddr_i, static_cast<int64_t>(i), p.voxel_bits);
-      put(m->class_wdata_i,
-          ((((int64_t{e.r} << p.color_bits | e.g) << p.color_bits) | e.b) << p.alpha_bits) | e.a,
-          3 * p.color_bits + p.alpha_bits);
-      idle();
-    }
-    m->class_we_i = 0;
-    for (size_t i = 0; i < gm.size(); ++i) {
-      m->gmlut_we_i = 1;
-      put(m->gmlut_waddr_i, static_cast<int64_t>(i), p.magnitude_bits);
-      put(m->gmlut_wdata_i, gm[i], p.gmlut_bits);
-      idle();
-    }
-    m->gmlut_we_i = 0;
+    auto tick = [this] { idle(); };
+    rtl::load_class_table(*m, p, cls, tick);
+    rtl::load_gm_lut(*m, p, gm, tick);
   }
   void modes(bool magnitude, bool gm_opacity) {
     drain();
@@ -926,64 +913,16 @@ class ShaderBench : public Bench<M, ShaderIn, ShadedOut> {
   void program(const g::Registers& regs) {
     this->drain();
     M& m = *this->m;
-    if (!same_entries(r.classification, regs.classification)) {
-      for (size_t i = 0; i < regs.classification.size(); ++i) {
-        const g::ClassEntry& e = regs.classification[i];
-        m.class_we_i = 1;
-        put(m.class_waddr_i, static_cast<int64_t>(i), p.voxel_bits);
-        put(m.class_wdata_i, ((((int64_t{e.r} << p.color_bits | e.g) << p.color_bits) | e.b) << p.alpha_bits) | e.a,
-            3 * p.color_bits + p.alpha_bits);
-        this->idle();
-      }
-      m.class_we_i = 0;
-    }
-    if (r.gm_lut != regs.gm_lut) {
-      for (size_t i = 0; i < regs.gm_lut.size(); ++i) {
-        m.gmlut_we_i = 1;
-        put(m.gmlut_waddr_i, static_cast<int64_t>(i), p.magnitude_bits);
-        put(m.gmlut_wdata_i, regs.gm_lut[i], p.gmlut_bits);
-        this->idle();
-      }
-      m.gmlut_we_i = 0;
-    }
-    const int abits = clog2(6 * p.map_face_res * p.map_face_res);
-    if (r.diffuse_map != regs.diffuse_map) {
-      for (size_t i = 0; i < regs.diffuse_map.size(); ++i) {
-        m.dmap_we_i = 1;
-        put(m.dmap_waddr_i, static_cast<int64_t>(i), abits);
-        put(m.dmap_wdata_i, regs.diffuse_map[i], p.map_bits);
-        this->idle();
-      }
-      m.dmap_we_i = 0;
-    }
-    if (r.specular_map != regs.specular_map) {
-      for (size_t i = 0; i < regs.specular_map.size(); ++i) {
-        m.smap_we_i = 1;
-        put(m.smap_waddr_i, static_cast<int64_t>(i), abits);
-        put(m.smap_wdata_i, regs.specular_map[i], p.map_bits);
-        this->idle();
-      }
-      m.smap_we_i = 0;
-    }
+    auto tick = [this] { this->idle(); };
+    if (!same_entries(r.classification, regs.classification)) rtl::load_class_table(m, p, regs.classification, tick);
+    if (r.gm_lut != regs.gm_lut) rtl::load_gm_lut(m, p, regs.gm_lut, tick);
+    if (r.diffuse_map != regs.diffuse_map) rtl::load_map(m, p, rtl::Map::Diffuse, regs.diffuse_map, tick);
+    if (r.specular_map != regs.specular_map) rtl::load_map(m, p, rtl::Map::Specular, regs.specular_map, tick);
     r = regs;
     r.crop_enabled = false;
     r.cut_enabled = false;
+    rtl::drive_shade_registers(m, regs);
     if (!has_shading_) r.shading = false;
-    m.magnitude_i = r.magnitude;
-    m.shading_i = regs.shading;
-    m.specular_i = r.specular;
-    m.gm_opacity_i = r.gm_opacity;
-    m.gm_diffuse_i = r.gm_diffuse;
-    m.gm_specular_i = r.gm_specular;
-    put(m.ke_i, r.coefs.ke, p.coef_bits);
-    put(m.kd_i, r.coefs.kd, p.coef_bits);
-    put(m.ks_i, r.coefs.ks, p.coef_bits);
-    put(m.spec_red_i, r.coefs.specular[0], p.alpha_bits);
-    put(m.spec_green_i, r.coefs.specular[1], p.alpha_bits);
-    put(m.spec_blue_i, r.coefs.specular[2], p.alpha_bits);
-    put(m.eye_x_i, r.eye[0], p.eye_bits);
-    put(m.eye_y_i, r.eye[1], p.eye_bits);
-    put(m.eye_z_i, r.eye[2], p.eye_bits);
     modes = (r.gradient ? 1u : 0u) | (r.magnitude ? 2u : 0u) | (r.shading ? 4u : 0u) | (r.specular ? 8u : 0u) |
             (r.gm_opacity ? 16u : 0u) | (r.gm_diffuse ? 32u : 0u) | (r.gm_specular ? 64u : 0u);
   }

@@ -42,6 +42,18 @@ inline std::string scene_json(const Case& c) {
   return s.str();
 }
 
+// A case as the host programs it.
+struct Programmed {
+  golden::Volume vol;
+  golden::Registers regs;
+};
+inline Programmed program(const Case& c) {
+  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
+  Programmed f{golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR), {}};
+  f.regs = golden::program_host(scene, f.vol).regs;
+  return f;
+}
+
 // The RTL's random-reset seeds a system test runs with: CUBE4_SYSTEM_SEED_COUNT
 // of them (2 in the default suite, more in the slow one), from CUBE4_SEED
 // (else 1) on, so that an X-dependence shows as a difference between runs.
@@ -75,9 +87,7 @@ inline void run(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bo
 // One run: checks the base plane and the cycle count.
 inline void run_seeded(const Case& c, int p, std::array<Level, sysc::kUnits> levels, bool cycle_level,
                        sysc::Kernel kernel, bool simulate_unneeded, uint32_t seed) {
-  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
-  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
-  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  const auto [vol, regs] = program(c);
   sysc::SystemConfig cfg;
   cfg.p = p;
   cfg.levels = levels;

@@ -3,11 +3,13 @@
 // the frame's cycles at RTL equal to the cycle model's count. Each test
 // renders one frame: ctest runs every test in a process of its own, and
 // SystemC elaborates once per process.
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "systemc/core/machine.hpp"
+#include "systemc/host/register_map.hpp"
 #include "tb/tests/system_support.hpp"
 
 namespace {
@@ -180,9 +182,7 @@ namespace {
 TEST(System, TraceWritesTheWindowPerUnit) {
   const std::string dir = ::testing::TempDir() + "cube4_trace_test";
   std::filesystem::create_directories(dir);
-  const golden::Scene scene = golden::parse_scene(scene_json(Case{}), "test_system.json");
-  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
-  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  const auto [vol, regs] = program(Case{});
   sysc::SystemConfig cfg;
   cfg.p = 4;
   cfg.trace.file = dir + "/t.fst";
@@ -221,9 +221,7 @@ TEST(System, ThroughTheHostInterface) {
   Case c;
   c.effects = R"("shading": true, "cropping": {"x": [2, 8], "y": [1, 9], "combine": "cross"},)"
               R"( "gradient_modulation": {"opacity": true})";
-  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
-  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
-  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  const auto [vol, regs] = program(c);
   sysc::SystemConfig cfg;
   cfg.p = 5;
   cfg.check = true;
@@ -239,14 +237,67 @@ TEST(System, ThroughTheHostInterface) {
 }
 }  // namespace
 
+// Every register narrower than its bus word, at each end of its hardware
+// field, written through the host interface: the RTL system's base plane is
+// golden's (the register file refuses what the RTL would truncate). One
+// frame per register and end, the others as the scene programs them, plus
+// the falloff and its reciprocal at their maxima together.
+namespace {
+TEST(System, RegistersAtTheirLimitsThroughTheHostInterface) {
+  if (!sysc::rtl_available(4)) GTEST_SKIP() << "no RTL build for p = 4";
+  Case c;
+  c.effects = R"("shading": true, "lights": [{"direction": [0.3, 0.5, 1], "intensity": 0.8}],)"
+              R"( "material": {"ks": 0.6, "exponent": 12}, "gradient_modulation": {"opacity": true},)"
+              R"( "cropping": {"x": [2, 8], "y": [1, 9], "combine": "cross"},)"
+              R"( "cut_plane": {"normal": [1, 0.5, 1], "dmin": 5, "dmax": 9, "falloff": 2.5})";
+  const Programmed programmed = program(c);
+  const golden::Volume& vol = programmed.vol;
+  const golden::Registers& base = programmed.regs;
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.check = true;
+  auto frame = [&](const golden::Registers& r, const std::string& what) {
+    SCOPED_TRACE(what);
+    const sysc::SystemResult res = sysc::render_through_host(r, vol, cfg, {});
+    EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
+    const golden::BasePlane want = golden::render_fixed(vol, r);
+    EXPECT_EQ(res.plane.rgba, want.rgba);
+    return std::count_if(want.rgba.begin(), want.rgba.end(), [](uint16_t v) { return v != 0; });
+  };
+  ASSERT_GT(frame(base, "the scene"), 0) << "the scene renders nothing";
+  namespace rm = sysc::regmap;
+  const sysc::HardwareParams hw{base.p};
+  int frames = 0;
+  auto with = [&](golden::Registers r, const rm::Register& reg, int64_t v) {
+    rm::RegisterValues values{std::move(r), vol.dim};
+    reg.set(values, static_cast<uint64_t>(v));
+    return values.regs;
+  };
+  for (const rm::Register& reg : rm::kRegisters) {
+    const std::optional<rm::Limits> l = rm::limits(reg, hw);
+    // Narrow fields only; DIM and SUPERSAMPLING shape the frame, not a datapath field.
+    if (!reg.set || reg.block == rm::Block::Volume || reg.rule != rm::Rule::Width || l->lo == INT64_MIN ||
+        (reg.words == 1 && reg.width.of(hw.precision) >= 32))
+      continue;
+    for (const int64_t v : {l->lo, l->hi}) {
+      frame(with(base, reg, v), std::string(reg.name) + " = " + std::to_string(v));
+      ++frames;
+    }
+  }
+  EXPECT_EQ(frames, 2 * 25) << "FLIP, 7 cropping, 8 cut-plane and 9 shading registers";
+  const golden::Registers falloff = with(base, *rm::find_register("CUT_FALLOFF"),
+                                         rm::limits(*rm::find_register("CUT_FALLOFF"), hw)->hi);
+  frame(with(falloff, *rm::find_register("CUT_INV_FALLOFF"), rm::limits(*rm::find_register("CUT_INV_FALLOFF"), hw)->hi),
+        "CUT_FALLOFF and CUT_INV_FALLOFF at their maxima");
+}
+}  // namespace
+
 // Frames streamed back to back: the first frame's last pixel comes at the
 // cycle model's latency, every next one exactly `stream` cycles later (the
 // steady-state interval), and the pixel memory holds the frame.
 namespace {
 void back_to_back(std::array<Level, sysc::kUnits> levels, bool cycle_level, const Case& c = Case{}) {
-  const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
-  const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR);
-  const golden::Registers regs = golden::program_host(scene, vol).regs;
+  const auto [vol, regs] = program(c);
   sysc::SystemConfig cfg;
   cfg.p = 4;
   cfg.levels = levels;
