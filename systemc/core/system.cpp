@@ -323,10 +323,3 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
 
 }  // namespace cube4::sysc
 
-// libsystemc.so's main() calls sc_main(); the programs that link the system
-// model have a main() of their own, which the linker prefers, and start the
-// kernel from run_frame(). The library still needs the symbol to link.
-int sc_main(int, char**) {
-  std::fprintf(stderr, "cube4: sc_main is not an entry point of this program\n");
-  return 1;
-}
