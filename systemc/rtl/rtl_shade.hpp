@@ -80,7 +80,7 @@ class RtlShade final : public ShadeIf {
         we = 1;
         addr = static_cast<uint32_t>(i);
         put_bits(data, 0, 64, entry(i));
-        u.edge();
+        u.setup_edge();
       }
       we = 0;
     };
