@@ -18,7 +18,8 @@ nlohmann::json describe_volume(const golden::Volume& v);
 nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& h);
 nlohmann::json describe_registers(const golden::Registers& r);
 
-// Writes `j` to `path` whole (temporary file, then rename).
-void write_json(const std::string& path, const nlohmann::json& j);
+// Writes `j` to `path` (tb/output_files.hpp gives a temporary), checking
+// every write and the close; throws InputError naming `shown_as`.
+void write_json(const std::string& path, const nlohmann::json& j, const std::string& shown_as = "");
 
 }  // namespace cube4::tb
