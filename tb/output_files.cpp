@@ -50,6 +50,24 @@ void forget(const std::string& name) {
     if (name == g_temps[i]) g_temps[i][0] = 0;
 }
 
+// Holds SIGINT, SIGTERM and SIGHUP back while a temporary is created and
+// registered: a signal between the two would leave it behind.
+class SignalsHeld {
+ public:
+  SignalsHeld() {
+    sigset_t s;
+    sigemptyset(&s);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&s, sig);
+    ::sigprocmask(SIG_BLOCK, &s, &old_);
+  }
+  ~SignalsHeld() { ::sigprocmask(SIG_SETMASK, &old_, nullptr); }
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t old_;
+};
+
 mode_t file_mode() {
   // mkstemp makes files 0600; outputs get what the user's umask gives.
   const mode_t mask = ::umask(0);
@@ -122,6 +140,7 @@ std::string OutputSet::add(const std::string& path, const std::string& what) {
   const std::string dest = fs::is_symlink(path, ec) ? fs::weakly_canonical(path, ec).string() : path;
   const std::string ext = fs::path(dest).extension().string();
   std::string temp = (fs::path(folder_of(dest)) / ("." + fs::path(dest).stem().string() + ".tmp-XXXXXX" + ext)).string();
+  const SignalsHeld held;
   const int fd = ::mkstemps(temp.data(), static_cast<int>(ext.size()));
   if (fd < 0)
     throw InputError(what + " '" + path + "': cannot create a file in '" + folder_of(dest) + "' (" +
@@ -138,6 +157,7 @@ std::string OutputSet::add_trace(const std::string& path, const std::vector<std:
   for (const std::string& s : suffixes) check_destination(trace_file_for(path, s), "--trace");
   const std::string dir = folder_of(path);
   std::string temp = (fs::path(dir) / ("." + fs::path(path).stem().string() + ".tmp-XXXXXX")).string();
+  const SignalsHeld held;
   if (!::mkdtemp(temp.data()))
     throw InputError("--trace '" + path + "': cannot create a folder in '" + dir + "' (" + std::strerror(errno) + ")");
   // The signal handler removes the files before the folder (it walks back).

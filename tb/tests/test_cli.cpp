@@ -11,6 +11,9 @@
 #include <sys/wait.h>
 
 #include "tb/image_io.hpp"
+#if CUBE4_TEST_RTL
+#include <gtkwave/fstapi.h>  // the reader in Verilator's runtime
+#endif
 #include "tb/tests/cli_support.hpp"
 
 namespace fs = std::filesystem;
@@ -137,4 +140,35 @@ TEST_F(Cli, SystemModelsReportCyclesAndMatchGolden) {
     EXPECT_EQ(s["units"]["composite"], model == "tlm" ? "tlm" : "rtl") << model;
     if (model != "tlm") EXPECT_EQ(s["check"].get<std::string>().rfind("passed", 0), 0u) << model;
   }
+}
+
+// --trace: one FST per RTL unit, quietly, each holding the frame's cycles
+// under the system's numbers. Before, reset and the shading unit's table
+// load were dumped, the cycle counter restarted, Verilator printed a
+// "previous dump" warning on stdout for each backward time, and the
+// shading unit's trace held the table load instead of the frame.
+TEST_F(Cli, TracesHoldTheFrameQuietly) {
+  if (!CUBE4_TEST_RTL) GTEST_SKIP() << "built without RTL";
+#if CUBE4_TEST_RTL
+  const std::string scene = write("s.json", kSphere);
+  const CliResult r = run("render " + scene + " --model rtl --pipes 4 -q -o " + path("o.png") + " --report " +
+                          path("r.json") + " --trace " + path("t.fst"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  nlohmann::json j;
+  std::ifstream(path("r.json")) >> j;
+  const uint64_t cycles = j["system"]["simulated_cycles"];
+  for (const char* unit : {"addr", "interp", "gradient", "shade0", "composite"}) {
+    const std::string f = path(std::string("t.") + unit + ".fst");
+    void* fst = fstReaderOpen(f.c_str());
+    ASSERT_NE(fst, nullptr) << f;
+    // Dump times are 2 * cycle (+1 for the rising edge), cycles from 1; the
+    // simulation stops on the clock after the one that wrote the last pixel.
+    EXPECT_GE(fstReaderGetStartTime(fst), 2u) << unit;
+    EXPECT_LE(fstReaderGetEndTime(fst), 2 * (cycles + 1) + 1) << unit;
+    EXPECT_GE(fstReaderGetEndTime(fst), cycles) << unit << ": the trace ends before the frame's second half";
+    fstReaderClose(fst);
+  }
+#endif
 }
