@@ -27,6 +27,7 @@ namespace {
 constexpr size_t kHeaderBytes = 62;
 constexpr size_t kMapLenOffset = 50;     // short map_len[3]
 constexpr size_t kMapLengthOffset = 58;  // int map_length
+constexpr size_t kTrailerBytes = size_t{1} << 20;
 
 struct GzCloser {
   void operator()(gzFile_s* f) const { gzclose(f); }
@@ -60,12 +61,15 @@ GzPtr open_den(const std::string& path) {
 // Reads up to `want` bytes; fewer only at the end of the data. Only what the
 // header declares is ever read, so a small file that inflates to gigabytes
 // costs no more than its header says.
+// The buffer grows as data arrives, so a short file declaring a large
+// volume costs what the file holds, not what it declares.
 std::vector<unsigned char> read_up_to(gzFile_s* f, size_t want, const std::string& path) {
-  std::vector<unsigned char> buf(want);
+  std::vector<unsigned char> buf;
   size_t got = 0;
   constexpr size_t kChunk = size_t{1} << 22;  // a few large calls keep the 1.4 MB head to milliseconds
   while (got < want) {
     const unsigned n = static_cast<unsigned>(std::min(kChunk, want - got));
+    buf.resize(got + n);
     const int r = gzread(f, buf.data() + got, n);
     if (r < 0)
       throw InputError(path + ": cannot read density file, truncated or corrupt (" + zlib_message(f, path) + ")");
@@ -144,8 +148,11 @@ Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits) 
   const size_t expected = static_cast<size_t>(h.map_length);
   check_memory(path, "the volume", volume_load_bytes(static_cast<double>(expected), 1),
                dims_text(h.dim[0], h.dim[1], h.dim[2]) + " voxels");
-  // Like VolPack's read_den, bytes after the map are ignored (and not read).
   const std::vector<unsigned char> bytes = read_up_to(f.get(), expected, path);
+  // Like VolPack's read_den, bytes after the map are ignored; a little of
+  // them is read so that a gzip stream that ends there has its CRC checked
+  // (damage inside the data can inflate cleanly), without inflating a bomb.
+  if (bytes.size() == expected) read_up_to(f.get(), kTrailerBytes, path);
   if (bytes.size() < expected)
     throw InputError(path + ": truncated data: expected " + std::to_string(expected) +
                      " bytes after the " + std::to_string(kHeaderBytes) + "-byte header, found " +

@@ -73,16 +73,23 @@ ZnzPtr open_znz(const std::string& path, const char* what) {
 }
 
 // Reads exactly n bytes or returns how many there were.
-size_t read_bytes(znzFile fp, unsigned char* out, size_t n) {
+// Reads up to n bytes. The buffer grows as data arrives, so a short file
+// declaring a large volume costs what the file holds, not what it declares.
+std::vector<unsigned char> read_bytes(znzFile fp, size_t n, const std::string& path) {
+  std::vector<unsigned char> out;
   size_t got = 0;
-  constexpr size_t kChunk = size_t{1} << 26;
+  constexpr size_t kChunk = size_t{1} << 22;
   while (got < n) {
     const size_t want = std::min(kChunk, n - got);
-    const size_t r = znzread(out + got, 1, want, fp);
+    out.resize(got + want);
+    // znzread passes on gzread's -1 for a corrupt stream, as a size_t.
+    const size_t r = znzread(out.data() + got, 1, want, fp);
+    if (r > want) throw InputError(path + ": corrupt compressed NIfTI file (zlib could not inflate it)");
     got += r;
     if (r < want) break;
   }
-  return got;
+  out.resize(got);
+  return out;
 }
 
 [[noreturn]] void bad_header(const std::string& path, const std::string& problem) {
@@ -103,9 +110,12 @@ struct Header {
 
 Header read_header(znzFile fp, const std::string& path) {
   Header r{};
-  const size_t got = read_bytes(fp, reinterpret_cast<unsigned char*>(&r.h), kHeaderBytes);
+  const std::vector<unsigned char> bytes = read_bytes(fp, kHeaderBytes, path);
+  const size_t got = bytes.size();
   if (got < static_cast<size_t>(kHeaderBytes))
     bad_header(path, "truncated (" + std::to_string(got) + " of " + std::to_string(kHeaderBytes) + " bytes)");
+  static_assert(sizeof(nifti_1_header) == kHeaderBytes);
+  std::memcpy(&r.h, bytes.data(), kHeaderBytes);
   nifti_1_header& h = r.h;
   // sizeof_hdr is 348 in the writer's byte order: it tells the order.
   if (h.sizeof_hdr != kHeaderBytes) {
@@ -200,12 +210,15 @@ Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits
   ZnzPtr data_fp = hd.single_file ? std::move(fp) : open_znz(iname, "NIfTI data file");
   const size_t ntot = static_cast<size_t>(voxels) * static_cast<size_t>(t.bytes);
   const long offset = static_cast<long>(h.vox_offset);
-  std::vector<unsigned char> data(ntot);
-  size_t got = 0;
-  if (znzseek(data_fp.get(), offset, SEEK_SET) >= 0) got = read_bytes(data_fp.get(), data.data(), ntot);
+  std::vector<unsigned char> data;
+  if (znzseek(data_fp.get(), offset, SEEK_SET) >= 0) data = read_bytes(data_fp.get(), ntot, iname);
+  const size_t got = data.size();
   if (got != ntot)
     throw InputError(iname + ": truncated or corrupt NIfTI data: expected " + std::to_string(ntot) +
                      " bytes at offset " + std::to_string(offset) + ", found " + std::to_string(got));
+  // As for .den.gz: reading a little past the data has zlib check the CRC
+  // of a stream that ends there.
+  read_bytes(data_fp.get(), size_t{1} << 20, iname);
   if (hd.swapped) swap_samples(data.data(), static_cast<size_t>(voxels), static_cast<size_t>(t.bytes));
   Volume v;
   v.dim = dim;

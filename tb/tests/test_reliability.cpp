@@ -415,4 +415,29 @@ TEST_F(Reliability, NiftiHeadersBreakingTheStandardAreRefused) {
   EXPECT_NE(ok.out.find("\"dim\": [\n      4,\n      4,\n      4"), std::string::npos) << ok.out;
 }
 
+// A corrupt deflate stream (found by fuzz_nifti: znzread hands on gzread's
+// -1 as a size_t) is exit 2 for both compressed formats, wherever the
+// damage lies.
+TEST_F(Reliability, CorruptGzipStreamsAreExitTwo) {
+  const Bytes nii = gzip(nifti_file(nifti_header(16, 16, 16), 4096));
+  Bytes den = den_header(16, 16, 16);
+  den.resize(den.size() + 4096, 7);
+  const Bytes dgz = gzip(den);
+  // Just after the gzip header, in the deflate data, in the CRC trailer.
+  for (double where : {0.0, 0.33, 0.5, 1.0}) {
+    auto damaged = [where](Bytes b) {
+      const size_t at = 10 + static_cast<size_t>(where * static_cast<double>(b.size() - 10 - 4));
+      for (size_t i = 0; i < 4; ++i) b[at + i] ^= 0x5a;
+      return b;
+    };
+    write_bytes("bad.nii.gz", damaged(nii));
+    write_bytes("bad.den.gz", damaged(dgz));
+    SCOPED_TRACE(where);
+    const CliResult n = run("info " + write("n.json", R"({"volume": {"file": "bad.nii.gz"}})"));
+    expect_one_error_line(n, "bad.nii.gz");
+    const CliResult d = run("info " + write("d.json", R"({"volume": {"file": "bad.den.gz"}})"));
+    expect_one_error_line(d, "bad.den.gz");
+  }
+}
+
 }  // namespace
