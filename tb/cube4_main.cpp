@@ -167,7 +167,10 @@ int run_render(const RenderArgs& a) {
   const std::string baseplane_temp = a.baseplane.empty() ? "" : outputs.add(a.baseplane, "--baseplane");
   const std::string report_temp = a.report.empty() ? "" : outputs.add(a.report, "--report");
   const std::string trace_temp = a.trace.empty() ? "" : outputs.add_trace(a.trace, kTraceUnits);
+  if (!a.scene.empty()) outputs.check_not_output(a.scene, "the scene");
   Loaded l = load(a.scene);
+  if (l.scene.volume.kind == "den" || l.scene.volume.kind == "raw" || l.scene.volume.kind == "nifti")
+    outputs.check_not_output(l.volume.source, "the volume");
   check_render_memory(l, a.model);
   sysc::SystemConfig cfg;
   std::optional<sysc::SystemResult> sys;

@@ -132,6 +132,13 @@ void OutputSet::check_destination(const std::string& path, const std::string& wh
   dests_.push_back(canonical);
 }
 
+void OutputSet::check_not_output(const std::string& path, const std::string& what) const {
+  std::error_code ec;
+  const std::string canonical = fs::weakly_canonical(path, ec).string();
+  for (const std::string& d : dests_)
+    if (d == canonical) throw InputError(what + " '" + path + "' is also an output of this run; it would be replaced");
+}
+
 std::string OutputSet::add(const std::string& path, const std::string& what) {
   check_destination(path, what);
   // A symbolic link is followed: the file it names is replaced, as writing

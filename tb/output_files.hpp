@@ -27,6 +27,10 @@ class OutputSet {
   // the UNIT names that may appear.
   std::string add_trace(const std::string& path, const std::vector<std::string>& suffixes);
 
+  // Throws InputError if `path` (an input of the run, `what`: "the scene")
+  // is also one of its outputs: the run would replace what it reads.
+  void check_not_output(const std::string& path, const std::string& what) const;
+
   // Each written file is flushed to disk and must be non-empty; a trace
   // folder must hold at least one trace. Then every temporary is renamed.
   // Throws InputError naming the output that failed (nothing renamed then).

@@ -229,6 +229,18 @@ TEST_F(Reliability, OutputPathsAreCheckedBeforeAnyWork) {
   EXPECT_FALSE(fs::exists("/dev/null.png"));
 }
 
+// An output naming an input of the run would replace what it reads.
+TEST_F(Reliability, OutputsNamingAnInputAreRefused) {
+  std::ofstream(path("v.raw"), std::ios::binary) << std::string(8, '\x10');
+  const std::string scene = write("s.json", R"({"volume": {"file": "v.raw", "dim": [2, 2, 2]}})");
+  const auto before = snapshot(dir);
+  const CliResult r = run("render " + scene + " -q -o " + path("o.png") + " --report " + scene);
+  expect_one_error_line(r, "the scene");
+  const CliResult v = run("render " + scene + " -q -o " + path("o.png") + " --report " + path("./v.raw"));
+  expect_one_error_line(v, "the volume");
+  EXPECT_EQ(snapshot(dir), before);
+}
+
 TEST_F(Reliability, BadSceneAfterGoodOutputsTouchesNothing) {
   std::ofstream(path("out.png")) << "old";
   write("bad.json", R"({"volume": {"synthetic": "sphere"}, "blend": "sum"})");
