@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "golden/errors.hpp"
 
 #include "golden/fixed.hpp"
 #include "golden/shading_model.hpp"
@@ -14,8 +19,38 @@ int64_t quantise_unit(double v, int bits) {
   return sat_unsigned(std::llround(std::clamp(v, 0.0, 1.0) * max_unsigned(bits)), bits);
 }
 
+// Reflectance-map entries saturate at the map's width by design (bright
+// lights clip); clamping before rounding keeps that true for any intensity,
+// where llround of a value beyond int64 would be undefined.
 int64_t quantise_fixed(double v, int frac_bits, int bits) {
-  return sat_unsigned(std::llround(v * static_cast<double>(int64_t{1} << frac_bits)), bits);
+  const double scaled = v * static_cast<double>(int64_t{1} << frac_bits);
+  return sat_unsigned(std::llround(std::clamp(scaled, 0.0, static_cast<double>(max_unsigned(bits)))), bits);
+}
+
+std::string fmt(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+// A scene value becomes round(value * scale) in a register that holds
+// lo..hi: refused, naming the key and the value, when it does not fit,
+// rather than wrapped or saturated into a different image.
+int64_t to_register(const Scene& s, const std::string& key, double value, double scale, int64_t lo, int64_t hi,
+                    const std::string& reg) {
+  const double x = std::nearbyint(value * scale);
+  if (!(x >= static_cast<double>(lo) && x <= static_cast<double>(hi)))
+    throw InputError((s.file.empty() ? std::string("scene") : s.file) + ": \"" + key + "\" = " + fmt(value) +
+                     " does not fit the " + reg + " register (" + fmt(static_cast<double>(lo) / scale) + ".." +
+                     fmt(static_cast<double>(hi) / scale) + ")");
+  return static_cast<int64_t>(x);
+}
+
+uint32_t coef_register(const Scene& s, const char* key, double value, const char* reg) {
+  const Precision& p = s.precision;
+  return static_cast<uint32_t>(to_register(s, std::string("material.") + key, value,
+                                           std::ldexp(1.0, p.coef_frac_bits), 0, max_unsigned(p.coef_bits),
+                                           std::string(reg) + " (precision.coef_bits, coef_frac_bits)"));
 }
 
 }  // namespace
@@ -108,18 +143,22 @@ CropRegs permute_cropping(const Cropping& c, const ViewFactorisation& f) {
 }
 
 PermutedCutPlane permute_cut_plane_real(const CutPlane& c, const ViewFactorisation& f) {
-  const double len = std::sqrt(c.normal[0] * c.normal[0] + c.normal[1] * c.normal[1] + c.normal[2] * c.normal[2]);
+  // Scaled by the largest component first: the squares of a normal such as
+  // [1e200, 0, 0] or [1e-200, 0, 0] would overflow or vanish.
+  const double m = std::max({std::fabs(c.normal[0]), std::fabs(c.normal[1]), std::fabs(c.normal[2])});
+  const Vec3 n{c.normal[0] / m, c.normal[1] / m, c.normal[2] / m};
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   // n·o = d in object voxels becomes a·p = d - offset in permuted voxels.
   PermutedCutPlane r;
   double offset = 0;
   for (int i = 0; i < 3; ++i) {
-    const double ni = c.normal[f.perm[i]] / len;
+    const double ni = n[f.perm[i]] / len;
     r.a[i] = f.flip[i] ? -ni : ni;
     if (f.flip[i]) offset += ni * (f.pdim[i] - 1);
   }
-  r.dmin = c.dmin / len - offset;
-  r.dmax = c.dmax / len - offset;
-  r.falloff = c.falloff / len;
+  r.dmin = c.dmin / m / len - offset;
+  r.dmax = c.dmax / m / len - offset;
+  r.falloff = c.falloff / m / len;
   r.keep_inside = c.keep_inside;
   return r;
 }
@@ -131,17 +170,34 @@ double PermutedCutPlane::factor(double d) const {
   return keep_inside ? inside_factor : 1 - inside_factor;
 }
 
-CutRegs permute_cut_plane(const CutPlane& c, const ViewFactorisation& f, const Precision& p) {
+CutRegs permute_cut_plane(const Scene& s, const ViewFactorisation& f) {
+  const CutPlane& c = s.cut;
+  const Precision& p = s.precision;
   const PermutedCutPlane real = permute_cut_plane_real(c, f);
   const double scale = std::ldexp(1.0, kCutNormalBits);
   const double dscale = std::ldexp(1.0, kCutNormalBits + p.weight_bits);
+  // The distance registers are 64 bits; one bit is kept spare so that the
+  // hardware's d - dmax and dmin - d cannot overflow.
+  constexpr int64_t kDistance = int64_t{1} << 62;
   CutRegs r;
-  r.a = static_cast<int32_t>(std::lround(real.a[0] * scale));
-  r.b = static_cast<int32_t>(std::lround(real.a[1] * scale));
-  r.c = static_cast<int32_t>(std::lround(real.a[2] * scale));
-  r.dmin = std::llround(real.dmin * dscale);
-  r.dmax = std::llround(real.dmax * dscale);
-  r.falloff = std::llround(real.falloff * dscale);
+  const int64_t one = int64_t{1} << kCutNormalBits;
+  r.a = static_cast<int32_t>(to_register(s, "cut_plane.normal", real.a[0], scale, -one, one, "CUT_A"));
+  r.b = static_cast<int32_t>(to_register(s, "cut_plane.normal", real.a[1], scale, -one, one, "CUT_B"));
+  r.c = static_cast<int32_t>(to_register(s, "cut_plane.normal", real.a[2], scale, -one, one, "CUT_C"));
+  // The message shows the user's value; the range is in permuted voxels,
+  // which differ from the user's by the normal's length and an offset.
+  auto distance = [&](const char* key, double user, double permuted, const char* reg) {
+    const double x = std::nearbyint(permuted * dscale);
+    if (!(x >= static_cast<double>(-kDistance) && x <= static_cast<double>(kDistance)))
+      throw InputError((s.file.empty() ? std::string("scene") : s.file) + ": \"" + key + "\" = " + fmt(user) +
+                       " does not fit the " + reg + " register (64-bit signed, 2^" +
+                       std::to_string(kCutNormalBits + p.weight_bits) + " per voxel: about " +
+                       fmt(static_cast<double>(kDistance) / dscale) + " voxels either way)");
+    return static_cast<int64_t>(x);
+  };
+  r.dmin = distance("cut_plane.dmin", c.dmin, real.dmin, "CUT_DMIN");
+  r.dmax = distance("cut_plane.dmax", c.dmax, real.dmax, "CUT_DMAX");
+  r.falloff = distance("cut_plane.falloff", c.falloff, real.falloff, "CUT_FALLOFF");
   r.inv_falloff = r.falloff > 0 ? static_cast<uint64_t>(std::llround(
                                       std::ldexp(static_cast<double>(max_unsigned(p.alpha_bits)), kCutInvShift) /
                                       static_cast<double>(r.falloff)))
@@ -163,10 +219,11 @@ HostProgram program_host(const Scene& s, const Volume& vol) {
   r.flip = f.flip;
   r.supersampling = s.supersampling;
   const double one = std::ldexp(1.0, p.dda_frac_bits);
-  r.x_start = std::llround(s.view.ray_offset[0] * one);
-  r.y_start = std::llround(s.view.ray_offset[1] * one);
-  r.x_step = std::llround(f.shear_x / s.supersampling * one);
-  r.y_step = std::llround(f.shear_y / s.supersampling * one);
+  constexpr int64_t kDda = std::numeric_limits<int64_t>::max() / 2;  // 64-bit signed, with headroom for the sum
+  r.x_start = to_register(s, "view.ray_offset", s.view.ray_offset[0], one, 0, kDda, "X_START");
+  r.y_start = to_register(s, "view.ray_offset", s.view.ray_offset[1], one, 0, kDda, "Y_START");
+  r.x_step = to_register(s, "view", f.shear_x / s.supersampling, one, -kDda, kDda, "X_STEP");
+  r.y_step = to_register(s, "view", f.shear_y / s.supersampling, one, -kDda, kDda, "Y_STEP");
 
   r.classification = build_classification(s, sample_step_ratio(f, s.supersampling));
   const EffectSet& e = h.effects;
@@ -180,23 +237,24 @@ HostProgram program_host(const Scene& s, const Volume& vol) {
   if (e.magnitude) r.gm_lut = build_gm_lut(s);
   if (e.shading) {
     r.diffuse_map = build_diffuse_map(s, f);
-    r.coefs.ke = static_cast<uint32_t>(quantise_fixed(s.material.ke, p.coef_frac_bits, p.coef_bits));
-    r.coefs.kd = static_cast<uint32_t>(quantise_fixed(s.material.kd, p.coef_frac_bits, p.coef_bits));
+    r.coefs.ke = coef_register(s, "ke", s.material.ke, "KE");
+    r.coefs.kd = coef_register(s, "kd", s.material.kd, "KD");
   }
   if (e.specular) {
     r.specular_map = build_specular_map(s, f);
-    r.coefs.ks = static_cast<uint32_t>(quantise_fixed(s.material.ks, p.coef_frac_bits, p.coef_bits));
+    r.coefs.ks = coef_register(s, "ks", s.material.ks, "KS");
     for (int c = 0; c < 3; ++c)
       r.coefs.specular[c] = static_cast<uint32_t>(quantise_unit(s.material.specular_color[c], p.alpha_bits));
     for (int c = 0; c < 3; ++c)
-      r.eye[c] = static_cast<int32_t>(std::lround(f.eye_perm[c] * max_signed(p.eye_bits)));
+      r.eye[c] = static_cast<int32_t>(to_register(s, "view", f.eye_perm[c], static_cast<double>(max_signed(p.eye_bits)),
+                                                  -max_signed(p.eye_bits), max_signed(p.eye_bits), "EYE"));
   }
   r.blend = s.blend == Blend::Mip ? BlendMode::Mip
             : s.blend == Blend::MinIp ? BlendMode::MinIp : BlendMode::Composite;
   r.crop_enabled = e.cropping;
   if (e.cropping) r.crop = permute_cropping(s.cropping, f);
   r.cut_enabled = e.cut_plane;
-  if (e.cut_plane) r.cut = permute_cut_plane(s.cut, f, p);
+  if (e.cut_plane) r.cut = permute_cut_plane(s, f);
   return h;
 }
 

@@ -34,7 +34,8 @@ struct PermutedCutPlane {
   double factor(double d) const;
 };
 PermutedCutPlane permute_cut_plane_real(const CutPlane& c, const ViewFactorisation& f);
-CutRegs permute_cut_plane(const CutPlane& c, const ViewFactorisation& f, const Precision& p);
+// Throws InputError, naming the scene key, for a distance beyond its register.
+CutRegs permute_cut_plane(const Scene& s, const ViewFactorisation& f);
 
 // Fixed-point scale of cut-plane normals: components are round(n * 2^kCutNormalBits).
 constexpr int kCutNormalBits = 10;

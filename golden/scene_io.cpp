@@ -4,6 +4,7 @@
 #include "golden/scene_io.hpp"
 
 #include <nlohmann/json.hpp>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cctype>
@@ -11,8 +12,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -23,6 +22,7 @@
 #include <vector>
 
 #include "golden/errors.hpp"
+#include "golden/input_file.hpp"
 #include "golden/volume_io.hpp"
 
 namespace cube4::golden {
@@ -40,10 +40,31 @@ std::string fmt(double x) {
   return os.str();
 }
 
-// Values go into one-line messages: long arrays are cut short.
-std::string show(const json& v) {
+// Values go into one-line messages: long values are cut short, and written
+// only as far as shown, so a huge array costs no more than a short one.
+void dump_prefix(const json& v, std::string& out, size_t max) {
+  if (out.size() > max) return;
+  if (v.is_array() || v.is_object()) {
+    out += v.is_array() ? '[' : '{';
+    bool first = true;
+    for (auto it = v.begin(); it != v.end() && out.size() <= max; ++it) {
+      if (!first) out += ',';
+      first = false;
+      if (v.is_object()) out += json(it.key()).dump() + ':';
+      dump_prefix(*it, out, max);
+    }
+    out += v.is_array() ? ']' : '}';
+    return;
+  }
   std::string s = v.dump();
+  if (s.size() > max) s.resize(max + 1);
+  out += s;
+}
+
+std::string show(const json& v) {
   constexpr size_t kMax = 60;
+  std::string s;
+  dump_prefix(v, s, kMax);
   if (s.size() > kMax) s = s.substr(0, kMax - 3) + "...";
   return s;
 }
@@ -157,6 +178,9 @@ class Node {
     const size_t n = v_->size();
     if (n < min || n > max) {
       if (min == max) fail("should have " + std::to_string(min) + " entries, not " + std::to_string(n));
+      if (max == std::numeric_limits<size_t>::max())
+        fail("has " + std::to_string(n) + " entries; at least " + std::to_string(min) + " " +
+             (min == 1 ? "is" : "are") + " needed");
       fail("has " + std::to_string(n) + " entries; " + std::to_string(min) + ".." +
            std::to_string(max) + " are allowed");
     }
@@ -241,21 +265,54 @@ class ObjectReader {
 
 // ---- JSON text ------------------------------------------------------------
 
+// Scenes are a few levels deep; a limit keeps a hostile file (100,000 nested
+// arrays) from costing stack anywhere a value is walked.
+constexpr size_t kMaxDepth = 64;
+// A scene is a few kilobytes; the limit refuses a huge file before reading it.
+constexpr uint64_t kMaxSceneBytes = uint64_t{16} << 20;
+
+// Where the parser is, kept outside the callback (nlohmann copies it) so
+// that an error the parser itself raises can be reported with its key path.
+struct ParsePosition {
+  struct Frame {
+    bool is_array;
+    size_t index;
+    std::string key;
+    std::set<std::string> keys;
+  };
+  std::vector<Frame> frames;
+
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames) {
+      if (f.is_array) p += "[" + std::to_string(f.index) + "]";
+      else p += (p.empty() ? "" : ".") + f.key;
+    }
+    return p;
+  }
+};
+
 // nlohmann keeps the last of two equal keys; a duplicate is almost always a
 // copy-and-paste slip, so it is an error, reported with its key path.
-class DuplicateKeyCheck {
+class SceneShapeCheck {
  public:
-  explicit DuplicateKeyCheck(const std::string& file) : file_(file) {}
+  SceneShapeCheck(const std::string& file, ParsePosition& pos) : file_(&file), pos_(&pos) {}
 
-  bool operator()(int, json::parse_event_t event, json& parsed) {
+  bool operator()(int depth, json::parse_event_t event, json& parsed) {
     using E = json::parse_event_t;
+    auto& frames = pos_->frames;
     switch (event) {
-      case E::object_start: frames_.push_back({false, 0, "", {}}); break;
-      case E::array_start: frames_.push_back({true, 0, "", {}}); break;
+      case E::object_start:
+      case E::array_start:
+        if (static_cast<size_t>(depth) >= kMaxDepth)
+          throw InputError(file_prefix(*file_) + quoted_path(pos_->path()) + " is nested more than " +
+                           std::to_string(kMaxDepth) + " levels deep; scenes need a few");
+        frames.push_back({event == E::array_start, 0, "", {}});
+        break;
       case E::key: on_key(parsed.get<std::string>()); break;
       case E::object_end:
       case E::array_end:
-        frames_.pop_back();
+        frames.pop_back();
         element_done();
         break;
       case E::value: element_done(); break;
@@ -264,38 +321,25 @@ class DuplicateKeyCheck {
   }
 
  private:
-  struct Frame {
-    bool is_array;
-    size_t index;
-    std::string key;
-    std::set<std::string> keys;
-  };
-
   void on_key(const std::string& key) {
-    Frame& f = frames_.back();
+    ParsePosition::Frame& f = pos_->frames.back();
     f.key = key;
     if (!f.keys.insert(key).second)
-      throw InputError(file_prefix(file_) + "duplicate key \"" + path() + "\"");
+      throw InputError(file_prefix(*file_) + "duplicate key \"" + pos_->path() + "\"");
   }
   void element_done() {
-    if (!frames_.empty() && frames_.back().is_array) ++frames_.back().index;
-  }
-  std::string path() const {
-    std::string p;
-    for (const Frame& f : frames_) {
-      if (f.is_array) p += "[" + std::to_string(f.index) + "]";
-      else p += (p.empty() ? "" : ".") + f.key;
-    }
-    return p;
+    auto& frames = pos_->frames;
+    if (!frames.empty() && frames.back().is_array) ++frames.back().index;
   }
 
-  const std::string& file_;
-  std::vector<Frame> frames_;
+  const std::string* file_;
+  ParsePosition* pos_;
 };
 
 json parse_json(const std::string& text, const std::string& file) {
+  ParsePosition pos;
   try {
-    return json::parse(text, DuplicateKeyCheck(file));
+    return json::parse(text, SceneShapeCheck(file, pos));
   } catch (const json::parse_error& e) {
     // Drop nlohmann's "[json.exception.parse_error.101] " tag, keep its
     // "parse error at line L, column C: ..." and add the byte offset.
@@ -304,6 +348,16 @@ json parse_json(const std::string& text, const std::string& file) {
     if (tag_end != std::string::npos) what = what.substr(tag_end + 2);
     throw InputError(file_prefix(file) + "invalid JSON: " + what + " (byte " +
                      std::to_string(e.byte) + ")");
+  } catch (const json::out_of_range& e) {
+    // nlohmann: "number overflow parsing '1e309'" (406), the only range
+    // error its parser raises.
+    std::string what = e.what(), number = "the number";
+    const auto q1 = what.find('\''), q2 = what.rfind('\'');
+    if (q1 != std::string::npos && q2 > q1) {
+      number = what.substr(q1 + 1, q2 - q1 - 1);
+      if (number.size() > 40) number = number.substr(0, 37) + "...";
+    }
+    fail_value(file, pos.path(), number, "does not fit a double (largest about 1.8e308)");
   }
 }
 
@@ -330,7 +384,7 @@ void read_raw_layout(ObjectReader& r, VolumeSource& v) {
     v.type = n->one_of({"uint8", "uint12", "uint16", "int16", "uint32", "int32", "float32", "float64"});
   if (auto n = r.get("endian")) v.endian = n->one_of({"little", "big"});
   if (auto n = r.get("header")) v.header_bytes = uint64_t(n->integer(0, std::numeric_limits<int64_t>::max()));
-  r.reject_unknown();
+  // Unknown keys are rejected by read_volume, which also reads "spacing" and "map".
   if (!dim) r.fail_missing("dim", "raw volumes need their size [x, y, z]");
 }
 
@@ -655,16 +709,22 @@ Scene parse_scene(const std::string& json_text, const std::string& file_name) {
 }
 
 Scene load_scene(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::is_directory(path, ec))
-    throw InputError(path + ": cannot read the scene: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the scene: " + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read the scene: " + std::strerror(errno));
-  return parse_scene(text.str(), path);
+  const FdCloser fd{open_regular_file(path, "the scene")};
+  struct stat st {};
+  if (::fstat(fd.fd, &st) == 0 && static_cast<uint64_t>(st.st_size) > kMaxSceneBytes)
+    throw InputError(path + ": the scene is " + std::to_string(st.st_size) + " bytes, more than the " +
+                     std::to_string(kMaxSceneBytes >> 20) + " MiB a scene may have");
+  // Read to the end, not to st_size: /proc files and the like report 0.
+  std::string text;
+  char buf[1 << 16];
+  for (size_t n = sizeof buf; n == sizeof buf && text.size() <= kMaxSceneBytes;) {
+    n = read_fd(fd.fd, buf, sizeof buf, path, "the scene");
+    text.append(buf, n);
+  }
+  if (text.size() > kMaxSceneBytes)
+    throw InputError(path + ": the scene is more than the " + std::to_string(kMaxSceneBytes >> 20) +
+                     " MiB a scene may have");
+  return parse_scene(text, path);
 }
 
 Scene default_scene() {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "golden/errors.hpp"
+#include "golden/input_file.hpp"
 #include "golden/quantise.hpp"
 #include "golden/volume_io.hpp"
 
@@ -169,6 +170,8 @@ Volume single_voxel(const VolumeSource& src, int bits) {
 Volume make_synthetic(const VolumeSource& src, int voxel_bits) {
   check_voxel_bits(voxel_bits);
   check_size(src.size);
+  check_memory("volume.size", "the synthetic " + src.kind, 2.0 * static_cast<double>(src.size[0]) * src.size[1] * src.size[2],
+               dims_text(src.size) + " voxels");
   Volume v;
   if (src.kind == "sphere")
     v = sphere(src, voxel_bits);

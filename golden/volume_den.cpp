@@ -1,19 +1,22 @@
 // VolPack .den density files (libvolpack's examples/denfile.c is the
 // reference reader): a 62-byte header of shorts and one int, then one byte
 // per voxel, x fastest.
+#include <unistd.h>
 #include <zlib.h>
+
+#include <algorithm>
 
 #include <array>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "golden/errors.hpp"
+#include "golden/input_file.hpp"
 #include "golden/quantise.hpp"
 #include "golden/volume_io.hpp"
 
@@ -24,6 +27,7 @@ namespace {
 constexpr size_t kHeaderBytes = 62;
 constexpr size_t kMapLenOffset = 50;     // short map_len[3]
 constexpr size_t kMapLengthOffset = 58;  // int map_length
+constexpr size_t kTrailerBytes = size_t{1} << 20;
 
 struct GzCloser {
   void operator()(gzFile_s* f) const { gzclose(f); }
@@ -38,37 +42,46 @@ std::string zlib_message(gzFile_s* f, const std::string& path) {
   return m;
 }
 
+using GzPtr = std::unique_ptr<gzFile_s, GzCloser>;
+
 // zlib reads uncompressed files transparently, so one reader serves both
-// brainsmall.den and a gzipped brainsmall.den.gz. Reading in a few large
-// calls keeps the 1.4 MB head to milliseconds.
-std::vector<unsigned char> read_all(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path + ": cannot open density file (it is a directory)");
+// brainsmall.den and a gzipped brainsmall.den.gz.
+GzPtr open_den(const std::string& path) {
+  const int fd = open_regular_file(path, "density file");
   errno = 0;
-  std::unique_ptr<gzFile_s, GzCloser> f(gzopen(path.c_str(), "rb"));
-  if (!f)
-    throw InputError(path + ": cannot open density file (" +
-                     (errno ? std::strerror(errno) : "out of memory") + ")");
+  GzPtr f(gzdopen(fd, "rb"));
+  if (!f) {
+    ::close(fd);
+    throw InputError(path + ": cannot open density file (" + (errno ? std::strerror(errno) : "out of memory") + ")");
+  }
   gzbuffer(f.get(), 1u << 18);
+  return f;
+}
+
+// Reads up to `want` bytes; fewer only at the end of the data. Only what the
+// header declares is ever read, so a small file that inflates to gigabytes
+// costs no more than its header says.
+// The buffer grows as data arrives, so a short file declaring a large
+// volume costs what the file holds, not what it declares.
+std::vector<unsigned char> read_up_to(gzFile_s* f, size_t want, const std::string& path) {
   std::vector<unsigned char> buf;
-  constexpr unsigned kChunk = 1u << 22;
-  for (;;) {
-    const size_t old = buf.size();
-    buf.resize(old + kChunk);
-    const int n = gzread(f.get(), buf.data() + old, kChunk);
-    if (n < 0)
-      throw InputError(path + ": cannot read density file, truncated or corrupt (" +
-                       zlib_message(f.get(), path) + ")");
-    buf.resize(old + static_cast<size_t>(n));
-    if (static_cast<unsigned>(n) < kChunk) break;
+  size_t got = 0;
+  constexpr size_t kChunk = size_t{1} << 22;  // a few large calls keep the 1.4 MB head to milliseconds
+  while (got < want) {
+    const unsigned n = static_cast<unsigned>(std::min(kChunk, want - got));
+    buf.resize(got + n);
+    const int r = gzread(f, buf.data() + got, n);
+    if (r < 0)
+      throw InputError(path + ": cannot read density file, truncated or corrupt (" + zlib_message(f, path) + ")");
+    got += static_cast<size_t>(r);
+    if (static_cast<unsigned>(r) < n) break;
   }
   // A gzip stream cut short reads as a clean end of file; zlib flags it here.
   int err = 0;
-  gzerror(f.get(), &err);
+  gzerror(f, &err);
   if (err != Z_OK)
-    throw InputError(path + ": truncated or corrupt compressed density file (" +
-                     zlib_message(f.get(), path) + ")");
+    throw InputError(path + ": truncated or corrupt compressed density file (" + zlib_message(f, path) + ")");
+  buf.resize(got);
   return buf;
 }
 
@@ -129,20 +142,25 @@ void check_header(const DenHeader& h, const std::string& path) {
 
 Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits) {
   check_voxel_bits(voxel_bits);
-  const std::vector<unsigned char> bytes = read_all(path);
-  const DenHeader h = parse_header(bytes, path);
+  GzPtr f = open_den(path);
+  const DenHeader h = parse_header(read_up_to(f.get(), kHeaderBytes, path), path);
   check_header(h, path);
   const size_t expected = static_cast<size_t>(h.map_length);
-  const size_t found = bytes.size() - kHeaderBytes;
-  // Like VolPack's read_den, bytes after the map are ignored.
-  if (found < expected)
+  check_memory(path, "the volume", volume_load_bytes(static_cast<double>(expected), 1),
+               dims_text(h.dim[0], h.dim[1], h.dim[2]) + " voxels");
+  const std::vector<unsigned char> bytes = read_up_to(f.get(), expected, path);
+  // Like VolPack's read_den, bytes after the map are ignored; a little of
+  // them is read so that a gzip stream that ends there has its CRC checked
+  // (damage inside the data can inflate cleanly), without inflating a bomb.
+  if (bytes.size() == expected) read_up_to(f.get(), kTrailerBytes, path);
+  if (bytes.size() < expected)
     throw InputError(path + ": truncated data: expected " + std::to_string(expected) +
                      " bytes after the " + std::to_string(kHeaderBytes) + "-byte header, found " +
-                     std::to_string(found));
+                     std::to_string(bytes.size()));
   Volume v;
   v.dim = h.dim;
   v.bits = voxel_bits;
-  v.data = quantise(bytes.data() + kHeaderBytes, SampleType::UInt8, h.dim, q, voxel_bits, path);
+  v.data = quantise(bytes.data(), SampleType::UInt8, h.dim, q, voxel_bits, path);
   v.source = path;
   return v;
 }

@@ -1,17 +1,18 @@
 // Headerless ("raw") volumes: the scene supplies what the file cannot, so
 // the file size is the only check that the description matches the file.
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "golden/errors.hpp"
+#include "golden/input_file.hpp"
 #include "golden/quantise.hpp"
 #include "golden/volume_io.hpp"
 
@@ -56,24 +57,18 @@ void check_size(const std::array<int, 3>& d, uint64_t width, uint64_t header) {
 
 std::vector<unsigned char> read_exact(const std::string& path, uint64_t expected,
                                       const std::string& layout) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(path + ": cannot open raw volume (" +
-                     (std::filesystem::exists(path, ec) ? "not a regular file" : "no such file") +
-                     ")");
-  const uint64_t actual = std::filesystem::file_size(path, ec);
-  if (ec) throw InputError(path + ": cannot open raw volume (" + ec.message() + ")");
+  const FdCloser fd{open_regular_file(path, "raw volume")};
+  struct stat st {};
+  if (::fstat(fd.fd, &st) != 0) throw InputError(path + ": cannot open raw volume (" + std::strerror(errno) + ")");
+  const auto actual = static_cast<uint64_t>(st.st_size);
   // A larger file is as suspicious as a short one: the description is wrong.
   if (actual != expected)
     throw InputError(path + ": file is " + std::to_string(actual) + " bytes, expected " +
                      std::to_string(expected) + " (" + layout + ")");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open raw volume (" + std::strerror(errno) + ")");
   std::vector<unsigned char> buf(static_cast<size_t>(expected));
-  in.read(reinterpret_cast<char*>(buf.data()), static_cast<std::streamsize>(buf.size()));
-  if (static_cast<uint64_t>(in.gcount()) != expected)
-    throw InputError(path + ": read " + std::to_string(in.gcount()) + " of " +
-                     std::to_string(expected) + " bytes");
+  const size_t got = read_fd(fd.fd, buf.data(), buf.size(), path, "raw volume");
+  if (got != expected)
+    throw InputError(path + ": read " + std::to_string(got) + " of " + std::to_string(expected) + " bytes");
   return buf;
 }
 
@@ -103,6 +98,8 @@ Volume load_raw(const VolumeSource& src, const std::string& path, int voxel_bits
                              std::to_string(src.dim[0]) + "x" + std::to_string(src.dim[1]) + "x" +
                              std::to_string(src.dim[2]) + " voxels x " + std::to_string(width) +
                              " bytes " + src.type;
+  check_memory(path, "the volume", volume_load_bytes(static_cast<double>(n), static_cast<double>(width)),
+               dims_text(src.dim[0], src.dim[1], src.dim[2]) + " voxels of " + std::to_string(width) + " bytes");
   std::vector<unsigned char> bytes = read_exact(path, src.header_bytes + n * width, layout);
   unsigned char* samples = bytes.data() + src.header_bytes;
   if (big != host_is_big_endian()) swap_samples(samples, n, width);

@@ -16,10 +16,12 @@
 
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
+#include "golden/input_file.hpp"
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
 #include "tb/image_io.hpp"
+#include "tb/output_files.hpp"
 #include "tb/progress.hpp"
 #include "tb/regress.hpp"
 #include "tb/report.hpp"
@@ -45,7 +47,8 @@ struct RenderArgs {
   bool simulate_all = false;
   int frames = 1;
   std::string trace;       // FST file (RTL units)
-  std::vector<uint64_t> trace_window;  // first, last cycle
+  std::vector<int64_t> trace_window;  // first, last cycle
+  uint64_t max_memory_mib = 0;  // 0: golden::kDefaultMemoryLimit
   std::optional<uint32_t> seed;        // default: CUBE4_SEED, else 1
 };
 
@@ -121,7 +124,35 @@ Loaded load(const std::string& scene_path) {
 
 nlohmann::json effects_json(const golden::EffectSet& e) { return e.names(); }
 
+// What a render holds besides the loaded volume, estimated before it starts
+// so that an 8192x8192 image or a large volume through the system model is
+// refused by name instead of ending in bad_alloc.
+void check_render_memory(const Loaded& l, const std::string& model) {
+  const double voxels = static_cast<double>(l.volume.size());
+  const double base = static_cast<double>(l.host.regs.base_width()) * l.host.regs.base_height();
+  const double image = static_cast<double>(l.scene.width) * l.scene.height;
+  // The volume (2 bytes a voxel), the base plane (fixed and float: 16 bytes
+  // a pixel at most), the final image (float RGBA, and 8-bit for PNG); the
+  // system model keeps its own copy of the volume in voxel memory, and the
+  // check's golden render another base plane.
+  const bool system = is_system_model(model);
+  const double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20;
+  golden::check_memory(l.scene.file.empty() ? std::string("the default scene") : l.scene.file,
+                       "the " + model + " render", bytes,
+                       golden::dims_text(l.volume.dim[0], l.volume.dim[1], l.volume.dim[2]) + " voxels, " +
+                           std::to_string(l.scene.width) + "x" + std::to_string(l.scene.height) + " image");
+}
+
+// The FST files the RTL units write (systemc/rtl/: one per unit, the
+// shading unit's from pipeline 0).
+const std::vector<std::string> kTraceUnits = {"addr", "interp", "gradient", "shade0", "composite"};
+
+void apply_memory_limit(uint64_t mib) {
+  if (mib > 0) golden::set_memory_limit(mib << 20);
+}
+
 int run_render(const RenderArgs& a) {
+  apply_memory_limit(a.max_memory_mib);
   // Outputs are checked before the (possibly long) render, so a typo costs nothing.
   for (const std::string* p : {&a.output, &a.baseplane}) {
     if (p->empty()) continue;
@@ -136,11 +167,26 @@ int run_render(const RenderArgs& a) {
   const bool system = is_system_model(a.model);
   if (!system && a.model != "fixed" && a.model != "float" && a.model != "reference")
     throw InputError("--model " + a.model + ": unknown model (fixed, float, reference, tlm, rtl, mixed:UNIT,...)");
-  if (!a.trace_window.empty() && (a.trace_window.size() != 2 || a.trace_window[0] > a.trace_window[1]))
-    throw InputError("--trace-window: give FIRST LAST cycles, FIRST <= LAST");
+  if (!a.trace_window.empty() &&
+      (a.trace_window.size() != 2 || a.trace_window[0] < 0 || a.trace_window[0] > a.trace_window[1]))
+    throw InputError("--trace-window: give FIRST LAST cycles, 0 <= FIRST <= LAST");
   if (!a.trace.empty() && std::filesystem::path(a.trace).extension() != ".fst")
     throw InputError("--trace '" + a.trace + "': the file must end in .fst");
+  if (!a.trace.empty() && (!system || parse_levels(a.model) == parse_levels("tlm")))
+    throw InputError("--trace: the " + a.model + " model has no RTL unit to trace");
+  if (!a.trace_window.empty() && a.trace.empty()) throw InputError("--trace-window: give --trace FILE.fst as well");
+  if (system) parse_levels(a.model);  // a wrong unit name costs no load
+  // Every output is checked, and its temporary made, before any work.
+  tb::OutputSet outputs;
+  const std::string output_temp = outputs.add(a.output, "--output");
+  const std::string baseplane_temp = a.baseplane.empty() ? "" : outputs.add(a.baseplane, "--baseplane");
+  const std::string report_temp = a.report.empty() ? "" : outputs.add(a.report, "--report");
+  const std::string trace_temp = a.trace.empty() ? "" : outputs.add_trace(a.trace, kTraceUnits);
+  if (!a.scene.empty()) outputs.check_not_output(a.scene, "the scene");
   Loaded l = load(a.scene);
+  if (l.scene.volume.kind == "den" || l.scene.volume.kind == "raw" || l.scene.volume.kind == "nifti")
+    outputs.check_not_output(l.volume.source, "the volume");
+  check_render_memory(l, a.model);
   sysc::SystemConfig cfg;
   std::optional<sysc::SystemResult> sys;
   double bus_seconds = 0;  // host-bus time of programming the frame and reading it back
@@ -155,11 +201,10 @@ int run_render(const RenderArgs& a) {
     if (a.frames > 1 && cfg.all_tlm())
       throw InputError("--frames: the tlm model has no clock to stream frames on (its interval is the cycle model's)");
     if (!a.trace.empty()) {
-      if (cfg.all_tlm()) throw InputError("--trace: the tlm model has no RTL unit to trace");
-      cfg.trace.file = a.trace;
+      cfg.trace.file = trace_temp;
       if (a.trace_window.size() == 2) {
-        cfg.trace.first = a.trace_window[0];
-        cfg.trace.last = a.trace_window[1];
+        cfg.trace.first = static_cast<uint64_t>(a.trace_window[0]);
+        cfg.trace.last = static_cast<uint64_t>(a.trace_window[1]);
       }
     }
   }
@@ -188,7 +233,7 @@ int run_render(const RenderArgs& a) {
       frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       if (last) {
         hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
-        if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp);
+        if (!a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
         if (cfg.check) {
           const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, l.host.regs), bp);
           if (!diff.empty() || sys->mismatch) {
@@ -204,13 +249,13 @@ int run_render(const RenderArgs& a) {
       frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       if (last) {
         hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
-        if (!a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp);
+        if (!a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
       }
     } else if (a.model == "float") {
       const golden::BasePlaneF bp = golden::render_float(l.volume, l.scene, l.host.view, &stats, cb);
       image = golden::warp(bp.image, bp.shift_x, bp.shift_y, l.host.view);
       frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      if (last && !a.baseplane.empty()) tb::write_baseplane(a.baseplane, bp.image);
+      if (last && !a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp.image, a.baseplane);
     } else {
       golden::ReferenceOptions opt;
       opt.step = a.reference_step;
@@ -221,10 +266,7 @@ int run_render(const RenderArgs& a) {
   std::vector<double> sorted = frame_seconds;
   std::sort(sorted.begin(), sorted.end());
   const double seconds = sorted[sorted.size() / 2];
-  tb::write_image(a.output, image);
-  if (progress.shown() || !a.quiet)
-    std::fprintf(stderr, "cube4: %s model, %llu samples in %.3f s -> %s\n", a.model.c_str(),
-                 static_cast<unsigned long long>(stats.samples), seconds, a.output.c_str());
+  tb::write_image(output_temp, image, a.output);
   if (!a.report.empty()) {
     nlohmann::json r = {
         {"model", a.model},
@@ -249,8 +291,14 @@ int run_render(const RenderArgs& a) {
     }
     if (!a.baseplane.empty()) r["baseplane"] = a.baseplane;
     if (hash) r["baseplane_hash_fnv1a64"] = tb::hex64(*hash);
-    tb::write_json(a.report, r);
+    tb::write_json(report_temp, r, a.report);
   }
+  // A failed check (exit 3) still delivers its outputs: the image and the
+  // report's description of the mismatch are what one debugs it with.
+  outputs.commit();
+  if (progress.shown() || !a.quiet)
+    std::fprintf(stderr, "cube4: %s model, %llu samples in %.3f s -> %s\n", a.model.c_str(),
+                 static_cast<unsigned long long>(stats.samples), seconds, a.output.c_str());
   if (!check_failure.empty()) {
     std::fprintf(stderr, "cube4: check FAILED against the golden model: %s\n", check_failure.c_str());
     return 3;
@@ -259,7 +307,8 @@ int run_render(const RenderArgs& a) {
   return 0;
 }
 
-int run_info(const std::string& scene) {
+int run_info(const std::string& scene, uint64_t max_memory_mib) {
+  apply_memory_limit(max_memory_mib);
   const Loaded l = load(scene);
   nlohmann::json j = {
       {"scene", scene.empty() ? "(default)" : scene},
@@ -307,9 +356,14 @@ int main(int argc, char** argv) {
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
   render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
   render->add_option("--seed", ra.seed, "system model: Verilator random-reset seed of the RTL units (default: CUBE4_SEED, else 1)");
+  const std::string memory_help = "refuse volumes and renders estimated to need more than MiB of memory (default " +
+                                  std::to_string(golden::kDefaultMemoryLimit >> 20) + ")";
+  render->add_option("--max-memory", ra.max_memory_mib, memory_help)->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
   std::string info_scene;
+  uint64_t info_max_memory = 0;
   CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");
   info->add_option("scene", info_scene, "scene JSON file (default: the default scene)");
+  info->add_option("--max-memory", info_max_memory, memory_help)->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
   tb::RegressArgs rg;
   CLI::App* regress = app.add_subcommand(
       "regress", "render scenes at several model levels with --check, in parallel; JUnit XML and a summary");
@@ -336,7 +390,7 @@ int main(int argc, char** argv) {
   try {
     if (*render) return run_render(ra);
     if (*regress) return tb::run_regress(rg, std::filesystem::canonical("/proc/self/exe").string());
-    return run_info(info_scene);
+    return run_info(info_scene, info_max_memory);
   } catch (const InputError& e) {
     std::fprintf(stderr, "cube4: error: %s\n", e.what());
     return 2;

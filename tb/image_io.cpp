@@ -29,33 +29,36 @@ void check_extension(const std::string& path) {
     throw InputError("output file '" + path + "': unsupported extension '" + e + "' (use .png or .exr)");
 }
 
-// Writes to a temporary file beside the target, renames on success.
-void write_whole(const std::string& path, OIIO::ImageSpec spec, const void* pixels) {
-  check_extension(path);
-  const std::string tmp = path + ".tmp" + extension_of(path);
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw std::runtime_error("cannot create a writer for '" + path + "': " + OIIO::geterror());
-  if (!out->open(tmp, spec) || !out->write_image(spec.format, pixels) || !out->close()) {
-    const std::string err = out->geterror();
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    throw InputError("cannot write '" + path + "': " + err);
+// Writes `file` and reads it back: OpenImageIO's PNG writer does not report
+// a failed write (a full disk gives a truncated file and success), so the
+// file only counts as written once it decodes to the same size. `shown`
+// names the output in messages (the destination, not the temporary).
+void write_checked(const std::string& file, const std::string& shown, OIIO::ImageSpec spec, const void* pixels) {
+  check_extension(file);
+  auto out = OIIO::ImageOutput::create(file);
+  if (!out) throw InputError("cannot write '" + shown + "': " + OIIO::geterror());
+  if (!out->open(file, spec) || !out->write_image(spec.format, pixels) || !out->close())
+    throw InputError("cannot write '" + shown + "': " + out->geterror());
+  auto in = OIIO::ImageInput::open(file);
+  bool ok = in && in->spec().width == spec.width && in->spec().height == spec.height &&
+            in->spec().nchannels == spec.nchannels;
+  if (ok) {
+    std::vector<float> px(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+    ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data());
   }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw InputError("cannot write '" + path + "': " + ec.message());
-  }
+  if (!ok)
+    throw InputError("cannot write '" + shown + "': the file written does not read back whole (" +
+                     (in ? in->geterror() : OIIO::geterror()) + "; is the disk full?)");
 }
 
 }  // namespace
 
-void write_image(const std::string& path, const golden::ImageF& img) {
+void write_image(const std::string& path, const golden::ImageF& img, const std::string& shown_as) {
+  const std::string& shown = shown_as.empty() ? path : shown_as;
   check_extension(path);
   if (extension_of(path) == ".exr") {
     OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::FLOAT);
-    write_whole(path, spec, img.rgba.data());
+    write_checked(path, shown, spec, img.rgba.data());
     return;
   }
   // PNG: the premultiplied colour is the image over a black background.
@@ -65,13 +68,14 @@ void write_image(const std::string& path, const golden::ImageF& img) {
     for (int c = 0; c < 3; ++c)
       px[i * 3 + c] = static_cast<uint8_t>(std::lround(std::clamp(img.rgba[i * 4 + c], 0.0f, 1.0f) * 255.0f));
   OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT8);
-  write_whole(path, spec, px.data());
+  write_checked(path, shown, spec, px.data());
 }
 
-void write_baseplane(const std::string& path, const golden::BasePlane& bp) {
+void write_baseplane(const std::string& path, const golden::BasePlane& bp, const std::string& shown_as) {
+  const std::string& shown = shown_as.empty() ? path : shown_as;
   check_extension(path);
   if (extension_of(path) == ".exr") {
-    write_baseplane(path, bp.to_float());
+    write_baseplane(path, bp.to_float(), shown);
     return;
   }
   std::vector<uint16_t> px(bp.rgba.size());
@@ -80,14 +84,15 @@ void write_baseplane(const std::string& path, const golden::BasePlane& bp) {
   OIIO::ImageSpec spec(bp.width, bp.height, 4, OIIO::TypeDesc::UINT16);
   spec.attribute("oiio:UnassociatedAlpha", 1);
   spec.attribute("cube4:channel_bits", bp.bits);
-  write_whole(path, spec, px.data());
+  write_checked(path, shown, spec, px.data());
 }
 
-void write_baseplane(const std::string& path, const golden::ImageF& bp) {
+void write_baseplane(const std::string& path, const golden::ImageF& bp, const std::string& shown_as) {
+  const std::string& shown = shown_as.empty() ? path : shown_as;
   check_extension(path);
   if (extension_of(path) == ".exr") {
     OIIO::ImageSpec spec(bp.width, bp.height, 4, OIIO::TypeDesc::FLOAT);
-    write_whole(path, spec, bp.rgba.data());
+    write_checked(path, shown, spec, bp.rgba.data());
     return;
   }
   std::vector<uint16_t> px(bp.rgba.size());
@@ -95,7 +100,7 @@ void write_baseplane(const std::string& path, const golden::ImageF& bp) {
     px[i] = static_cast<uint16_t>(std::lround(std::clamp(bp.rgba[i], 0.0f, 1.0f) * 65535.0f));
   OIIO::ImageSpec spec(bp.width, bp.height, 4, OIIO::TypeDesc::UINT16);
   spec.attribute("oiio:UnassociatedAlpha", 1);
-  write_whole(path, spec, px.data());
+  write_checked(path, shown, spec, px.data());
 }
 
 golden::ImageF read_image(const std::string& path) {

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "golden/errors.hpp"
+#include "tb/output_files.hpp"
 #include "tb/report.hpp"
 
 namespace cube4::tb {
@@ -145,6 +146,10 @@ int run_regress(const RegressArgs& a, const std::string& self) {
     if (l != "fixed" && l != "float" && l != "tlm" && l != "rtl" && l.rfind("mixed:", 0) != 0)
       throw InputError("regress: --levels: unknown level '" + l + "' (fixed, float, tlm, rtl, mixed:UNIT,...)");
   const std::vector<std::string> scenes = regress_scenes(a.inputs);
+  // All outputs or none (docs/reliability.md): checked before any work.
+  OutputSet outputs;
+  const std::string junit_temp = outputs.add(a.junit, "--junit");
+  const std::string summary_temp = a.summary.empty() ? "" : outputs.add(a.summary, "--summary");
   // Outputs go beside the JUnit file, one folder per case, kept for a look.
   const fs::path work = fs::path(a.junit).parent_path() / (fs::path(a.junit).stem().string() + ".cases");
   fs::remove_all(work);
@@ -221,7 +226,7 @@ int run_regress(const RegressArgs& a, const std::string& self) {
     x << "  </testsuite>\n";
   }
   x << "</testsuites>\n";
-  write_text(a.junit, x.str());
+  write_text(junit_temp, x.str(), a.junit);
 
   if (!a.summary.empty()) {
     std::ostringstream m;
@@ -241,8 +246,9 @@ int run_regress(const RegressArgs& a, const std::string& self) {
     for (const Case& c : cases)
       if (c.exit_code != 0) m << "\n- " << c.scene << " at " << c.level << ": " << c.failure;
     m << "\n";
-    write_text(a.summary, m.str());
+    write_text(summary_temp, m.str(), a.summary);
   }
+  outputs.commit();
   if (!a.quiet)
     std::fprintf(stderr, "regress: %zu cases, %d failed, %d errors -> %s\n", cases.size(), failures, errors,
                  a.junit.c_str());

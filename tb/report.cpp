@@ -1,8 +1,11 @@
 #include "tb/report.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <cstring>
 
 #include "golden/errors.hpp"
 
@@ -74,20 +77,27 @@ nlohmann::json describe_registers(const golden::Registers& r) {
   };
 }
 
-void write_text(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw golden::InputError("cannot write '" + path + "'");
-    out << text;
-    out.flush();
-    if (!out) throw golden::InputError("cannot write '" + path + "'");
+void write_text(const std::string& path, const std::string& text, const std::string& shown_as) {
+  const std::string& shown = shown_as.empty() ? path : shown_as;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw golden::InputError("cannot write '" + shown + "' (" + std::strerror(errno) + ")");
+  size_t done = 0;
+  int error = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error = n < 0 ? errno : ENOSPC;
+      break;
+    }
+    done += static_cast<size_t>(n);
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw golden::InputError("cannot write '" + path + "': " + ec.message());
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) throw golden::InputError("cannot write '" + shown + "' (" + std::strerror(error) + ")");
 }
 
-void write_json(const std::string& path, const nlohmann::json& j) { write_text(path, j.dump(2) + "\n"); }
+void write_json(const std::string& path, const nlohmann::json& j, const std::string& shown_as) {
+  write_text(path, j.dump(2) + "\n", shown_as);
+}
 
 }  // namespace cube4::tb

@@ -18,8 +18,9 @@ nlohmann::json describe_volume(const golden::Volume& v);
 nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& h);
 nlohmann::json describe_registers(const golden::Registers& r);
 
-// Writes `text` (or `j`) to `path` whole (temporary file, then rename).
-void write_text(const std::string& path, const std::string& text);
-void write_json(const std::string& path, const nlohmann::json& j);
+// Writes `text` (or `j`) to `path` (tb/output_files.hpp gives a temporary),
+// checking every write and the close; throws InputError naming `shown_as`.
+void write_text(const std::string& path, const std::string& text, const std::string& shown_as = "");
+void write_json(const std::string& path, const nlohmann::json& j, const std::string& shown_as = "");
 
 }  // namespace cube4::tb

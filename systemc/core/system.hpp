@@ -15,7 +15,7 @@
 #include "golden/renderers.hpp"
 #include "golden/volume.hpp"
 #include "systemc/core/unit_if.hpp"
-#include "systemc/rtl/rtl_model.hpp"
+#include "systemc/core/trace_window.hpp"
 
 namespace cube4::sysc {
 

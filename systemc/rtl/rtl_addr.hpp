@@ -28,9 +28,9 @@ class RtlAddr final : public AddrIf {
     m.repeat_slice_i = 0;
     m.again_i = 0;
     m.start_i = 1;
-    m_.edge();
+    m_.setup_edge();
     m.start_i = 0;
-    for (int i = 0; i < 5; ++i) m_.edge();  // setup
+    for (int i = 0; i < 5; ++i) m_.setup_edge();
     m_.restart_cycles();
   }
 

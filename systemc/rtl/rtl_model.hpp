@@ -14,15 +14,10 @@ using sc_core::sc_time_stamp;
 #include <memory>
 #include <string>
 
+#include "systemc/core/trace_window.hpp"
 #include "systemc/rtl/vl_bits.hpp"
 
 namespace cube4::sysc {
-
-// Where and when to trace (TraceWindow::file empty: no tracing).
-struct TraceWindow {
-  std::string file;
-  uint64_t first = 0, last = UINT64_MAX;  // cycles, inclusive
-};
 
 template <class M>
 class RtlModel {
@@ -35,7 +30,7 @@ class RtlModel {
       fst_->open(trace_file_name(trace.file, trace_suffix).c_str());
     }
     m_->rst_ni = 0;
-    for (int i = 0; i < 2; ++i) edge();
+    for (int i = 0; i < 2; ++i) setup_edge();
     m_->rst_ni = 1;
     restart_cycles();
   }
@@ -60,6 +55,16 @@ class RtlModel {
     ++cycle_;
   }
   void edge() { settle(); rise(); }
+  // A clock before the frame (reset, setup, a table load), not traced: the
+  // trace holds the frame's cycles under the system's numbers, and FST
+  // times must only grow (Verilator warns "previous dump" for each that
+  // does not, and the frame after a long table load would be lost).
+  void setup_edge() {
+    m_->clk_i = 0;
+    m_->eval();
+    m_->clk_i = 1;
+    m_->eval();
+  }
   // The system's cycle numbers: the frame's first clock is cycle 1 (after
   // reset, or after a table load through the write ports).
   void restart_cycles() { cycle_ = 1; }

@@ -73,7 +73,7 @@ class RtlShade final : public ShadeIf {
     M& m = *u;
     m.valid_i = 0;
     m.class_we_i = m.gmlut_we_i = m.dmap_we_i = m.smap_we_i = 0;
-    auto edge = [&u] { u.edge(); };
+    auto edge = [&u] { u.setup_edge(); };
     rtl::load_class_table(m, r.p, r.classification, edge);
     rtl::load_gm_lut(m, r.p, r.gm_lut, edge);
     rtl::load_map(m, r.p, rtl::Map::Diffuse, r.diffuse_map, edge);
