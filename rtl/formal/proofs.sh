@@ -1,0 +1,28 @@
+# The proofs scripts/formal.sh runs (sourced by it):
+# proof <name> <group> <kind> <K> <top> "<files>" "<Param=value ...>" [probe=signal ...]
+# group quick: default ctest suite; slow: ctest label slow; bug: a planted
+# bug that the proof must catch (kind bug).
+
+# mem_probes <width> <depth>: probe_mem slices onto the RAM entries of u_dut.mem_q.
+mem_probes() {
+  local w=$1 d=$2 e
+  for ((e = 0; e < d; e++)); do
+    echo "probe_mem[$((e * w + w - 1)):$((e * w))]=\\u_dut.mem_q[$e]"
+  done
+}
+
+# cube4_lerp: range and equivalence, combinational.
+proof lerp                 quick bmc 1 lerp_fv "rtl/cube4_lerp.sv $F/cube4_ref_trilinear.sv $F/lerp_fv.sv" ""
+TRI_PROBES="probe_x_q=u_dut.x_q probe_y_q=u_dut.y_q probe_wy_q=u_dut.wy_q probe_wz1_q=u_dut.wz1_q probe_wz2_q=u_dut.wz2_q probe_valid_q=u_dut.valid_q"
+# cube4_trilinear: equivalence with the reference, range; pipelined.
+TRI_FILES="rtl/cube4_lerp.sv rtl/cube4_trilinear.sv $F/cube4_ref_trilinear.sv $F/trilinear_fv.sv"
+proof trilinear_x          quick ind 1 trilinear_fv "$TRI_FILES" "Stage=1" $TRI_PROBES
+proof trilinear_y          quick ind 1 trilinear_fv "$TRI_FILES" "Stage=2" $TRI_PROBES
+proof trilinear_z          quick ind 1 trilinear_fv "$TRI_FILES" "Stage=3" $TRI_PROBES
+# cube4_delay_ram: pointer bound with free inputs; FIFO with constant depth.
+DR_FILES="rtl/cube4_delay_ram.sv $F/delay_ram_fv.sv"
+proof delay_ram_ptr_d5      quick ind 1 delay_ram_fv "$DR_FILES" "MaxDepth=5 Fifo=0" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
+proof delay_ram_fifo_d5     quick ind 1 delay_ram_fv "$DR_FILES" "MaxDepth=5" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
+proof delay_ram_fifo_d8     quick ind 1 delay_ram_fv "$DR_FILES" "MaxDepth=8" probe_ptr=u_dut.ptr_q $(mem_probes 2 8)
+proof bug_delay_ram_lap     bug   bug 16 delay_ram_fv "$F/mutants/delay_ram_lap.sed $F/delay_ram_fv.sv" "MaxDepth=5" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
+proof bug_delay_ram_noforward bug bug 16 delay_ram_fv "$F/mutants/delay_ram_noforward.sed $F/delay_ram_fv.sv" "MaxDepth=5" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
