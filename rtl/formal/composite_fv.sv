@@ -158,6 +158,10 @@ module composite_fv #(
       assert (probe_pre_red_q <= probe_pre_alpha_q);
       assert (probe_pre_green_q <= probe_pre_alpha_q);
       assert (probe_pre_blue_q <= probe_pre_alpha_q);
+    end
+    // The output stage's inputs are the stage-6 registers of the cycle
+    // before: checked once those have been checked.
+    if (filled_q >= 4'd2) begin
       if (front_to_back) begin
         assert (alpha >= acc_alpha_q);
         assert (alpha - acc_alpha_q <= pre_alpha_prev_q);
