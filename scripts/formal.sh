@@ -100,7 +100,9 @@ elaborate() {
   done
   {
     echo "read_verilog -formal -sv ${files[*]}"
-    for p in ${P_PARAMS[$n]}; do echo "chparam -set ${p%%=*} ${p#*=} ${P_TOP[$n]}"; done
+    for p in ${P_PARAMS[$n]}; do
+      [[ $p == +* ]] || echo "chparam -set ${p%%=*} ${p#*=} ${P_TOP[$n]}"
+    done
     echo "hierarchy -check -top ${P_TOP[$n]}"
     echo "proc"
     echo "flatten"
@@ -114,7 +116,13 @@ elaborate() {
     echo "async2sync"
     echo "opt -fast"
     echo "dffunmap"
-    echo "write_smt2 -wires $out/$n.smt2"
+    if [[ " ${P_PARAMS[$n]} " == *" +yosys-sat "* ]]; then
+      # yosys's own SAT solver (MiniSat), BMC of K cycles from a free
+      # initial state, reset in the first. For models z3 does not solve.
+      echo "tee -o $out/$n.sat.log sat -seq ${P_K[$n]} -prove-asserts -set-assumes -set-at 1 rst_ni 0 -show-inputs"
+    else
+      echo "write_smt2 -wires $out/$n.smt2"
+    fi
   } >"$ys"
   "${nice_cmd[@]}" yosys -q -l "$out/$n.yosys.log" -s "$ys" >/dev/null 2>&1 || return 1
   # An undriven probe is one whose signal was not found.
@@ -129,11 +137,24 @@ for n in "${run[@]}"; do
   kind=${P_KIND[$n]} k=${P_K[$n]}
   t0=$(date +%s.%N)
   status=PASS
-  if ! elaborate "$n"; then
+  if [[ " ${P_PARAMS[$n]} " == *" +yosys-sat "* ]]; then
+    elaborate "$n"
+    if grep -q 'SAT proof finished - no model found: SUCCESS' "$out/$n.sat.log" 2>/dev/null; then
+      [ "$kind" = bug ] && status=MISSED || status=PASS
+    elif grep -q 'SAT proof finished - model found: FAIL' "$out/$n.sat.log" 2>/dev/null; then
+      [ "$kind" = bug ] && status=CAUGHT || status=FAIL
+    else
+      status=ERROR
+    fi
+  elif ! elaborate "$n"; then
     status=ERROR
   else
-    smt=(yosys-smtbmc -s z3 --noincr --presat -t "$k")
-    "${nice_cmd[@]}" "${smt[@]}" --dump-vcd "$out/$n.bmc.vcd" "$out/$n.smt2" >"$out/$n.bmc.log" 2>&1
+    # +noincr in the parameters: a fresh z3 per query, which lets z3 use its
+    # bit-blasting tactic (far faster on the multiplier miters, slower on
+    # deep BMC, which gains from incremental solving).
+    smt=(yosys-smtbmc -s z3 --presat)
+    [[ " ${P_PARAMS[$n]} " == *" +noincr "* ]] && smt+=(--noincr)
+    "${nice_cmd[@]}" "${smt[@]}" -t "$k" --dump-vcd "$out/$n.bmc.vcd" "$out/$n.smt2" >"$out/$n.bmc.log" 2>&1
     rc_bmc=$?
     if [ "$kind" = bug ]; then
       if grep -q 'Assert failed' "$out/$n.bmc.log"; then status=CAUGHT
@@ -144,7 +165,7 @@ for n in "${run[@]}"; do
     elif [ $rc_bmc -ne 0 ]; then
       grep -q 'Assert failed' "$out/$n.bmc.log" && status=FAIL || status=ERROR
     elif [ "$kind" = ind ]; then
-      "${nice_cmd[@]}" yosys-smtbmc -s z3 --noincr --presat -i -t "$k" --dump-vcd "$out/$n.ind.vcd" \
+      "${nice_cmd[@]}" "${smt[@]}" -i -t "$k" --dump-vcd "$out/$n.ind.vcd" \
         "$out/$n.smt2" >"$out/$n.ind.log" 2>&1
       case $? in 0) ;; 124) status=TIMEOUT ;; *) status=FAIL ;; esac
     fi
