@@ -114,10 +114,10 @@ module delay_ram_fv #(
       // reads that entry and nothing else.
       if (written_q && rst_ni) assert (rdata == entry(probe_ptr));
       if (Fifo && rst_ni) begin
-        assert (probe_ptr < PtrBits'(depth_i));
+        assert (DepthBits'(probe_ptr) < depth_i);
         if (tracking_q) begin
           assert (count_q < depth_i);
-          assert (tracked_ptr_q < PtrBits'(depth_i));
+          assert (DepthBits'(tracked_ptr_q) < depth_i);
           assert (entry(tracked_ptr_q) == tracked_q);
           assert ((DepthBits+1)'(probe_ptr) == ptr_exp);
         end
