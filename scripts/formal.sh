@@ -14,6 +14,10 @@
 #   bug K  a planted bug (a mutant copy of a unit in rtl/formal/mutants/,
 #          or a harness with an assumption removed): the bmc K run must FIND
 #          a counterexample; the line says FAIL if the proof stays green.
+# Engine flags among a proof's parameters: +noincr runs a fresh z3 per
+# query (z3 then bit-blasts: far faster on the multiplier miters);
+# +yosys-sat uses yosys's own SAT solver (sat -seq K, BMC only) for models
+# z3 does not solve (the skew address generator).
 # Internal signals: yosys 0.23 has no hierarchical references, so a harness
 # declares an undriven probe_* wire and the proof lists "probe=signal"; the
 # script connects it to the flattened signal (u_dut.ptr_q) after flatten.
