@@ -144,14 +144,18 @@ module cube4_composite #(
     to_acc = (AB'(v) << G) | (AB'(v) >> (A - G));
   endfunction
 
-  // golden premultiply() = mul_frac(to_acc(c), alpha, A): never above
-  // to_acc(c), so AB bits hold it.
+  // golden premultiply() = min(mul_frac(to_acc(c), alpha, A), to_acc(alpha)):
+  // the product is never above to_acc(c), so AB bits hold it; the clamp
+  // keeps premultiplied colour <= alpha (a no-op when G = 0).
   function automatic logic [AB-1:0] premultiply(input logic [A-1:0] c, input logic [A-1:0] f);
     logic [A:0]      f_unit;
     logic [AB+A:0]   prod;
+    logic [AB-1:0]   product, limit;
     f_unit      = {1'b0, f} + (A+1)'(f[A-1]);
     prod        = (AB+A+1)'(to_acc(c)) * (AB+A+1)'(f_unit) + ((AB+A+1)'(1) << (A - 1));
-    premultiply = AB'(prod >> A);
+    product     = AB'(prod >> A);
+    limit       = to_acc(f);
+    premultiply = (product < limit) ? product : limit;
   endfunction
 
   logic [Latency-1:0] valid_q;

@@ -46,9 +46,14 @@ constexpr uint32_t to_acc(uint32_t v, const Precision& p) {
 // A sample's premultiplied colour C·α in the accumulator domain: the colour
 // widened first, so the product keeps acc_guard_bits more of its fraction
 // than mul_frac(C, α) would (one rounding, half up), and full colour at full
-// α is full.
+// α is full. Never above the sample's α: the widened colour's replicated
+// bits can carry the product up to half a sample LSB past to_acc(α), so it
+// is clamped there (with no guard bits mul_frac(C, α) <= α already, and the
+// clamp changes nothing: VolumePro's compositor).
 constexpr uint32_t premultiply(uint32_t c, uint32_t alpha, const Precision& p) {
-  return static_cast<uint32_t>(mul_frac(to_acc(c, p), alpha, p.alpha_bits));
+  const uint32_t product = static_cast<uint32_t>(mul_frac(to_acc(c, p), alpha, p.alpha_bits));
+  const uint32_t limit = to_acc(alpha, p);
+  return product < limit ? product : limit;
 }
 
 // C += (1 - α_acc)·C_s·α ; α_acc += (1 - α_acc)·α, in the accumulator

@@ -340,6 +340,22 @@ TEST(Composite, GuardBitsKeepSubLsbContributions) {
   EXPECT_NEAR(pixel_of(acc, p).r / 65535.0, 0.1 * a, 1e-4);
 }
 
+TEST(Composite, PremultipliedColourNeverExceedsAlpha) {
+  // Every α with full colour, and random colours: P <= to_acc(α), and full
+  // colour at full α is full. Without premultiply()'s clamp the bit
+  // replication of the colour carries P past to_acc(α) for α >= 1/2.
+  const Precision p;
+  int clamped = 0;
+  for (uint32_t a = 0; a < 65536; ++a) {
+    const uint32_t full = premultiply(65535, a, p);
+    ASSERT_LE(full, to_acc(a, p)) << a;
+    clamped += mul_frac(to_acc(65535, p), a, p.alpha_bits) > to_acc(a, p);
+    ASSERT_LE(premultiply(a * 7919u % 65536, a, p), to_acc(a, p)) << a;
+  }
+  EXPECT_GT(clamped, 0) << "the clamp is needed somewhere, or the test proves nothing";
+  EXPECT_EQ(premultiply(65535, 65535, p), to_acc(65535, p));
+}
+
 TEST(Composite, PixelOfScalesTheAccumulatorDomainExactlyEnough) {
   // Every accumulator value: monotonic, full -> full, 0 -> 0, and within
   // 1/2 + 2^-g LSB of the exact scaling v (2^n - 1) / (2^A - 1).

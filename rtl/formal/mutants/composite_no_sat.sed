@@ -1,0 +1,3 @@
+# file: rtl/cube4_composite.sv
+# Planted bug: front-to-back colour sums wrap around instead of saturating.
+s/add_sat = sum\[AB\] ? {AB{1'b1}} : sum\[AB-1:0\];/add_sat = sum[AB-1:0];/
