@@ -51,9 +51,10 @@ extra=(
   "cube4_trilinear WeightBits=6"
   "cube4_trilinear WeightBits=10"
   "cube4_shader AlphaBits=8"
-  "cube4_shader AlphaBits=16"
+  "cube4_shader AlphaBits=12"
   "cube4_composite AlphaBits=8"
-  "cube4_composite AlphaBits=16"
+  "cube4_composite AlphaBits=12,AccGuardBits=0"
+  "cube4_composite_unit AlphaBits=12,AccGuardBits=0"
   "cube4_composite HasCutPlane=0"
   "cube4_shade_unit HasShading=0,HasMagnitude=0"
 )
