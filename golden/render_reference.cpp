@@ -66,6 +66,10 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
   cut.falloff = s.cut.falloff / plen;
   cut.keep_inside = s.cut.keep_inside;
 
+  double diagonal = 0;  // of the sampled box, in the ray's units
+  for (int i = 0; i < 3; ++i) diagonal += (vol.dim[i] - 1) * (vol.dim[i] - 1) * vol.spacing[i] * vol.spacing[i];
+  diagonal = std::sqrt(diagonal);
+
   ImageF img;
   img.width = s.width;
   img.height = s.height;
@@ -89,7 +93,13 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
       }
       double r = 0, g = 0, b = 0, a = 0, best = 0;
       bool valid = false;
-      for (double t = t0; t <= t1; t += h) {
+      // Steps counted, not accumulated: far from the volume (a ray origin
+      // at 1e17, say) t += h would not move t, and the loop would not end.
+      // A ray crosses the box in at most its diagonal (twice that: a guard
+      // only, against rays whose clipping came out infinite).
+      const double steps = t1 >= t0 ? std::floor(std::min(t1 - t0, 2 * diagonal + h) / h) : -1.0;
+      for (int64_t k = 0; k <= static_cast<int64_t>(steps); ++k) {
+        const double t = t0 + static_cast<double>(k) * h;
         const Vec3 q{o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
         ++samples;
         const double v = field(vol, q);

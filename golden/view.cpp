@@ -19,7 +19,10 @@ Mat3 multiply(const Mat3& a, const Mat3& b) {
 }
 
 Mat3 axis_rotation(int axis, double degrees) {
-  const double c = std::cos(degrees * kPi / 180), s = std::sin(degrees * kPi / 180);
+  // Reduced to one turn first (exact: fmod), so that any finite angle gives
+  // a rotation; -1e308 degrees in radians would overflow to -inf and NaN.
+  const double turn = std::fmod(degrees, 360.0);
+  const double c = std::cos(turn * kPi / 180), s = std::sin(turn * kPi / 180);
   const int a = (axis + 1) % 3, b = (axis + 2) % 3;
   Mat3 r{};
   r[axis][axis] = 1;

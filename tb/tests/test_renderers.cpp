@@ -223,3 +223,25 @@ TEST(RenderFixed, BeamWiseInterpolationEqualsTrilinearPerSample) {
     EXPECT_EQ(check.wrong, 0u);
   }
 }
+
+namespace {
+
+// Found by scripts/fuzz_cli.py: a rotation of -1e308 degrees overflowed to
+// -inf radians, the view became NaN and the reference ray caster's loop
+// over an infinite ray never ended. Any finite angle is one turn's angle.
+TEST(View, HugeFiniteAnglesAreReducedToOneTurn) {
+  const auto huge = test::setup(R"({"volume": {"synthetic": "sphere", "size": [12, 10, 8]},
+      "view": {"rotate": [20, -1e308, 0]}, "output": {"width": 32, "height": 32}})");
+  const double turn = std::fmod(-1e308, 360.0);
+  const auto same = test::setup(R"({"volume": {"synthetic": "sphere", "size": [12, 10, 8]},
+      "view": {"rotate": [20, )" + std::to_string(turn) + R"(, 0]}, "output": {"width": 32, "height": 32}})");
+  for (int i = 0; i < 3; ++i) {
+    ASSERT_TRUE(std::isfinite(huge.host.view.view_dir_object[i]));
+    EXPECT_NEAR(huge.host.view.view_dir_object[i], same.host.view.view_dir_object[i], 1e-9);
+  }
+  golden::RenderStats stats;
+  golden::render_reference(huge.volume, huge.scene, huge.host.view, {}, &stats);
+  EXPECT_GT(stats.samples, 0u);
+}
+
+}  // namespace
