@@ -10,7 +10,7 @@
 
 #include "golden/fixed.hpp"
 #include "golden/shading_model.hpp"
-#include "golden/units/cube_map.hpp"
+#include "golden/units/shade_cube_map.hpp"
 
 namespace cube4::golden {
 namespace {

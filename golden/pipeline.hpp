@@ -6,18 +6,18 @@
 #include <cstdint>
 
 #include "golden/registers.hpp"
-#include "golden/units/classify.hpp"
+#include "golden/units/shade_classify.hpp"
 #include "golden/units/composite.hpp"
-#include "golden/units/crop.hpp"
-#include "golden/units/cube_map.hpp"
-#include "golden/units/cut_plane.hpp"
+#include "golden/units/composite_crop.hpp"
+#include "golden/units/shade_cube_map.hpp"
+#include "golden/units/composite_cut_plane.hpp"
 #include "golden/units/dda.hpp"
 #include "golden/units/gradient.hpp"
-#include "golden/units/magnitude.hpp"
-#include "golden/units/phong.hpp"
-#include "golden/units/ray_align.hpp"
-#include "golden/units/reflection.hpp"
-#include "golden/units/trilinear.hpp"
+#include "golden/units/shade_magnitude.hpp"
+#include "golden/units/shade_phong.hpp"
+#include "golden/units/composite_ray_align.hpp"
+#include "golden/units/shade_reflection.hpp"
+#include "golden/units/interp.hpp"
 
 namespace cube4::golden {
 

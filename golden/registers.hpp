@@ -7,13 +7,13 @@
 #include <vector>
 
 #include "golden/precision.hpp"
-#include "golden/units/classify.hpp"
+#include "golden/units/shade_classify.hpp"
 #include "golden/units/composite.hpp"
-#include "golden/units/crop.hpp"
-#include "golden/units/cut_plane.hpp"
+#include "golden/units/composite_crop.hpp"
+#include "golden/units/composite_cut_plane.hpp"
 #include "golden/units/dda.hpp"
-#include "golden/units/phong.hpp"
-#include "golden/units/reflection.hpp"
+#include "golden/units/shade_phong.hpp"
+#include "golden/units/shade_reflection.hpp"
 
 namespace cube4::golden {
 

@@ -18,7 +18,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats
   const PermutedVolume access(vol, r.perm, r.flip);
   // Voxel slices zv and zv+1 (one extra zero column/row for x+1, y+1).
   Plane vox_lo(nx, ny, 1), vox_hi(nx, ny, 1);
-  Interpolator interp(nx, ny, r.p.weight_bits);
+  SliceInterp interp(nx, ny, r.p.weight_bits);
   int loaded_z = -1;
   auto samples_of = [&](int k, Plane& out) {
     if (k < 0 || k >= K) { out.clear(); return; }

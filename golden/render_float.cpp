@@ -10,7 +10,7 @@
 #include "golden/permuted_volume.hpp"
 #include "golden/renderers.hpp"
 #include "golden/shading_model.hpp"
-#include "golden/units/ray_align.hpp"
+#include "golden/units/composite_ray_align.hpp"
 
 namespace cube4::golden {
 namespace {

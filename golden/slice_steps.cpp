@@ -10,10 +10,10 @@ void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out) {
   for (int y = 0; y < out.ny; ++y) pv.load_beam(y, z, out.row(y));
 }
 
-Interpolator::Interpolator(int nx, int ny, int weight_bits) : nx_(nx), ny_(ny), w_(weight_bits),
+SliceInterp::SliceInterp(int nx, int ny, int weight_bits) : nx_(nx), ny_(ny), w_(weight_bits),
   tx_(static_cast<size_t>(nx) * (ny + 1)), ty_lo_(static_cast<size_t>(nx) * ny), ty_hi_(ty_lo_.size()) {}
 
-void Interpolator::bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out) {
+void SliceInterp::bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out) {
   // Locals, so that stores through int32_t pointers cannot alias them.
   const int nx = nx_, ny = ny_, w = w_;
   for (int y = 0; y <= ny; ++y) {
@@ -37,7 +37,7 @@ void Interpolator::bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<
   }
 }
 
-void Interpolator::slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out) {
+void SliceInterp::slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out) {
   const auto wx = static_cast<int32_t>(c.wx), wy = static_cast<int32_t>(c.wy), wz = static_cast<int32_t>(c.wz);
   const int nx = nx_, ny = ny_, w = w_;
   bilinear(lo, wx, wy, ty_lo_);

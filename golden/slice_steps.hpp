@@ -36,9 +36,9 @@ void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out);
 // trilinear() on each sample's eight voxels (tested). A stage whose weight
 // is zero returns its first operand exactly, so it is not computed.
 // lo, hi: voxel slices z_voxel and z_voxel + 1 with a border of at least 1.
-class Interpolator {
+class SliceInterp {
  public:
-  Interpolator(int nx, int ny, int weight_bits);
+  SliceInterp(int nx, int ny, int weight_bits);
   void slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out);
 
  private:

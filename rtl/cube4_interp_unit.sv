@@ -8,7 +8,7 @@
 // v(x, y, z_in) with x = j*p + k, z_in = z_voxel(k_s) if wz_i = 0 (the sample
 // slice lies on that voxel slice) and z_voxel(k_s) + 1 otherwise. The unit
 // emits, for every voxel (x, y+1) of beams 1 .. ny, the sample S(x, y) of
-// slice k_s: bit-exact golden trilinear() (cube4_trilinear) of
+// slice k_s: bit-exact golden trilinear() (cube4_interp) of
 //   v(x .. x+1, y .. y+1, z_voxel .. z_voxel+1), zero outside the volume.
 // The voxels come from:
 //   - the slice store: voxel slice z_voxel, written from the stream in the
@@ -37,7 +37,7 @@
 //
 // Latency: the sample of input step t (voxel (x, y+1)) leaves the alignment
 // register in the next valid cycle t' (or at t + 1 if t ends a beam: it
-// needs no next column), enters cube4_trilinear then, and appears on
+// needs no next column), enters cube4_interp then, and appears on
 // sample_o 3 cycles later: t + 4 without stalls; the last sample of a pass
 // appears 4 cycles after its last input. One sample per clock.
 // Handshake: valid-only, no back-pressure. Reset: control (valid, alignment
@@ -51,7 +51,7 @@
 // so every voxel slice pair starts with such a pass, which fills the store.
 //
 // Parameters:
-//   VoxelBits, WeightBits - as cube4_trilinear (Precision defaults 12, 8)
+//   VoxelBits, WeightBits - as cube4_interp (Precision defaults 12, 8)
 //   TagBits               - width of the tag that travels with the data
 //   BeamDepth             - beam delay entries: max partial beams per beam
 //   SliceDepth            - slice store entries: max ny * partial beams
@@ -96,7 +96,7 @@ module cube4_interp_unit #(
 );
 
   localparam int unsigned V             = VoxelBits;
-  // Latency of cube4_trilinear (its header): the flags and the tag travel
+  // Latency of cube4_interp (its header): the flags and the tag travel
   // beside it in a shift register of this length.
   localparam int unsigned TriLatency    = 3;
   localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
@@ -211,7 +211,7 @@ module cube4_interp_unit #(
   // Beam 0 only fills the beam delay: no samples.
   assign tri_valid = fire && !slice_start_q;
 
-  cube4_trilinear #(
+  cube4_interp #(
     .VoxelBits (VoxelBits),
     .WeightBits(WeightBits)
   ) u_trilinear (

@@ -2,7 +2,7 @@
 //
 // Function: y = a + round_half_up((b - a) * w / 2^WeightBits), weight w in
 // [0, 2^WeightBits] (w = 0 gives a, w = 2^WeightBits gives b). Bit-exact with
-// golden lerp() (golden/units/trilinear.hpp). The result always lies between
+// golden lerp() (golden/units/interp.hpp). The result always lies between
 // a and b, so it keeps the width of the inputs and needs no saturation.
 //
 // Latency: 0 (combinational). Handshake: none (pure function).

@@ -1,5 +1,5 @@
 // cube4_shade_classify: classification and gradient-magnitude modulation of
-// opacity (VolumePro §3.4), bit-exact with golden/units/classify.hpp and the
+// opacity (VolumePro §3.4), bit-exact with golden/units/shade_classify.hpp and the
 // classification part of golden shade_sample():
 //   entry  = classification[sample]                    (classify)
 //   gm     = magnitude ? gm_unit(GmLUT[|g|]) : one       (gm_unit = expand_bits)

@@ -1,5 +1,5 @@
 // cube4_shade_cube_coord: cube-map coordinates of an unnormalised vector,
-// bit-exact with golden cube_coordinates() (golden/units/cube_map.hpp).
+// bit-exact with golden cube_coordinates() (golden/units/shade_cube_map.hpp).
 //   face  = 2*axis + (c[axis] < 0), axis = the largest |component|, ties to
 //           the lower axis (x before y before z);
 //   m     = |c[axis]|, s = the in-plane component (x: y,z; y: z,x; z: x,y);

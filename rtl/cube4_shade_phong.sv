@@ -1,6 +1,6 @@
 // cube4_shade_phong: the Phong combine of VolumePro §3.5,
 //   RGB = (ke + kd*Id*Gd) * SampleRGB + ks*Is*Gs * SpecularColor,
-// bit-exact with golden phong() (golden/units/phong.hpp):
+// bit-exact with golden phong() (golden/units/shade_phong.hpp):
 //   fd  = ke + round_shift(kd * mul_frac(Id, Gd, AlphaBits), MapFracBits)
 //   fs  =      round_shift(ks * mul_frac(Is, Gs, AlphaBits), MapFracBits)
 //   out = sat_unsigned(round_shift(c * fd, CoefFracBits)

@@ -1,10 +1,10 @@
 // cube4_shade_reflectance: reflectance-map look-up, bit-exact with golden
-// reflectance_lookup() (golden/units/cube_map.hpp): the bilinear
+// reflectance_lookup() (golden/units/shade_cube_map.hpp): the bilinear
 // interpolation bilerp(m(u,v), m(u+1,v), m(u,v+1), m(u+1,v+1), wu, wv) of
 // four map entries of face `face`, and 0 for an invalid coordinate (the zero
 // vector). bilerp = lerp(lerp(m00, m10, wu), lerp(m01, m11, wu), wv) with
 // lerp(a, b, w) = a + round_shift((b - a) * w, WeightBits) (golden
-// trilinear.hpp; the lerps are a private function here).
+// interp.hpp; the lerps are a private function here).
 //
 // The map: 6 * MapFaceRes^2 entries of MapBits, written by the host through
 // a write port addressed like golden map_index() ((face*res + v)*res + u).

@@ -3,7 +3,7 @@
 // width by reduce_vector(): the smallest common right shift s with
 // max|R_i| >> s <= 2^(GradientBits-1)-1, applied to the magnitudes (signs
 // kept). Bit-exact with golden reflection_vector() / reduce_vector()
-// (golden/units/reflection.hpp).
+// (golden/units/shade_reflection.hpp).
 //
 // s = max(0, bit_length(max|R_i|) - (GradientBits-1)), and
 // bit_length(max|R_i|) = bit_length(|R_x| | |R_y| | |R_z|), so no magnitude

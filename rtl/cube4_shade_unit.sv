@@ -1,7 +1,7 @@
 // cube4_shade_unit: one pipeline's shading stage as the system connects it,
 // the gradient unit's output in, the compositing unit's input out:
-//   |g|     = cube4_magnitude(g)                      (MagLatency cycles)
-//   shaded  = cube4_shader(sample, g, |g|)            (the shader's Latency)
+//   |g|     = cube4_shade_magnitude(g)                      (MagLatency cycles)
+//   shaded  = cube4_shade(sample, g, |g|)            (the shader's Latency)
 // The sample, the gradient and the side bits wait MagLatency cycles so that
 // they meet their magnitude at the shader; the shader carries the side bits
 // to its output. Equals golden shade_sample() without cropping and the cut
@@ -16,8 +16,8 @@
 // valid_o. Frame registers and table write ports are the shader's (change
 // them only with no sample in flight).
 //
-// Parameters: those of cube4_shader and cube4_magnitude (NrIterations);
-// SideBits and HasShading as in cube4_shader; HasMagnitude (0: no magnitude
+// Parameters: those of cube4_shade and cube4_shade_magnitude (NrIterations);
+// SideBits and HasShading as in cube4_shade; HasMagnitude (0: no magnitude
 // unit, |g| = 0: equals golden when the magnitude is off, same latency).
 // The system model runs HasShading = HasMagnitude = 0 for scenes without
 // shading and gradient-magnitude modulation (docs/system.md).
@@ -45,7 +45,7 @@ module cube4_shade_unit #(
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
-  // Frame registers (cube4_shader's).
+  // Frame registers (cube4_shade's).
   input  logic                              magnitude_i,
   input  logic                              shading_i,
   input  logic                              specular_i,
@@ -61,7 +61,7 @@ module cube4_shade_unit #(
   input  logic signed [EyeBits-1:0]         eye_x_i,
   input  logic signed [EyeBits-1:0]         eye_y_i,
   input  logic signed [EyeBits-1:0]         eye_z_i,
-  // Host write ports (cube4_shader's).
+  // Host write ports (cube4_shade's).
   input  logic                              class_we_i,
   input  logic [VoxelBits-1:0]              class_waddr_i,
   input  logic [3*ColorBits+AlphaBits-1:0]  class_wdata_i,
@@ -92,7 +92,7 @@ module cube4_shade_unit #(
   output logic [SideBits-1:0]               side_o
 );
 
-  // cube4_magnitude's latency (its header).
+  // cube4_shade_magnitude's latency (its header).
   localparam int unsigned MagLatency = NrIterations + 1;
   localparam int unsigned Carried    = VoxelBits + 3 * GradientBits + SideBits;
 
@@ -100,7 +100,7 @@ module cube4_shade_unit #(
   logic [MagnitudeBits-1:0] magnitude;
 
   if (HasMagnitude) begin : g_magnitude
-    cube4_magnitude #(
+    cube4_shade_magnitude #(
       .GradientBits  (GradientBits),
       .MagnitudeBits (MagnitudeBits),
       .NrIterations  (NrIterations)
@@ -144,7 +144,7 @@ module cube4_shade_unit #(
   logic [SideBits-1:0]            sh_side;
   assign {sh_side, sh_gz, sh_gy, sh_gx, sh_sample} = carry_q[(MagLatency-1)*Carried +: Carried];
 
-  cube4_shader #(
+  cube4_shade #(
     .VoxelBits       (VoxelBits),
     .WeightBits      (WeightBits),
     .GradientBits    (GradientBits),

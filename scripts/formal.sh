@@ -17,7 +17,7 @@
 # Engine flags among a proof's parameters: +noincr runs a fresh z3 per
 # query (z3 then bit-blasts: far faster on the multiplier miters);
 # +yosys-sat uses yosys's own SAT solver (sat -seq K, BMC only) for models
-# z3 does not solve (the skew address generator).
+# z3 does not solve (the address generator, cube4_addr).
 # Internal signals: yosys 0.23 has no hierarchical references, so a harness
 # declares an undriven probe_* wire and the proof lists "probe=signal"; the
 # script connects it to the flattened signal (u_dut.ptr_q) after flatten.

@@ -48,10 +48,10 @@ fi
 
 # Extra parameter sets: "<module> <Name=value>,<Name=value>".
 extra=(
-  "cube4_trilinear WeightBits=6"
-  "cube4_trilinear WeightBits=10"
-  "cube4_shader AlphaBits=8"
-  "cube4_shader AlphaBits=12"
+  "cube4_interp WeightBits=6"
+  "cube4_interp WeightBits=10"
+  "cube4_shade AlphaBits=8"
+  "cube4_shade AlphaBits=12"
   "cube4_composite AlphaBits=8"
   "cube4_composite AlphaBits=12,AccGuardBits=0"
   "cube4_composite_unit AlphaBits=12,AccGuardBits=0"

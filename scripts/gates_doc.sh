@@ -52,7 +52,7 @@ print(f"| five pipelines (Cube-4 prototype) | {5*cells:,.0f} | {5*nand2:,.0f} | 
 print()
 if missing:
     print("Not yet in the total: " + ", ".join(missing) + ".")
-print("Not in the total: the address generator (one per chip, `cube4_skew_addr` above), the "
+print("Not in the total: the address generator (one per chip, `cube4_addr` above), the "
       "stream former and weight generator, the host interface and pixel memory. The storage "
       "units are sized for 256-voxel volumes (MaxDim 256) with p = 4; the vg500 kept its "
       "on-chip storage to 2 Mbit with sectioning (VolumePro §5.4), which is not modelled.")

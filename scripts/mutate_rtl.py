@@ -28,8 +28,7 @@ OPS = [
     (r"!(?=[a-z(])", ""), (r"~(?=[a-z(])", ""),
 ]
 SKIP = re.compile(r"^\s*(//|input|output|parameter|localparam|logic|module|function|endfunction|typedef|`)")
-RTL_TESTS = ["test_rtl_datapath", "test_rtl_interp", "test_rtl_gradient_ring", "test_rtl_shader",
-             "test_rtl_composite_ring"]
+RTL_TESTS = ["test_rtl_addr", "test_rtl_interp", "test_rtl_gradient", "test_rtl_shade", "test_rtl_composite"]
 
 
 def code_part(line):

@@ -12,7 +12,7 @@
 
 #include "golden/fixed.hpp"
 #include "golden/precision.hpp"
-#include "golden/units/phong.hpp"
+#include "golden/units/shade_phong.hpp"
 
 namespace cube4::golden {
 

@@ -6,7 +6,7 @@
 
 #include "golden/fixed.hpp"
 #include "golden/precision.hpp"
-#include "golden/units/trilinear.hpp"
+#include "golden/units/interp.hpp"
 
 namespace cube4::golden {
 

@@ -2,7 +2,7 @@
 // every input): the result never leaves [min(a, b), max(a, b)] (so the
 // unit needs no saturation, as its header claims), both weight ends are
 // exact, and it equals the independent reference lerp of
-// cube4_ref_trilinear (golden lerp_t) for every a, b and w <= 2^W.
+// cube4_ref_interp (golden lerp_t) for every a, b and w <= 2^W.
 module lerp_fv #(
   parameter int unsigned VoxelBits  = 12,
   parameter int unsigned WeightBits = 8,
@@ -32,7 +32,7 @@ module lerp_fv #(
 
   // The reference's voxel 0/1 pair with weight w in x and 0 in y and z is
   // exactly lerp(a, b, w): reuse it rather than write lerp a third time.
-  cube4_ref_trilinear #(
+  cube4_ref_interp #(
     .VoxelBits (VoxelBits),
     .WeightBits(WeightBits),
     .IntBits   (RefIntBits)

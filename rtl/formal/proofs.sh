@@ -12,18 +12,18 @@ mem_probes() {
 }
 
 # cube4_lerp: range and equivalence, combinational.
-proof lerp                 quick bmc 1 lerp_fv "rtl/cube4_lerp.sv $F/cube4_ref_trilinear.sv $F/lerp_fv.sv" "+noincr"
-TRI_PROBES="probe_x_q=u_dut.x_q probe_y_q=u_dut.y_q probe_wy_q=u_dut.wy_q probe_wz1_q=u_dut.wz1_q probe_wz2_q=u_dut.wz2_q probe_valid_q=u_dut.valid_q"
-# cube4_trilinear: equivalence with the reference, range; pipelined.
-TRI_FILES="rtl/cube4_lerp.sv rtl/cube4_trilinear.sv $F/cube4_ref_trilinear.sv $F/trilinear_fv.sv"
+proof lerp                 quick bmc 1 lerp_fv "rtl/cube4_lerp.sv $F/cube4_ref_interp.sv $F/lerp_fv.sv" "+noincr"
+INTERP_PROBES="probe_x_q=u_dut.x_q probe_y_q=u_dut.y_q probe_wy_q=u_dut.wy_q probe_wz1_q=u_dut.wz1_q probe_wz2_q=u_dut.wz2_q probe_valid_q=u_dut.valid_q"
+# cube4_interp: equivalence with the reference, range; pipelined.
+INTERP_FILES="rtl/cube4_lerp.sv rtl/cube4_interp.sv $F/cube4_ref_interp.sv $F/interp_fv.sv"
 # Quick: 6-bit voxels, 3-bit weights (the lerp proof covers the default
 # widths); slow: the default widths (12, 8).
-proof trilinear_v6_x       quick ind 1 trilinear_fv "$TRI_FILES" "VoxelBits=6 WeightBits=3 Stage=1 +noincr" $TRI_PROBES
-proof trilinear_v6_y       quick ind 1 trilinear_fv "$TRI_FILES" "VoxelBits=6 WeightBits=3 Stage=2 +noincr" $TRI_PROBES
-proof trilinear_v6_z       quick ind 1 trilinear_fv "$TRI_FILES" "VoxelBits=6 WeightBits=3 Stage=3 +noincr" $TRI_PROBES
-proof trilinear_x          slow  ind 1 trilinear_fv "$TRI_FILES" "Stage=1 +noincr" $TRI_PROBES
-proof trilinear_y          slow  ind 1 trilinear_fv "$TRI_FILES" "Stage=2 +noincr" $TRI_PROBES
-proof trilinear_z          slow  ind 1 trilinear_fv "$TRI_FILES" "Stage=3 +noincr" $TRI_PROBES
+proof interp_v6_x       quick ind 1 interp_fv "$INTERP_FILES" "VoxelBits=6 WeightBits=3 Stage=1 +noincr" $INTERP_PROBES
+proof interp_v6_y       quick ind 1 interp_fv "$INTERP_FILES" "VoxelBits=6 WeightBits=3 Stage=2 +noincr" $INTERP_PROBES
+proof interp_v6_z       quick ind 1 interp_fv "$INTERP_FILES" "VoxelBits=6 WeightBits=3 Stage=3 +noincr" $INTERP_PROBES
+proof interp_x          slow  ind 1 interp_fv "$INTERP_FILES" "Stage=1 +noincr" $INTERP_PROBES
+proof interp_y          slow  ind 1 interp_fv "$INTERP_FILES" "Stage=2 +noincr" $INTERP_PROBES
+proof interp_z          slow  ind 1 interp_fv "$INTERP_FILES" "Stage=3 +noincr" $INTERP_PROBES
 # cube4_delay_ram: pointer bound with free inputs; FIFO with constant depth.
 DR_FILES="rtl/cube4_delay_ram.sv $F/delay_ram_fv.sv"
 proof delay_ram_ptr_d5      quick ind 1 delay_ram_fv "$DR_FILES" "MaxDepth=5 Fifo=0" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
@@ -42,8 +42,8 @@ proof composite_sat_a8g4    quick ind 1 composite_fv "$CO_FILES" "$CO_NARROW" $C
 proof composite_sat         slow  ind 1 composite_fv "$CO_FILES" "+noincr" $CO_PROBES
 proof bug_composite_frac_round bug bug 10 composite_fv "$F/mutants/composite_frac_round.sed $F/composite_fv.sv" "$CO_NARROW" $CO_PROBES
 proof bug_composite_no_sat  bug   bug 10 composite_fv "$F/mutants/composite_no_sat.sed $F/composite_fv.sv" "$CO_NARROW" $CO_PROBES
-# cube4_skew_addr: conflict-free, correct addresses for every traversal.
-SK_FILES="rtl/cube4_skew_addr.sv $F/skew_addr_fv.sv"
+# cube4_addr: conflict-free, correct addresses for every traversal.
+ADDR_FILES="rtl/cube4_addr.sv $F/addr_fv.sv"
 # z3 gets nowhere on this model (no answer for the first cycle in 5
 # minutes), yosys's SAT solver proves it: +yosys-sat.
 # BMC depth: the first output beat is 9 cycles after reset (reset, start,
@@ -53,10 +53,10 @@ SK_FILES="rtl/cube4_skew_addr.sv $F/skew_addr_fv.sv"
 # ~45 s each at depth 11) and depth 13 are slow.
 for p in 1 2 3 4 5 6 7 8; do
   case $p in 1|2|4|8) g=quick ;; *) g=slow ;; esac
-  proof skew_p$p             $g bmc 11 skew_addr_fv "$SK_FILES" "NumPipes=$p +yosys-sat"
-  proof skew_p${p}_k13       slow  bmc 13 skew_addr_fv "$SK_FILES" "NumPipes=$p +yosys-sat"
+  proof addr_p$p             $g bmc 11 addr_fv "$ADDR_FILES" "NumPipes=$p +yosys-sat"
+  proof addr_p${p}_k13       slow  bmc 13 addr_fv "$ADDR_FILES" "NumPipes=$p +yosys-sat"
 done
-proof bug_skew_rotation     bug   bug 16 skew_addr_fv "$F/mutants/skew_rotation.sed $F/skew_addr_fv.sv" "NumPipes=4 +yosys-sat"
-proof bug_skew_addmod       bug   bug 16 skew_addr_fv "$F/mutants/skew_addmod.sed $F/skew_addr_fv.sv" "NumPipes=5 +yosys-sat"
-proof bug_lerp_half         bug   bug 1 lerp_fv "$F/mutants/lerp_half.sed $F/cube4_ref_trilinear.sv $F/lerp_fv.sv" "+noincr"
-proof bug_trilinear_weight  bug   bug 5 trilinear_fv "rtl/cube4_lerp.sv $F/mutants/trilinear_weight.sed $F/cube4_ref_trilinear.sv $F/trilinear_fv.sv" "VoxelBits=6 WeightBits=3 Stage=3 +noincr" $TRI_PROBES
+proof bug_addr_rotation     bug   bug 16 addr_fv "$F/mutants/addr_rotation.sed $F/addr_fv.sv" "NumPipes=4 +yosys-sat"
+proof bug_addr_addmod       bug   bug 16 addr_fv "$F/mutants/addr_addmod.sed $F/addr_fv.sv" "NumPipes=5 +yosys-sat"
+proof bug_lerp_half         bug   bug 1 lerp_fv "$F/mutants/lerp_half.sed $F/cube4_ref_interp.sv $F/lerp_fv.sv" "+noincr"
+proof bug_interp_weight  bug   bug 5 interp_fv "rtl/cube4_lerp.sv $F/mutants/interp_weight.sed $F/cube4_ref_interp.sv $F/interp_fv.sv" "VoxelBits=6 WeightBits=3 Stage=3 +noincr" $INTERP_PROBES

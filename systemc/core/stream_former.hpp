@@ -3,37 +3,18 @@
 // Pass order (docs/rtl-interp.md): for each pass, beams 0 .. ny (ny is the
 // zero beam: a time slot, no read), partial beams 0 .. B-1. The zero pass
 // (gradient unit on) reads nothing either. The memory addresses come from
-// the address generator (AddrIf: golden beam_access() at TLM, the verilated
-// cube4_skew_addr at RTL), which the former runs one read ahead.
+// the address generator (AddrIf: TlmAddr, systemc/tlm/tlm_addr.hpp, at TLM;
+// RtlAddr, the verilated cube4_addr, at RTL), which the former runs one read
+// ahead.
 #pragma once
 #include <cstdint>
 
-#include "golden/units/skew.hpp"
 #include "systemc/core/beats.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/core/voxel_memory.hpp"
 
 namespace cube4::sysc {
-
-// Address generation at TLM: golden beam_access(), answered one edge later
-// as the RTL does.
-class TlmAddr final : public AddrIf {
- public:
-  TlmAddr(const golden::SkewLayout& l, const golden::SkewTraversal& t) : layout_(l), traversal_(t) {}
-  AddrResult clock(const AddrRequest& next, int j, int y, int z) override {
-    const AddrResult out = pending_;
-    pending_ = AddrResult{};
-    if (next.issue) pending_ = {true, j, y, z, golden::beam_access(layout_, traversal_, y, z, j)};
-    return out;
-  }
-  Level level() const override { return Level::Tlm; }
-
- private:
-  golden::SkewLayout layout_;
-  golden::SkewTraversal traversal_;
-  AddrResult pending_;
-};
 
 class StreamFormer {
  public:

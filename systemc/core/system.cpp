@@ -16,6 +16,7 @@
 #include "systemc/core/voxel_memory.hpp"
 #include "systemc/rtl/rtl_factory.hpp"
 #include "systemc/tlm/gradient_bypass.hpp"
+#include "systemc/tlm/tlm_addr.hpp"
 #include "systemc/tlm/tlm_composite.hpp"
 #include "systemc/tlm/tlm_frame.hpp"
 #include "systemc/tlm/tlm_gradient.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <systemc>
 
-#include "golden/units/skew.hpp"
+#include "golden/units/addr.hpp"
 #include "systemc/core/beats.hpp"
 
 namespace cube4::sysc {

@@ -1,4 +1,4 @@
-// Voxel memory: p modules with the Cube-4 linear skew (golden/units/skew.hpp),
+// Voxel memory: p modules with the Cube-4 linear skew (golden/units/addr.hpp),
 // one read port each. The model counts the accesses of every module in
 // every cycle and throws if one is accessed twice: the skew's promise, which
 // the traversal must keep for any view.
@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "golden/units/skew.hpp"
+#include "golden/units/addr.hpp"
 #include "golden/volume.hpp"
 
 namespace cube4::sysc {

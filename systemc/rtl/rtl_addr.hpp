@@ -1,7 +1,7 @@
-// Address generation at RTL: cube4_skew_addr, started and set up before the
+// Address generation at RTL: cube4_addr, started and set up before the
 // frame (its 6 setup cycles are not frame cycles), then one edge per clock.
 #pragma once
-#include "golden/units/skew.hpp"
+#include "golden/units/addr.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/rtl/rtl_model.hpp"
@@ -11,7 +11,7 @@ namespace cube4::sysc {
 template <class M>
 class RtlAddr final : public AddrIf {
  public:
-  static constexpr int kDimBits = 10;  // cube4_skew_addr's default
+  static constexpr int kDimBits = 10;  // cube4_addr's default
 
   RtlAddr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx, const TraceWindow& trace)
       : p_(plan.p), index_bits_(3 * kDimBits + 4 - clog2(plan.p + 1)), m_(ctx, "addr", trace, "addr") {

@@ -2,7 +2,7 @@
 // RTL wrappers (rtl_composite.hpp, rtl_shade.hpp) and the units' testbenches
 // (tb/rtl) drive them through these, so a port the RTL adds or widens is
 // bound in one place. Header-only, on any verilated model with the ports
-// (cube4_composite / _unit / _ring; cube4_shade_unit, cube4_shader and its
+// (cube4_composite / _unit / _ring; cube4_shade_unit, cube4_shade and its
 // table-holding parts).
 #pragma once
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Interpolation unit at transaction level: collects a pass of voxel beats
-// into a slice, interpolates it with golden Interpolator (the renderer's
+// into a slice, interpolates it with golden SliceInterp (the renderer's
 // own), and streams the sample slice out, one beat per clock, after the
 // pass has arrived. Its latency is a pass, not the RTL's 4 cycles; the
 // stream it emits keeps the ring's protocol (B idle cycles after each
@@ -22,7 +22,7 @@ class TlmInterp final : public InterpIf {
  private:
   const FramePlan& plan_;
   golden::Plane pass_, store_, samples_;
-  golden::Interpolator interp_;
+  golden::SliceInterp interp_;
   int y_ = 0, j_ = 0;
   std::deque<SampleBeat> out_;
 };

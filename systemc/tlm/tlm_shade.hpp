@@ -13,7 +13,7 @@ namespace cube4::sysc {
 
 // cube4_shade_unit's latency: magnitude (NrIterations + 1), then the
 // shader: reflection 4 + cube coordinates (1 + ceil((log2 res + W) / 2)) +
-// reflectance 3 + phong 3 (rtl/cube4_shader.sv, DivBitsPerStage = 2).
+// reflectance 3 + phong 3 (rtl/cube4_shade.sv, DivBitsPerStage = 2).
 int shade_latency(const golden::Precision& p);
 
 class TlmShade final : public ShadeIf {

@@ -66,17 +66,6 @@ std::string mismatch_report(uint64_t cycle, int pipe, int p, const std::vector<c
   return o.str();
 }
 
-// Prints how long a stage of a test took (the rings' tests are the longest).
-struct Timer {
-  std::string what;
-  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
-  explicit Timer(std::string w) : what(std::move(w)) {}
-  ~Timer() {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
-  }
-};
-
 struct View {
   const char* name;
   std::array<double, 3> dir, up;

@@ -14,7 +14,9 @@
 
 #include "systemc/rtl/vl_bits.hpp"
 
+#include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <deque>
 #include <random>
@@ -219,5 +221,48 @@ class Checker {
   uint64_t checked_ = 0, mismatches_ = 0;
   std::string report_;
 };
+
+// ---------------------------------------------------------------------------
+// Prints how long a stage of a test took (the million-vector runs and the
+// rings' tests are the longest).
+struct Timer {
+  std::string what;
+  std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  explicit Timer(std::string w) : what(std::move(w)) {}
+  ~Timer() {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::printf("  [%s: %.2f s]\n", what.c_str(), s);
+  }
+};
+
+// Probability of valid_i in the datapath tests' stream with random gaps.
+constexpr double kGapValid = 0.6;
+
+// Drives a valid-only pipeline: `count` input sets from gen(i), each in a
+// cycle with valid_i high (probability valid_prob, junk inputs otherwise),
+// then drains. Returns the number of cycles run.
+template <class M, class In, class Out, class Gen, class Drive, class Golden, class Read>
+uint64_t run_stream(M& m, Scoreboard<In, Out>& sb, long count, double valid_prob, Random& rng, Gen gen,
+                Drive drive, Golden golden, Read read, int latency) {
+  reset(m);
+  uint64_t cycle = 0;
+  long sent = 0;
+  uint64_t drain = 0;
+  while (sent < count || drain <= static_cast<uint64_t>(latency)) {
+    const bool v = sent < count && (valid_prob >= 1.0 || rng.chance(valid_prob));
+    const In in = v ? gen(sent) : gen(-1);
+    drive(m, in);
+    m.valid_i = v;
+    if (v) sb.expect(cycle, in, golden(in));
+    settle(m);
+    sb.observe(cycle, m.valid_o, read(m));
+    rise(m);
+    if (v) ++sent;
+    if (sent >= count) ++drain;
+    ++cycle;
+  }
+  sb.finish();
+  return cycle;
+}
 
 }  // namespace cube4::rtl

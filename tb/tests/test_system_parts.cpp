@@ -12,6 +12,7 @@
 #include "systemc/core/stream_checker.hpp"
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/voxel_memory.hpp"
+#include "systemc/tlm/tlm_addr.hpp"
 
 namespace {
 

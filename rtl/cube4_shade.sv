@@ -1,4 +1,4 @@
-// cube4_shader: the classification-and-shading unit of one rendering
+// cube4_shade: the classification-and-shading unit of one rendering
 // pipeline, bit-exact with golden shade_sample() (golden/pipeline.hpp)
 // without cropping and the cut plane (those act in cube4_composite):
 //   value  = sample
@@ -39,7 +39,7 @@
 // Latency cycles, for the system's per-sample position and tag);
 // HasShading (0: no shading hardware, for machines and scenes without it;
 // shading_i is then ignored and the unit equals golden with shading off).
-module cube4_shader #(
+module cube4_shade #(
   parameter int unsigned VoxelBits       = 12,
   parameter int unsigned WeightBits      = 8,
   parameter int unsigned GradientBits    = 8,

@@ -1,7 +1,7 @@
-// cube4_trilinear: the interpolation unit, trilinear interpolation of eight
+// cube4_interp: the interpolation unit, trilinear interpolation of eight
 // voxels to one sample in Cube-4's SFG order: x, then y, then z.
 //
-// Function: bit-exact with golden trilinear() (golden/units/trilinear.hpp):
+// Function: bit-exact with golden trilinear() (golden/units/interp.hpp):
 //   front  = lerp(lerp(v0, v1, wx), lerp(v2, v3, wx), wy)
 //   back   = lerp(lerp(v4, v5, wx), lerp(v6, v7, wx), wy)
 //   sample = lerp(front, back, wz)
@@ -20,7 +20,7 @@
 //   VoxelBits  - voxel and sample width (golden Precision::voxel_bits, 12)
 //   WeightBits - weight fraction bits; weight ports are WeightBits+1 wide
 //                (Precision::weight_bits, 8)
-module cube4_trilinear #(
+module cube4_interp #(
   parameter int unsigned VoxelBits  = 12,
   parameter int unsigned WeightBits = 8
 ) (

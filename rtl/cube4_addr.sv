@@ -1,6 +1,6 @@
-// cube4_skew_addr: address generation for Cube-4's skewed voxel memory.
+// cube4_addr: address generation for Cube-4's skewed voxel memory.
 //
-// Function: bit-exact with golden beam_access() (golden/units/skew.hpp),
+// Function: bit-exact with golden beam_access() (golden/units/addr.hpp),
 // which defines the layout, the traversal and the de-skew:
 //   module(x, y, z) = (x + y + z) mod p
 //   index(x, y, z)  = floor(x / p) + B_x * (y + P_y * z)
@@ -50,7 +50,7 @@
 //   IndexBits - width of a module index; the default holds any volume of
 //               DimBits-wide dims
 //   PipeBits  - (derived) width of a module number
-module cube4_skew_addr #(
+module cube4_addr #(
   parameter int unsigned  NumPipes  = 4,
   parameter int unsigned  DimBits   = 10,
   parameter int unsigned  IndexBits = 3 * DimBits + 4 - $clog2(NumPipes + 1),

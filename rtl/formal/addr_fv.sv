@@ -1,9 +1,9 @@
-// Formal harness for cube4_skew_addr: in every cycle with valid_o, for
+// Formal harness for cube4_addr: in every cycle with valid_o, for
 // every traversal (perm a permutation, any flip), every pipeline k's voxel
 // (permuted x = beam_o * p + k, beam y_o, slice z_o) lies in the module the
 // de-skew takes it from, (rotation_o +- k) mod p, and that module is
 // presented that voxel's index: golden skew_address() of golden
-// skew_object_coordinate(), written here from golden/units/skew.hpp. So
+// skew_object_coordinate(), written here from golden/units/addr.hpp. So
 // the p pipelines read p different modules, each module once, at the
 // right word: no module is addressed twice in a cycle. Also: rotation_o <
 // p, reverse_o = flip[0], and the position is inside the traversal.
@@ -13,7 +13,7 @@
 //
 // Proof: BMC from reset (the unit's traversal state is not reset and
 // would need an inductive invariant per walker: see docs/verification.md).
-module skew_addr_fv #(
+module addr_fv #(
   parameter int unsigned NumPipes = 4,
   parameter int unsigned DimBits  = 3,
   // Also check the index presented to each module (multiplications of
@@ -45,7 +45,7 @@ module skew_addr_fv #(
   logic [PipeBits-1:0] rotation;
   logic [D-1:0]        beam, y, z;
 
-  cube4_skew_addr #(
+  cube4_addr #(
     .NumPipes(NumPipes),
     .DimBits (DimBits)
   ) u_dut (

@@ -1,8 +1,8 @@
-// cube4_magnitude: gradient magnitude |g| by an integer Newton-Raphson
+// cube4_shade_magnitude: gradient magnitude |g| by an integer Newton-Raphson
 // square root (VolumePro §3.3).
 //
 // Function: bit-exact with golden gradient_magnitude()
-// (golden/units/magnitude.hpp):
+// (golden/units/shade_magnitude.hpp):
 //   q  = gx^2 + gy^2 + gz^2
 //   x0 = 2^ceil(bitlength(q) / 2)            (>= sqrt(q))
 //   x_{i+1} = (x_i + floor(q / x_i)) >> 1,   i = 0 .. NrIterations-1
@@ -21,7 +21,7 @@
 //   GradientBits  - signed input component width (golden Precision::gradient_bits, 8)
 //   MagnitudeBits - unsigned output width (Precision::magnitude_bits, 8)
 //   NrIterations  - Newton-Raphson steps (Precision::nr_iterations, 3)
-module cube4_magnitude #(
+module cube4_shade_magnitude #(
   parameter int unsigned GradientBits  = 8,
   parameter int unsigned MagnitudeBits = 8,
   parameter int unsigned NrIterations  = 3

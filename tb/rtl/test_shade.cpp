@@ -1,6 +1,6 @@
 // RTL equivalence tests of the classification and shading units:
 // cube4_shade_classify, cube4_shade_cube_coord, cube4_shade_reflection,
-// cube4_shade_reflectance, cube4_shade_phong and their top, cube4_shader.
+// cube4_shade_reflectance, cube4_shade_phong and their top, cube4_shade.
 //
 // Every unit is driven cycle by cycle (back to back and with random valid
 // gaps, junk on the data inputs in the gaps); every output is compared with
@@ -29,10 +29,10 @@
 #include "Vcube4_shade_phong.h"
 #include "Vcube4_shade_reflectance.h"
 #include "Vcube4_shade_reflection.h"
-#include "Vcube4_shader.h"
-#include "Vcube4_shader_small.h"
-#include "Vcube4_shader_wide.h"
-#include "Vcube4_shader_noshade.h"
+#include "Vcube4_shade.h"
+#include "Vcube4_shade_small.h"
+#include "Vcube4_shade_wide.h"
+#include "Vcube4_shade_noshade.h"
 #include "golden/host_driver.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/scene_io.hpp"
@@ -207,7 +207,7 @@ g::HostProgram sphere_program(const std::string& extra_json, g::Volume* volume_o
   const std::string json =
       R"({"volume": {"synthetic": "sphere", "size": [24, 24, 24]}, "view": {"rotate": [20, 30, 0]})" +
       (extra_json.empty() ? std::string() : ", " + extra_json) + "}";
-  const g::Scene s = g::parse_scene(json, "test_shader sphere scene");
+  const g::Scene s = g::parse_scene(json, "test_shade sphere scene");
   g::Volume v = g::make_synthetic(s.volume, s.precision.voxel_bits);
   g::HostProgram h = g::program_host(s, v);
   if (volume_out) *volume_out = std::move(v);
@@ -853,7 +853,7 @@ TEST(RtlShadePhong, Random) {
 }
 
 // ===========================================================================
-// cube4_shader: the whole unit against golden shade_sample()
+// cube4_shade: the whole unit against golden shade_sample()
 // ===========================================================================
 struct ShaderIn {
   g::Neighbourhood n;  // what the golden shade_sample() is given
@@ -1058,14 +1058,14 @@ void shader_random(const std::string& name, const g::Precision& p, int div_bits,
   EXPECT_GE(b.vectors, static_cast<uint64_t>(n));
 }
 
-TEST(RtlShader, RandomTablesAndModes) {
-  shader_random<Vcube4_shader>("cube4_shader", kP, 2, rtl::vector_count(1000000));
+TEST(RtlShade, RandomTablesAndModes) {
+  shader_random<Vcube4_shade>("cube4_shade", kP, 2, rtl::vector_count(1000000));
 }
 
 // Without shading hardware (HasShading = 0, what the system uses for scenes
 // without shading): every mode combination, shading_i random and ignored.
-TEST(RtlShader, WithoutShadingHardware) {
-  shader_random<Vcube4_shader_noshade>("cube4_shader (HasShading=0)", kP, 2, rtl::vector_count(300000), false);
+TEST(RtlShade, WithoutShadingHardware) {
+  shader_random<Vcube4_shade_noshade>("cube4_shade (HasShading=0)", kP, 2, rtl::vector_count(300000), false);
 }
 
 // The host driver's tables and registers for sphere scenes, and samples
@@ -1112,9 +1112,9 @@ void shader_host(const std::string& name, const g::Precision& p, int div_bits, c
   EXPECT_TRUE(b.result());
 }
 
-TEST(RtlShader, HostDriverSphereScenes) { shader_host<Vcube4_shader>("cube4_shader", kP, 2, ""); }
+TEST(RtlShade, HostDriverSphereScenes) { shader_host<Vcube4_shade>("cube4_shade", kP, 2, ""); }
 
-// Other widths (rtl/groups/shader.cmake verilates cube4_shader with the same
+// Other widths (rtl/groups/shader.cmake verilates cube4_shade with the same
 // values): odd colour/alpha/GmLUT ratios, a non-power-of-two map face, a
 // 3-bit-per-stage divider; and the smallest widths: GmLUT wider than alpha,
 // 2x2 map faces, no coefficient fraction bits, a 1-bit-per-stage divider.
@@ -1164,14 +1164,14 @@ const char* kSmallPrecisionJson =
     R"( "magnitude_bits": 4, "color_bits": 8, "alpha_bits": 8, "gmlut_bits": 16, "map_face_res": 2,)"
     R"( "map_bits": 8, "map_frac_bits": 7, "coef_bits": 4, "coef_frac_bits": 0, "eye_bits": 4})";
 
-TEST(RtlShader, OtherWidthsWide) {
-  shader_random<Vcube4_shader_wide>("cube4_shader (wide widths)", wide_precision(), 3, 300000);
-  shader_host<Vcube4_shader_wide>("cube4_shader (wide widths)", wide_precision(), 3, kWidePrecisionJson);
+TEST(RtlShade, OtherWidthsWide) {
+  shader_random<Vcube4_shade_wide>("cube4_shade (wide widths)", wide_precision(), 3, 300000);
+  shader_host<Vcube4_shade_wide>("cube4_shade (wide widths)", wide_precision(), 3, kWidePrecisionJson);
 }
 
-TEST(RtlShader, OtherWidthsSmall) {
-  shader_random<Vcube4_shader_small>("cube4_shader (small widths)", small_precision(), 1, 300000);
-  shader_host<Vcube4_shader_small>("cube4_shader (small widths)", small_precision(), 1, kSmallPrecisionJson);
+TEST(RtlShade, OtherWidthsSmall) {
+  shader_random<Vcube4_shade_small>("cube4_shade (small widths)", small_precision(), 1, 300000);
+  shader_host<Vcube4_shade_small>("cube4_shade (small widths)", small_precision(), 1, kSmallPrecisionJson);
 }
 
 }  // namespace

@@ -1,18 +1,18 @@
-// cube4_ref_trilinear: a second, independent statement of golden trilinear()
-// (golden/units/trilinear.hpp, golden lerp_t) for the equivalence proof
-// against cube4_trilinear. Written from the golden C++ only: plain signed
+// cube4_ref_interp: a second, independent statement of golden trilinear()
+// (golden/units/interp.hpp, golden lerp_t) for the equivalence proof
+// against cube4_interp. Written from the golden C++ only: plain signed
 // integer arithmetic of one width IntBits throughout, as golden's lerp_t<T>
 // for a signed T, floor shift (>>> on a signed value, like C++ >> on int),
 // no pipeline. It is not meant to be synthesised; it is the specification
 // in SV.
 //
-// Parameters: VoxelBits, WeightBits as cube4_trilinear; weights in
+// Parameters: VoxelBits, WeightBits as cube4_interp; weights in
 // [0, 2^WeightBits] are the precondition (the miter assumes it). IntBits is
 // golden's T: any signed width that holds (b - a) * w + 2^(W-1), i.e.
 // >= VoxelBits + WeightBits + 2 (golden uses int32_t and int64_t; the
 // miters use the smallest, which z3 proves far faster: see
 // docs/verification.md).
-module cube4_ref_trilinear #(
+module cube4_ref_interp #(
   parameter int unsigned VoxelBits  = 12,
   parameter int unsigned WeightBits = 8,
   parameter int unsigned IntBits    = 32

@@ -1,5 +1,5 @@
-// Formal harness for cube4_trilinear: an equivalence miter against the
-// independent reference cube4_ref_trilinear (golden trilinear()), plus the
+// Formal harness for cube4_interp: an equivalence miter against the
+// independent reference cube4_ref_interp (golden trilinear()), plus the
 // saturation property: every stage's result lies between the smallest and
 // largest of the eight voxels it came from (so the sample never leaves the
 // voxel range and needs no clamp). All inputs are free in every cycle,
@@ -21,7 +21,7 @@
 // query in seconds to minutes; all seven in one induction step, or the
 // output against one seven-lerp reference of the inputs three cycles
 // back, gave no result in 5 minutes.
-module trilinear_fv #(
+module interp_fv #(
   parameter int unsigned VoxelBits  = 12,
   parameter int unsigned WeightBits = 8,
   // The reference's integer width (golden's T): the smallest that holds
@@ -46,7 +46,7 @@ module trilinear_fv #(
   logic         valid;
   logic [V-1:0] sample;
 
-  cube4_trilinear #(
+  cube4_interp #(
     .VoxelBits (VoxelBits),
     .WeightBits(WeightBits)
   ) u_dut (
@@ -68,7 +68,7 @@ module trilinear_fv #(
   logic [V-1:0]        z_ref, z_exp_q;
   logic [WeightBits:0] wy_exp_q, wz_exp1_q, wz_exp_q;
 
-  cube4_ref_trilinear #(
+  cube4_ref_interp #(
     .VoxelBits (VoxelBits),
     .WeightBits(WeightBits),
     .IntBits   (RefIntBits)
@@ -90,7 +90,7 @@ module trilinear_fv #(
     assign y_in[(2*i+1)*V +: V] = '0;
   end
 
-  cube4_ref_trilinear #(
+  cube4_ref_interp #(
     .VoxelBits (VoxelBits),
     .WeightBits(WeightBits),
     .IntBits   (RefIntBits)
@@ -105,7 +105,7 @@ module trilinear_fv #(
   );
 
   // Voxel 0 = front, voxel 4 = back, wx = wy = 0: the sample is the z lerp.
-  cube4_ref_trilinear #(
+  cube4_ref_interp #(
     .VoxelBits (VoxelBits),
     .WeightBits(WeightBits),
     .IntBits   (RefIntBits)
