@@ -25,6 +25,7 @@ using cube4::rtl::Fields;
 using cube4::rtl::Random;
 using cube4::rtl::Scoreboard;
 using cube4::rtl::Timer;
+using cube4::rtl::put_bits;
 using cube4::rtl::run_stream;
 using cube4::rtl::sign_extend;
 

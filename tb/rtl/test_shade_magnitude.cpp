@@ -28,6 +28,7 @@ using cube4::rtl::Random;
 using cube4::rtl::Scoreboard;
 using cube4::rtl::Timer;
 using cube4::rtl::run_stream;
+using cube4::rtl::sign_extend;
 
 constexpr int magnitude_latency(int nr_iterations) { return nr_iterations + 1; }  // the module's header
 // Random vectors per parameter set: a stream with valid_i always high, and
