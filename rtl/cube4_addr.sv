@@ -51,8 +51,8 @@
 //               DimBits-wide dims
 //   PipeBits  - (derived) width of a module number
 module cube4_addr #(
-  parameter int unsigned  NumPipes  = 4,
-  parameter int unsigned  DimBits   = 10,
+  parameter int unsigned  NumPipes  = cube4_pkg::NumPipes,
+  parameter int unsigned  DimBits   = cube4_pkg::DimBits,
   parameter int unsigned  IndexBits = 3 * DimBits + 4 - $clog2(NumPipes + 1),
   localparam int unsigned PipeBits  = (NumPipes > 1) ? $clog2(NumPipes) : 1
 ) (

@@ -46,14 +46,14 @@
 // HasCutPlane (0: no cut-plane hardware, cut_enabled_i is ignored; equals
 // golden with cut_enabled false; same latency).
 module cube4_composite #(
-  parameter int unsigned VoxelBits   = 12,
-  parameter int unsigned WeightBits  = 8,
-  parameter int unsigned AlphaBits   = 16,
-  parameter int unsigned AccGuardBits = 8,
-  parameter int unsigned CutBits     = 32,
-  parameter int unsigned CutInvShift = 24,
-  parameter int unsigned PosBits     = 16,
-  parameter int unsigned CutCoefBits = 12,
+  parameter int unsigned VoxelBits   = cube4_pkg::VoxelBits,
+  parameter int unsigned WeightBits  = cube4_pkg::WeightBits,
+  parameter int unsigned AlphaBits   = cube4_pkg::AlphaBits,
+  parameter int unsigned AccGuardBits = cube4_pkg::AccGuardBits,
+  parameter int unsigned CutBits     = cube4_pkg::CutBits,
+  parameter int unsigned CutInvShift = cube4_pkg::CutInvShift,
+  parameter int unsigned PosBits     = cube4_pkg::PosBits,
+  parameter int unsigned CutCoefBits = cube4_pkg::CutCoefBits,
   // 0: no cut-plane hardware (stages 1..5 keep their timing, the factor is
   // one); for machines and scenes without a cut plane (docs/rtl-composite.md).
   parameter bit          HasCutPlane = 1'b1
@@ -61,7 +61,7 @@ module cube4_composite #(
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
   // Frame registers: blend mode (golden BlendMode), cropping (CropRegs).
-  input  logic [1:0]                           blend_mode_i,
+  input  cube4_pkg::blend_e                    blend_mode_i,
   input  logic                                 crop_enabled_i,
   input  logic [PosBits-1:0]                   crop_x_lo_i,
   input  logic [PosBits-1:0]                   crop_x_hi_i,
@@ -121,42 +121,11 @@ module cube4_composite #(
   localparam int unsigned RampBits = CutBits + InvBits + 1;          // product + rounding
   localparam int unsigned Latency  = 7;
 
-  // mul_frac(x, f, A) = (x * (f + (f >> (A-1))) + 2^(A-1)) >> A, never above x.
-  function automatic logic [A-1:0] mul_frac(input logic [A-1:0] x, input logic [A-1:0] f);
-    logic [A:0]     f_unit;
-    logic [2*A:0]   prod;
-    f_unit   = {1'b0, f} + (A+1)'(f[A-1]);
-    prod     = (2*A+1)'(x) * (2*A+1)'(f_unit) + ((2*A+1)'(1) << (A - 1));
-    mul_frac = A'(prod >> A);
-  endfunction
-
-  // The same product in the accumulator domain (golden mul_frac at A + G).
-  function automatic logic [AB-1:0] mul_frac_acc(input logic [AB-1:0] x, input logic [AB-1:0] f);
-    logic [AB:0]    f_unit;
-    logic [2*AB:0]  prod;
-    f_unit       = {1'b0, f} + (AB+1)'(f[AB-1]);
-    prod         = (2*AB+1)'(x) * (2*AB+1)'(f_unit) + ((2*AB+1)'(1) << (AB - 1));
-    mul_frac_acc = AB'(prod >> AB);
-  endfunction
-
   // golden to_acc(): a unit value widened by bit replication, 1.0 -> 1.0.
   function automatic logic [AB-1:0] to_acc(input logic [A-1:0] v);
     to_acc = (AB'(v) << G) | (AB'(v) >> (A - G));
   endfunction
 
-  // golden premultiply() = min(mul_frac(to_acc(c), alpha, A), to_acc(alpha)):
-  // the product is never above to_acc(c), so AB bits hold it; the clamp
-  // keeps premultiplied colour <= alpha (a no-op when G = 0).
-  function automatic logic [AB-1:0] premultiply(input logic [A-1:0] c, input logic [A-1:0] f);
-    logic [A:0]      f_unit;
-    logic [AB+A:0]   prod;
-    logic [AB-1:0]   product, limit;
-    f_unit      = {1'b0, f} + (A+1)'(f[A-1]);
-    prod        = (AB+A+1)'(to_acc(c)) * (AB+A+1)'(f_unit) + ((AB+A+1)'(1) << (A - 1));
-    product     = AB'(prod >> A);
-    limit       = to_acc(f);
-    premultiply = (product < limit) ? product : limit;
-  endfunction
 
   logic [Latency-1:0] valid_q;
 
@@ -304,23 +273,42 @@ module cube4_composite #(
                                  cut_inv_falloff_i, cut_keep_inside_i, wx_i, wy_i, wz_i};
   end
 
+  logic [A-1:0] cut_alpha;
+  cube4_mul_frac #(.XBits(A), .FBits(A)) u_cut_alpha (
+    .x_i(alpha_q[3*A +: A]), .f_i(factor), .y_o(cut_alpha));
+
   logic [A-1:0] cut_alpha_q;
   logic         visible_q;
   always_ff @(posedge clk_i) begin : stage5_regs
-    cut_alpha_q <= (HasCutPlane && cut_enabled_i) ? mul_frac(alpha_q[3*A +: A], factor) : alpha_q[3*A +: A];
+    cut_alpha_q <= (HasCutPlane && cut_enabled_i) ? cut_alpha : alpha_q[3*A +: A];
     visible_q   <= visible1_q[3] && (!(HasCutPlane && cut_enabled_i) || factor != '0);
   end
 
   ///////////////////////////////////////////
   // Stage 6: premultiplied sample colour  //
   ///////////////////////////////////////////
+  // golden premultiply() = min(mul_frac(to_acc(c), alpha, A), to_acc(alpha)):
+  // the product is never above to_acc(c), so AB bits hold it; the clamp
+  // keeps premultiplied colour <= alpha (a no-op when G = 0).
+  logic [AB-1:0]   pre_limit;
+  logic [3*AB-1:0] pre_product, premultiplied;  // blue at [0 +: AB], green, red
+  assign pre_limit = to_acc(cut_alpha_q);
+  for (genvar ch = 0; ch < 3; ch++) begin : g_premultiply
+    logic [AB-1:0] colour;
+    assign colour = to_acc(rgb_q[4*3*A + ch*A +: A]);
+    cube4_mul_frac #(.XBits(AB), .FBits(A)) u_product (
+      .x_i(colour), .f_i(cut_alpha_q), .y_o(pre_product[ch*AB +: AB]));
+    assign premultiplied[ch*AB +: AB] =
+        (pre_product[ch*AB +: AB] < pre_limit) ? pre_product[ch*AB +: AB] : pre_limit;
+  end
+
   logic [AB-1:0] pre_red_q, pre_green_q, pre_blue_q, pre_alpha_q;
   logic          pre_visible_q;
   always_ff @(posedge clk_i) begin : stage6_regs
-    pre_red_q     <= premultiply(rgb_q[4*3*A+2*A +: A], cut_alpha_q);
-    pre_green_q   <= premultiply(rgb_q[4*3*A+A +: A], cut_alpha_q);
-    pre_blue_q    <= premultiply(rgb_q[4*3*A +: A], cut_alpha_q);
-    pre_alpha_q   <= to_acc(cut_alpha_q);
+    pre_red_q     <= premultiplied[2*AB +: AB];
+    pre_green_q   <= premultiplied[AB +: AB];
+    pre_blue_q    <= premultiplied[0 +: AB];
+    pre_alpha_q   <= pre_limit;
     pre_visible_q <= visible_q;
   end
 
@@ -332,6 +320,17 @@ module cube4_composite #(
   logic [AB-1:0] transparency;
   assign transparency = {AB{1'b1}} - acc_alpha_i;
 
+  // The four products in the accumulator domain (golden mul_frac at A + G).
+  logic [AB-1:0] add_red, add_green, add_blue, add_alpha;
+  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_red (
+    .x_i(transparency), .f_i(pre_red_q), .y_o(add_red));
+  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_green (
+    .x_i(transparency), .f_i(pre_green_q), .y_o(add_green));
+  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_blue (
+    .x_i(transparency), .f_i(pre_blue_q), .y_o(add_blue));
+  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_alpha (
+    .x_i(transparency), .f_i(pre_alpha_q), .y_o(add_alpha));
+
   function automatic logic [AB-1:0] add_sat(input logic [AB-1:0] acc, input logic [AB-1:0] inc);
     logic [AB:0] sum;
     sum     = {1'b0, acc} + {1'b0, inc};
@@ -341,7 +340,7 @@ module cube4_composite #(
   logic [VoxelBits-1:0] sample_value;
   logic                 sample_value_wins, take;
   assign sample_value      = value_q[5*VoxelBits +: VoxelBits];
-  assign sample_value_wins = (blend_mode_i == 2'd1) ? (sample_value > acc_value_i)
+  assign sample_value_wins = (blend_mode_i == cube4_pkg::BlendMip) ? (sample_value > acc_value_i)
                                                     : (sample_value < acc_value_i);
   assign take = !acc_selected_i || sample_value_wins;
 
@@ -354,7 +353,7 @@ module cube4_composite #(
     value_o    <= acc_value_i;
     selected_o <= acc_selected_i;
     if (pre_visible_q) begin
-      if (blend_mode_i == 2'd1 || blend_mode_i == 2'd2) begin
+      if (blend_mode_i == cube4_pkg::BlendMip || blend_mode_i == cube4_pkg::BlendMinIp) begin
         if (take) begin
           red_o      <= pre_red_q;
           green_o    <= pre_green_q;
@@ -364,10 +363,10 @@ module cube4_composite #(
           selected_o <= 1'b1;
         end
       end else begin
-        red_o   <= add_sat(acc_red_i, mul_frac_acc(transparency, pre_red_q));
-        green_o <= add_sat(acc_green_i, mul_frac_acc(transparency, pre_green_q));
-        blue_o  <= add_sat(acc_blue_i, mul_frac_acc(transparency, pre_blue_q));
-        alpha_o <= acc_alpha_i + mul_frac_acc(transparency, pre_alpha_q);
+        red_o   <= add_sat(acc_red_i, add_red);
+        green_o <= add_sat(acc_green_i, add_green);
+        blue_o  <= add_sat(acc_blue_i, add_blue);
+        alpha_o <= acc_alpha_i + add_alpha;
       end
     end
   end

@@ -28,24 +28,24 @@
 //                                       and ray slice store entries:
 //                                       ceil(MaxDim / p) and MaxDim * that
 module cube4_composite_ring #(
-  parameter int unsigned  NumPipes    = 4,
-  parameter int unsigned  VoxelBits   = 12,
-  parameter int unsigned  WeightBits  = 8,
-  parameter int unsigned  AlphaBits   = 16,
-  parameter int unsigned  AccGuardBits = 8,
-  parameter int unsigned  CutBits     = 32,
-  parameter int unsigned  CutInvShift = 24,
-  parameter int unsigned  PosBits     = 16,
-  parameter int unsigned  CutCoefBits = 12,
+  parameter int unsigned  NumPipes    = cube4_pkg::NumPipes,
+  parameter int unsigned  VoxelBits   = cube4_pkg::VoxelBits,
+  parameter int unsigned  WeightBits  = cube4_pkg::WeightBits,
+  parameter int unsigned  AlphaBits   = cube4_pkg::AlphaBits,
+  parameter int unsigned  AccGuardBits = cube4_pkg::AccGuardBits,
+  parameter int unsigned  CutBits     = cube4_pkg::CutBits,
+  parameter int unsigned  CutInvShift = cube4_pkg::CutInvShift,
+  parameter int unsigned  PosBits     = cube4_pkg::PosBits,
+  parameter int unsigned  CutCoefBits = cube4_pkg::CutCoefBits,
   parameter bit           HasCutPlane = 1'b1,
-  parameter int unsigned  MaxDim      = 256,
+  parameter int unsigned  MaxDim      = cube4_pkg::MaxDim,
   localparam int unsigned BeamDepth   = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth  = MaxDim * BeamDepth
 ) (
   input  logic                             clk_i,
   input  logic                             rst_ni,
   // Frame registers of cube4_composite.
-  input  logic [1:0]                       blend_mode_i,
+  input  cube4_pkg::blend_e                blend_mode_i,
   input  logic                             crop_enabled_i,
   input  logic [PosBits-1:0]               crop_x_lo_i,
   input  logic [PosBits-1:0]               crop_x_hi_i,

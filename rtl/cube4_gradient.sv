@@ -27,11 +27,11 @@
 //   GradientShift     - full difference >> shift (Precision::gradient_shift, 5)
 //   SupersamplingBits - width of the supersampling factor port (4: S <= 15)
 module cube4_gradient #(
-  parameter int unsigned VoxelBits         = 12,
-  parameter int unsigned WeightBits        = 8,
-  parameter int unsigned GradientBits      = 8,
-  parameter int unsigned GradientShift     = 5,
-  parameter int unsigned SupersamplingBits = 4
+  parameter int unsigned VoxelBits         = cube4_pkg::VoxelBits,
+  parameter int unsigned WeightBits        = cube4_pkg::WeightBits,
+  parameter int unsigned GradientBits      = cube4_pkg::GradientBits,
+  parameter int unsigned GradientShift     = cube4_pkg::GradientShift,
+  parameter int unsigned SupersamplingBits = cube4_pkg::SupersamplingBits
 ) (
   input  logic                           clk_i,
   input  logic                           rst_ni,

@@ -97,15 +97,15 @@
 //   LinkBits              - (derived) link width: five samples, [0] current
 //                           row y, [1]/[2] ahead rows, [3]/[4] behind rows
 module cube4_gradient_unit #(
-  parameter int unsigned  NumPipes          = 4,
+  parameter int unsigned  NumPipes          = cube4_pkg::NumPipes,
   parameter int unsigned  PipeIndex         = 0,
-  parameter int unsigned  VoxelBits         = 12,
-  parameter int unsigned  WeightBits        = 8,
-  parameter int unsigned  GradientBits      = 8,
-  parameter int unsigned  GradientShift     = 5,
-  parameter int unsigned  SupersamplingBits = 4,
+  parameter int unsigned  VoxelBits         = cube4_pkg::VoxelBits,
+  parameter int unsigned  WeightBits        = cube4_pkg::WeightBits,
+  parameter int unsigned  GradientBits      = cube4_pkg::GradientBits,
+  parameter int unsigned  GradientShift     = cube4_pkg::GradientShift,
+  parameter int unsigned  SupersamplingBits = cube4_pkg::SupersamplingBits,
   parameter int unsigned  UserTagBits       = 8,
-  parameter int unsigned  MaxDim            = 256,
+  parameter int unsigned  MaxDim            = cube4_pkg::MaxDim,
   localparam int unsigned BeamDepth         = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth        = MaxDim * BeamDepth,
   localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 1,

@@ -21,8 +21,8 @@
 //   WeightBits - weight fraction bits; weight ports are WeightBits+1 wide
 //                (Precision::weight_bits, 8)
 module cube4_interp #(
-  parameter int unsigned VoxelBits  = 12,
-  parameter int unsigned WeightBits = 8
+  parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
+  parameter int unsigned WeightBits = cube4_pkg::WeightBits
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,

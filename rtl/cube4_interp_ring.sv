@@ -25,11 +25,11 @@
 //   BeamDepth, SliceDepth - (derived) per-pipeline beam delay and slice store
 //                           entries: ceil(MaxDim / p) and MaxDim * that
 module cube4_interp_ring #(
-  parameter int unsigned  NumPipes   = 4,
-  parameter int unsigned  VoxelBits  = 12,
-  parameter int unsigned  WeightBits = 8,
+  parameter int unsigned  NumPipes   = cube4_pkg::NumPipes,
+  parameter int unsigned  VoxelBits  = cube4_pkg::VoxelBits,
+  parameter int unsigned  WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned  TagBits    = 8,
-  parameter int unsigned  MaxDim     = 256,
+  parameter int unsigned  MaxDim     = cube4_pkg::MaxDim,
   localparam int unsigned BeamDepth  = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth = MaxDim * BeamDepth
 ) (

@@ -60,8 +60,8 @@
 //   LinkBits              - (derived) width of a link: four voxels,
 //                           [0] front y, [1] front y+1, [2] back y, [3] back y+1
 module cube4_interp_unit #(
-  parameter int unsigned  VoxelBits  = 12,
-  parameter int unsigned  WeightBits = 8,
+  parameter int unsigned  VoxelBits  = cube4_pkg::VoxelBits,
+  parameter int unsigned  WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned  TagBits    = 8,
   parameter int unsigned  BeamDepth  = 64,
   parameter int unsigned  SliceDepth = 16384,

@@ -12,8 +12,8 @@
 //   WeightBits - fraction bits of w; the weight port is WeightBits+1 wide so
 //                that w = 2^WeightBits is representable (Precision::weight_bits, 8)
 module cube4_lerp #(
-  parameter int unsigned VoxelBits  = 12,
-  parameter int unsigned WeightBits = 8
+  parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
+  parameter int unsigned WeightBits = cube4_pkg::WeightBits
 ) (
   input  logic [VoxelBits-1:0]  a_i,
   input  logic [VoxelBits-1:0]  b_i,

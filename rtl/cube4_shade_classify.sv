@@ -22,11 +22,11 @@
 // Parameters (defaults = golden Precision): VoxelBits, MagnitudeBits,
 // ColorBits, AlphaBits, GmlutBits.
 module cube4_shade_classify #(
-  parameter int unsigned VoxelBits     = 12,
-  parameter int unsigned MagnitudeBits = 8,
-  parameter int unsigned ColorBits     = 8,
-  parameter int unsigned AlphaBits     = 16,
-  parameter int unsigned GmlutBits     = 8
+  parameter int unsigned VoxelBits     = cube4_pkg::VoxelBits,
+  parameter int unsigned MagnitudeBits = cube4_pkg::MagnitudeBits,
+  parameter int unsigned ColorBits     = cube4_pkg::ColorBits,
+  parameter int unsigned AlphaBits     = cube4_pkg::AlphaBits,
+  parameter int unsigned GmlutBits     = cube4_pkg::GmlutBits
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,

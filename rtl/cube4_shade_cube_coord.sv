@@ -28,10 +28,10 @@
 // Parameters: GradientBits, WeightBits, MapFaceRes (golden Precision
 // defaults), DivBitsPerStage (quotient bits per pipeline stage, >= 1).
 module cube4_shade_cube_coord #(
-  parameter int unsigned GradientBits    = 8,
-  parameter int unsigned WeightBits      = 8,
-  parameter int unsigned MapFaceRes      = 8,
-  parameter int unsigned DivBitsPerStage = 2
+  parameter int unsigned GradientBits    = cube4_pkg::GradientBits,
+  parameter int unsigned WeightBits      = cube4_pkg::WeightBits,
+  parameter int unsigned MapFaceRes      = cube4_pkg::MapFaceRes,
+  parameter int unsigned DivBitsPerStage = cube4_pkg::DivBitsPerStage
 ) (
   input  logic                               clk_i,
   input  logic                               rst_ni,

@@ -22,9 +22,9 @@
 //   MagnitudeBits - unsigned output width (Precision::magnitude_bits, 8)
 //   NrIterations  - Newton-Raphson steps (Precision::nr_iterations, 3)
 module cube4_shade_magnitude #(
-  parameter int unsigned GradientBits  = 8,
-  parameter int unsigned MagnitudeBits = 8,
-  parameter int unsigned NrIterations  = 3
+  parameter int unsigned GradientBits  = cube4_pkg::GradientBits,
+  parameter int unsigned MagnitudeBits = cube4_pkg::MagnitudeBits,
+  parameter int unsigned NrIterations  = cube4_pkg::NrIterations
 ) (
   input  logic                           clk_i,
   input  logic                           rst_ni,

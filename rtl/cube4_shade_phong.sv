@@ -6,7 +6,8 @@
 //   out = sat_unsigned(round_shift(c * fd, CoefFracBits)
 //                      + round_shift(spec_c * fs, CoefFracBits), AlphaBits)
 // with mul_frac(x, f, n) = (x * (f + (f >> (n-1))) + 2^(n-1)) >> n and
-// round_shift(v, s) = (v + 2^(s-1)) >> s (v >= 0 throughout, so no signs).
+// round_shift(v, s) = (v + 2^(s-1)) >> s (v >= 0 throughout, so no signs);
+// the two mul_frac are cube4_mul_frac, the compositor's.
 //
 // Widths: mul_frac(Id, Gd) <= Id: MapBits; fd < 2^(CoefBits+MapBits-MapFracBits+1);
 // fs < 2^(CoefBits+MapBits-MapFracBits).
@@ -21,11 +22,11 @@
 // Parameters (defaults = golden Precision): AlphaBits, MapBits,
 // MapFracBits, CoefBits, CoefFracBits.
 module cube4_shade_phong #(
-  parameter int unsigned AlphaBits    = 16,
-  parameter int unsigned MapBits      = 16,
-  parameter int unsigned MapFracBits  = 8,
-  parameter int unsigned CoefBits     = 10,
-  parameter int unsigned CoefFracBits = 8
+  parameter int unsigned AlphaBits    = cube4_pkg::AlphaBits,
+  parameter int unsigned MapBits      = cube4_pkg::MapBits,
+  parameter int unsigned MapFracBits  = cube4_pkg::MapFracBits,
+  parameter int unsigned CoefBits     = cube4_pkg::CoefBits,
+  parameter int unsigned CoefFracBits = cube4_pkg::CoefFracBits
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -61,21 +62,15 @@ module cube4_shade_phong #(
   /////////////////////////////////////
   // Stage 1: mul_frac(Id, Gd), (Is, Gs) //
   /////////////////////////////////////
-  // (x * (f + (f >> (A-1))) + 2^(A-1)) >> A; the result never exceeds x.
-  function automatic logic [MapBits-1:0] mul_frac(input logic [MapBits-1:0] x,
-                                                   input logic [A-1:0]       f);
-    logic [A:0]         f_unit;  // f mapped onto [0, 2^A]
-    logic [MapBits+A:0] prod;
-    f_unit = {1'b0, f} + (A+1)'(f[A-1]);
-    prod   = (MapBits+A+1)'(x) * (MapBits+A+1)'(f_unit) + ((MapBits+A+1)'(1) << (A - 1));
-    mul_frac = MapBits'(prod >> A);
-  endfunction
+  logic [MapBits-1:0] md, ms;
+  cube4_mul_frac #(.XBits(MapBits), .FBits(A)) u_diffuse (.x_i(id_i), .f_i(gd_i), .y_o(md));
+  cube4_mul_frac #(.XBits(MapBits), .FBits(A)) u_specular (.x_i(is_i), .f_i(gs_i), .y_o(ms));
 
   logic [MapBits-1:0] md_q, ms_q;
   logic [3*A-1:0]     color_q;
   always_ff @(posedge clk_i) begin : stage1_regs
-    md_q    <= mul_frac(id_i, gd_i);
-    ms_q    <= mul_frac(is_i, gs_i);
+    md_q    <= md;
+    ms_q    <= ms;
     color_q <= {red_i, green_i, blue_i};
   end
 

@@ -4,7 +4,7 @@
 // four map entries of face `face`, and 0 for an invalid coordinate (the zero
 // vector). bilerp = lerp(lerp(m00, m10, wu), lerp(m01, m11, wu), wv) with
 // lerp(a, b, w) = a + round_shift((b - a) * w, WeightBits) (golden
-// interp.hpp; the lerps are a private function here).
+// interp.hpp): three cube4_lerp, the interpolation's lerp.
 //
 // The map: 6 * MapFaceRes^2 entries of MapBits, written by the host through
 // a write port addressed like golden map_index() ((face*res + v)*res + u).
@@ -23,9 +23,9 @@
 //
 // Parameters (defaults = golden Precision): WeightBits, MapFaceRes, MapBits.
 module cube4_shade_reflectance #(
-  parameter int unsigned WeightBits = 8,
-  parameter int unsigned MapFaceRes = 8,
-  parameter int unsigned MapBits    = 16
+  parameter int unsigned WeightBits = cube4_pkg::WeightBits,
+  parameter int unsigned MapFaceRes = cube4_pkg::MapFaceRes,
+  parameter int unsigned MapBits    = cube4_pkg::MapBits
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -51,18 +51,6 @@ module cube4_shade_reflectance #(
   localparam int unsigned Half      = (Res + 1) / 2;
   localparam int unsigned BankDepth = 6 * Half * Half;
   localparam int unsigned BankBits  = $clog2(BankDepth);
-  localparam int unsigned LerpBits  = MapBits + WeightBits + 2;
-
-  // lerp(a, b, w) = a + ((b - a) * w + 2^(W-1)) >>> W, w in [0, 2^W]. The
-  // result lies between a and b.
-  function automatic logic [MapBits-1:0] lerp(input logic [MapBits-1:0]  a,
-                                               input logic [MapBits-1:0]  b,
-                                               input logic [WeightBits:0] w);
-    logic signed [LerpBits-1:0] diff, prod;
-    diff = $signed(LerpBits'(b)) - $signed(LerpBits'(a));
-    prod = diff * $signed(LerpBits'(w)) + $signed(LerpBits'(1) << (WeightBits - 1));
-    lerp = MapBits'((prod >>> WeightBits) + $signed(LerpBits'(a)));
-  endfunction
 
   //////////////////////////
   // Write-address decode //
@@ -147,12 +135,19 @@ module cube4_shade_reflectance #(
   assign m01 = bank_rdata[b01*MapBits +: MapBits];
   assign m11 = bank_rdata[b11*MapBits +: MapBits];
 
+  // The interpolation's lerp (cube4_lerp, golden lerp()) on map entries.
+  logic [MapBits-1:0]  lo, hi;
+  cube4_lerp #(.VoxelBits(MapBits), .WeightBits(WeightBits)) u_lerp_lo (
+    .a_i(m00), .b_i(m10), .w_i(wu_q), .y_o(lo));
+  cube4_lerp #(.VoxelBits(MapBits), .WeightBits(WeightBits)) u_lerp_hi (
+    .a_i(m01), .b_i(m11), .w_i(wu_q), .y_o(hi));
+
   logic [MapBits-1:0]  lo_q, hi_q;
   logic                coord_valid_qq;
   logic [WeightBits:0] wv_qq;
   always_ff @(posedge clk_i) begin : stage2_regs
-    lo_q           <= lerp(m00, m10, wu_q);
-    hi_q           <= lerp(m01, m11, wu_q);
+    lo_q           <= lo;
+    hi_q           <= hi;
     coord_valid_qq <= coord_valid_q;
     wv_qq          <= wv_q;
   end
@@ -160,8 +155,12 @@ module cube4_shade_reflectance #(
   ///////////////////////////
   // Stage 3: lerp in v    //
   ///////////////////////////
+  logic [MapBits-1:0] value;
+  cube4_lerp #(.VoxelBits(MapBits), .WeightBits(WeightBits)) u_lerp_v (
+    .a_i(lo_q), .b_i(hi_q), .w_i(wv_qq), .y_o(value));
+
   always_ff @(posedge clk_i) begin : stage3_regs
-    value_o <= coord_valid_qq ? lerp(lo_q, hi_q, wv_qq) : '0;
+    value_o <= coord_valid_qq ? value : '0;
   end
 
   logic [2:0] valid_q;

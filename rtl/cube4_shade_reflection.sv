@@ -21,8 +21,8 @@
 //
 // Parameters (defaults = golden Precision): GradientBits, EyeBits.
 module cube4_shade_reflection #(
-  parameter int unsigned GradientBits = 8,
-  parameter int unsigned EyeBits      = 8
+  parameter int unsigned GradientBits = cube4_pkg::GradientBits,
+  parameter int unsigned EyeBits      = cube4_pkg::EyeBits
 ) (
   input  logic                           clk_i,
   input  logic                           rst_ni,

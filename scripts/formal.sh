@@ -86,7 +86,8 @@ fi
 # to the unit named in its "# file:" line, written to $out (it must change
 # the unit, or the bug is not planted).
 elaborate() {
-  local n=$1 ys=$out/$1.ys files=() f
+  # The package first: the units' parameter defaults and types come from it.
+  local n=$1 ys=$out/$1.ys files=(rtl/cube4_pkg.sv) f
   for f in ${P_FILES[$n]}; do
     if [[ $f == *.sed ]]; then
       local unit mutant

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Lint of every rtl/*.sv, the RTL acceptance rule (docs/architecture.md, Conventions):
-#   1. verilator --lint-only -Wall -Irtl <file>: no warning, no error;
+#   1. verilator --lint-only -Wall -Irtl <packages> <file>: no warning, no error;
 #   2. yosys: read_verilog -sv of all rtl/*.sv (packages first), then
 #      synth -top <module> for every file that defines the module it is
 #      named after (every such module must synthesise with its default
@@ -43,7 +43,10 @@ problems=0 linted=0 synthesised=0
 for f in "${files[@]}"; do
   name=$(basename "$f" .sv)
   # 1. Verilator.
-  if ! verilator --lint-only -Wall -Irtl "$f" >"$tmp/v.log" 2>&1 || [ -s "$tmp/v.log" ]; then
+  # The packages first (Verilator needs them declared before their use).
+  vfiles=("${pkgs[@]}")
+  case " ${pkgs[*]} " in *" $f "*) ;; *) vfiles+=("$f") ;; esac
+  if ! verilator --lint-only -Wall -Irtl "${vfiles[@]}" >"$tmp/v.log" 2>&1 || [ -s "$tmp/v.log" ]; then
     echo "FAIL verilator $f"
     sed 's/^/    /' "$tmp/v.log" | head -40
     problems=$((problems + 1))

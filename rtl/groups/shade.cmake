@@ -11,7 +11,7 @@ set(_shade_units
   cube4_shade_reflection
   cube4_shade_reflectance
   cube4_shade_phong)
-set(_shade_sources)
+set(_shade_sources cube4_lerp.sv cube4_mul_frac.sv)
 foreach(u ${_shade_units})
   list(APPEND _shade_sources ${u}.sv)
 endforeach()

@@ -12,7 +12,7 @@
 
 namespace cube4::rtl {
 
-constexpr int kSupersamplingBits = 4;  // cube4_gradient_ring's SupersamplingBits: S up to 15
+constexpr int kSupersamplingBits = 4;  // cube4_pkg::SupersamplingBits: S up to 15 (checked in rtl_factory.cpp)
 
 constexpr int gradient_tag_bits(int weight_bits, int user_tag_bits) {
   return 4 * (weight_bits + 1) + kSupersamplingBits + 1 + user_tag_bits;

@@ -8,10 +8,13 @@
 
 namespace cube4::sysc {
 
+// cube4_addr's DimBits (rtl/cube4_pkg.sv; rtl_factory.cpp checks the two).
+constexpr int kRtlAddrDimBits = 10;
+
 template <class M>
 class RtlAddr final : public AddrIf {
  public:
-  static constexpr int kDimBits = 10;  // cube4_addr's default
+  static constexpr int kDimBits = kRtlAddrDimBits;
 
   RtlAddr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx, const TraceWindow& trace)
       : p_(plan.p), index_bits_(3 * kDimBits + 4 - clog2(plan.p + 1)), m_(ctx, "addr", trace, "addr") {

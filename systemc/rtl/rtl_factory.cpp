@@ -9,6 +9,7 @@
 
 #include "Vsys_shade_lean.h"
 #include "Vsys_shade_unit.h"
+#include "Vsys_shade_unit_cube4_pkg.h"
 #include "rtl_variant_headers.inc"
 #include "systemc/rtl/rtl_addr.hpp"
 #include "systemc/rtl/rtl_composite.hpp"
@@ -17,6 +18,16 @@
 #include "systemc/rtl/rtl_shade.hpp"
 
 namespace cube4::sysc {
+
+// The hardware constants the wrappers state in C++ are the RTL package's
+// (rtl/cube4_pkg.sv; every verilated model exports it, the shading unit's
+// copy is read here). The golden widths are checked by test_rtl_pkg.
+using Pkg = Vsys_shade_unit_cube4_pkg;
+static_assert(Pkg::MaxDim == kRtlMaxDim, "the rings' storage per axis");
+static_assert(Pkg::DimBits == kRtlAddrDimBits, "the address generator's dimension width");
+static_assert(Pkg::SupersamplingBits == rtl::kSupersamplingBits, "the gradient ring's supersampling field");
+static_assert(Pkg::PosBits == golden::kPositionBits, "the compositor's position width");
+static_assert(Pkg::CutCoefBits == golden::kCutCoefBits, "the cut-plane coefficient width");
 
 #ifdef CUBE4_SHADE_SIDE_BITS
 static_assert(kShadeSideBits == CUBE4_SHADE_SIDE_BITS, "the verilated shading unit's SideBits differ (systemc/CMakeLists.txt)");

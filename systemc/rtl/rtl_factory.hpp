@@ -15,7 +15,8 @@ namespace cube4::sysc {
 
 struct TraceWindow;
 
-// Largest permuted nx, ny the verilated rings' storage holds (MaxDim).
+// Largest permuted nx, ny the verilated rings' storage holds (cube4_pkg::MaxDim,
+// checked in rtl_factory.cpp).
 constexpr int kRtlMaxDim = 256;
 
 std::vector<int> rtl_pipes();
