@@ -50,6 +50,7 @@ struct RenderArgs {
   std::vector<int64_t> trace_window;  // first, last cycle
   uint64_t max_memory_mib = 0;  // 0: golden::kDefaultMemoryLimit
   std::optional<uint32_t> seed;        // default: CUBE4_SEED, else 1
+  int threads = 0;              // golden renders (fixed, and --check's): 0 = one per core
 };
 
 // The RTL's random-reset seed: --seed, else the environment's CUBE4_SEED
@@ -216,6 +217,7 @@ int run_render(const RenderArgs& a) {
   // Each repetition renders the base plane (or reference image) and warps
   // it: a frame as the hardware plus companion card would deliver it.
   std::vector<double> frame_seconds;
+  std::optional<golden::BlockRanges> ranges;
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
@@ -235,7 +237,9 @@ int run_render(const RenderArgs& a) {
         hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
         if (!a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
         if (cfg.check) {
-          const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, l.host.regs), bp);
+          golden::FixedOptions opt;
+          opt.threads = a.threads;
+          const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, l.host.regs, opt), bp);
           if (!diff.empty() || sys->mismatch) {
             check_failure = diff.empty() ? "base plane equal, but " : diff + "; ";
             check_failure += sys->mismatch ? "first unit output that differs: " + sys->mismatch->describe()
@@ -244,7 +248,14 @@ int run_render(const RenderArgs& a) {
         }
       }
     } else if (a.model == "fixed") {
-      const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, &stats, cb);
+      golden::FixedOptions opt;
+      opt.stats = &stats;
+      opt.progress = cb;
+      opt.threads = a.threads;
+      // Built once: the volume is the same for every repetition.
+      if (!ranges) ranges = golden::block_ranges(l.volume);
+      opt.ranges = &*ranges;
+      const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, opt);
       image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
       frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       if (last) {
@@ -285,6 +296,7 @@ int run_render(const RenderArgs& a) {
         {"output", a.output},
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
+    if (a.model == "fixed") r["threads"] = a.threads > 0 ? a.threads : golden::default_threads();
     if (sys) {
       r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
       r["system"]["host_bus_ms"] = bus_seconds * 1e3;
@@ -355,6 +367,10 @@ int main(int argc, char** argv) {
                    "system model: simulate every unit and all RTL hardware, needed or not (to measure what skipping saves)");
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
   render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
+  render->add_option("--threads", ra.threads,
+                     "fixed model and --check: threads, each rendering a band of rays (default 0: one per core; "
+                     "the image is the same for any number)")
+      ->check(CLI::Range(0, 1024));
   render->add_option("--seed", ra.seed, "system model: Verilator random-reset seed of the RTL units (default: CUBE4_SEED, else 1)");
   const std::string memory_help = "refuse volumes and renders estimated to need more than MiB of memory (default " +
                                   std::to_string(golden::kDefaultMemoryLimit >> 20) + ")";
