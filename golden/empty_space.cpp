@@ -121,15 +121,14 @@ SkipMap::SkipMap(const Registers& r, const BlockRanges* ranges)
         if (any_visible(ranges->lo[at], ranges->hi[at])) s = hull(s, cells[static_cast<size_t>(i)]);
       }
     }
+  rows_.assign(static_cast<size_t>(bz_count) * ny_, Span{});
+  for (int k = 0; k < bz_count; ++k)
+    for (int y = 0; y < ny_; ++y) {
+      Span& s = rows_[static_cast<size_t>(k) * ny_ + y];
+      for (int v = std::max(y - reach_, 0); v <= std::min(y + reach_, ny_ - 1); ++v)
+        s = hull(s, spans_[static_cast<size_t>(k) * by_count_ + by_[static_cast<size_t>(v)]]);
+    }
   skipping_ = true;
-}
-
-Span SkipMap::window(int z0, int z1, int y0, int y1, int grow_left, int grow_right) const {
-  Span s;
-  for (int z = std::max(z0, 0); z <= std::min(z1, nz_ - 1); ++z)
-    for (int y = std::max(y0, 0); y <= std::min(y1, ny_ - 1); ++y) s = hull(s, visible(z, y));
-  if (s.empty()) return {};
-  return {std::max(s.begin - grow_left, 0), std::min(s.end + grow_right, nx_)};
 }
 
 Span SkipMap::samples_needed(int k, int y) const {
@@ -137,13 +136,17 @@ Span SkipMap::samples_needed(int k, int y) const {
   const int K = nz_ * supersampling_, g = reach_;
   const int z0 = z_voxel_slice(std::max(k - g, 0), supersampling_);
   const int z1 = z_voxel_slice(std::min(k + g, K - 1), supersampling_);
-  return window(z0, z1, y - g, y + g, g, g);
+  Span s;
+  for (int z = z0; z <= z1; ++z) s = hull(s, rows(z, y));
+  return grown(s, g, g);
 }
 
 Span SkipMap::voxels_needed(int z, int y) const {
   if (!skipping_) return {0, nx_};
   const int g = reach_;
-  return window(z - 1 - g, z + g, y - 1 - g, y + g, g, g + 1);
+  Span s;
+  for (int v = std::max(z - 1 - g, 0); v <= std::min(z + g, nz_ - 1); ++v) s = hull(s, hull(rows(v, y - 1), rows(v, y)));
+  return grown(s, g, g + 1);
 }
 
 }  // namespace cube4::golden

@@ -75,12 +75,21 @@ class SkipMap {
   Span voxels_needed(int z, int y) const;
 
  private:
-  Span window(int z0, int z1, int y0, int y1, int grow_left, int grow_right) const;
+  // Hull of visible(z, y') over y' within the gradient's reach of y.
+  Span rows(int z, int y) const {
+    if (y < 0 || y >= ny_) return {};
+    return rows_[bz_[static_cast<size_t>(z)] * static_cast<size_t>(ny_) + y];
+  }
+  Span grown(Span s, int left, int right) const {
+    if (s.empty()) return {};
+    return {std::max(s.begin - left, 0), std::min(s.end + right, nx_)};
+  }
   bool skipping_ = false;
   int nx_ = 0, ny_ = 0, nz_ = 0, supersampling_ = 1, reach_ = 0;
   int by_count_ = 0;
   std::vector<int> by_, bz_;  // block of the cells of beam y / voxel slice z
   std::vector<Span> spans_;   // per (block z, block y): hull of possibly visible cells
+  std::vector<Span> rows_;    // per (block z, beam y): rows() precomputed
 };
 
 }  // namespace cube4::golden
