@@ -6,13 +6,18 @@
 # Volumes: brainsmall (128x128x84), and brainsmall at twice the resolution
 # in every axis (256x256x168, nearest-neighbour, written as a .den here so
 # that VolPack reads the same voxels).
-#   scripts/perf_golden.sh [frames]      (default 30)
+# The machine may be shared: each renderer runs in ROUNDS rounds of FRAMES
+# frames, the renderers taking turns round by round, so that a drift of the
+# machine's speed reaches all of them alike; a row gives the median of the
+# rounds' medians and the smallest frame time.
+#   scripts/perf_golden.sh [frames] [rounds]     (default 10 frames, 5 rounds)
 # CUBE4_BUILD: a build directory already configured (skips the set-up).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 if [ -z "${CUBE4_BUILD:-}" ]; then "$here/scripts/setup.sh" >/dev/null; fi
 build=${CUBE4_BUILD:-$here/build}
-frames=${1:-30}
+frames=${1:-10}
+rounds=${2:-5}
 bin=$build/tb/bench
 den=/usr/share/doc/libvolpack1-dev/examples/brainsmall.den
 # One core: pin to the last CPU when taskset exists.
@@ -49,14 +54,14 @@ s["volume"] = {"file": sys.argv[2]}
 json.dump(s, open(sys.argv[3], "w"))
 PY
 
-for vol in brainsmall brain2x; do
-  if [ "$vol" = brainsmall ]; then d=$den; scene=(); else d=$tmp/brain2x.den; scene=("$tmp/brain2x.json"); fi
-  echo "perf_golden: $vol: VolPack..." >&2
-  "${pin[@]}" "$bin/volpack_bench" --den "$d" --size 256 --rotate 20 60 180 --frames "$frames" > "$tmp/$vol.volpack.json"
-  echo "perf_golden: $vol: fixed, 1 thread..." >&2
-  "${pin[@]}" "$bin/bench_golden" "${scene[@]}" --model fixed --threads 1 --frames "$frames" > "$tmp/$vol.fixed1.json"
-  echo "perf_golden: $vol: fixed, all threads..." >&2
-  "$bin/bench_golden" "${scene[@]}" --model fixed --threads 0 --frames "$frames" > "$tmp/$vol.fixedN.json"
+for round in $(seq "$rounds"); do
+  for vol in brainsmall brain2x; do
+    if [ "$vol" = brainsmall ]; then d=$den; scene=(); else d=$tmp/brain2x.den; scene=("$tmp/brain2x.json"); fi
+    echo "perf_golden: round $round: $vol: VolPack, fixed on 1 thread, fixed on all..." >&2
+    "${pin[@]}" "$bin/volpack_bench" --den "$d" --size 256 --rotate 20 60 180 --frames "$frames" >> "$tmp/$vol.volpack.json"
+    "${pin[@]}" "$bin/bench_golden" "${scene[@]}" --model fixed --threads 1 --frames "$frames" >> "$tmp/$vol.fixed1.json"
+    "$bin/bench_golden" "${scene[@]}" --model fixed --threads 0 --frames "$frames" >> "$tmp/$vol.fixedN.json"
+  done
 done
 echo "perf_golden: float..." >&2
 "${pin[@]}" "$bin/bench_golden" --model float --frames "$frames" > "$tmp/float.json"
@@ -64,14 +69,25 @@ echo "perf_golden: reference..." >&2
 "${pin[@]}" "$bin/bench_golden" --model reference --frames 3 --warmup 1 > "$tmp/reference.json"
 
 python3 - "$tmp" "$(uname -m)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" \
-  "$frames" "$(nproc)" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" golden-speed
-import json, sys, datetime
-tmp, arch, cpu, frames, cores = sys.argv[1:6]
-load = lambda name: json.load(open(f"{tmp}/{name}.json"))
-print(f"Measured {datetime.date.today()} on {cpu} ({arch}, {cores} cores) by `scripts/perf_golden.sh {frames}`: "
-      f"256×256 image, view rotate [20, 60, 180], median of {frames} frames (reference: 3); one thread pinned "
-      f"to one core unless the row says all threads. The fixed-point renderer builds its block ranges for "
-      f"empty-space skipping inside every frame.")
+  "$frames" "$(nproc)" "$rounds" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" golden-speed
+import json, statistics, sys, datetime
+tmp, arch, cpu, frames, cores, rounds = sys.argv[1:7]
+def load(name):
+    text, runs, at = open(f"{tmp}/{name}.json").read(), [], 0
+    while text[at:].strip():  # one JSON object per round, one after the other
+        obj, at = json.JSONDecoder().raw_decode(text, len(text) - len(text[at:].lstrip()))
+        runs.append(obj)
+    r = dict(runs[0])
+    for key in [k for k in r if k.endswith("ms")]:
+        r[key] = {"median": statistics.median(x[key]["median"] for x in runs), "min": min(x[key]["min"] for x in runs)}
+    if "samples_per_frame" in r:
+        r["samples_per_second"] = r["samples_per_frame"] / (r["ms"]["median"] * 1e-3)
+    return r
+print(f"Measured {datetime.date.today()} on {cpu} ({arch}, {cores} cores) by `scripts/perf_golden.sh {frames} {rounds}`: "
+      f"256×256 image, view rotate [20, 60, 180], median of {rounds} rounds' medians of {frames} frames, the "
+      f"renderers taking turns round by round (float: one round; reference: 3 frames); one thread pinned to one "
+      f"core unless the row says otherwise. The fixed-point renderer builds its block ranges for empty-space "
+      f"skipping inside every frame.")
 print()
 print("| volume | renderer | threads | ms/frame (median) | min | samples/frame | samples/s |")
 print("|---|---|---:|---:|---:|---:|---:|")
