@@ -54,13 +54,14 @@ class Band {
     for (int k = 0; k < K_; ++k) {
       const SliceControl c = slice_control(r, k);
       // Which samples of beam y may change their ray: none outside the skip
-      // map's span, nor any in a span whose samples all classify below the
-      // first non-zero α.
+      // map's span, nor those at its ends below the first value of non-zero α.
       auto beam = [&](int y) -> Span {
-        const Span s = f_.skip.visible(c.z_voxel, y);
-        if (!f_.may_skip || s.empty()) return s;
+        Span s = f_.skip.visible(c.z_voxel, y);
+        if (!f_.may_skip) return s;
         const int32_t* samples = current.row(y);
-        return *std::max_element(samples + s.begin, samples + s.end) >= first_visible ? s : Span{};
+        while (s.begin < s.end && samples[s.begin] < first_visible) ++s.begin;
+        while (s.end > s.begin && samples[s.end - 1] < first_visible) --s.end;
+        return s;
       };
       // A composited sample whose classified α is zero, or that meets an
       // opaque ray, leaves the ray exactly as it is (α only shrinks on the
