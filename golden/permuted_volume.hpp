@@ -27,22 +27,24 @@ class PermutedVolume {
     return vol_.data[static_cast<size_t>(origin_ + stride_[0] * x + stride_[1] * y + stride_[2] * z)];
   }
 
-  // Beam y of slice z (dim[0] voxels) into dst; zeros beyond the volume.
+  // Voxels x0 .. x1-1 of beam y of slice z into dst[x0 .. x1-1]; zeros
+  // beyond the volume.
   template <class T>
-  void load_beam(int y, int z, T* __restrict dst) const {
-    const int nx = dim_[0];  // local: stores through T* cannot alias it
+  void load_beam(int y, int z, T* __restrict dst, int x0, int x1) const {
     if (y < 0 || z < 0 || y >= dim_[1] || z >= dim_[2]) {
-      for (int x = 0; x < nx; ++x) dst[x] = T{0};
+      for (int x = x0; x < x1; ++x) dst[x] = T{0};
       return;
     }
     const uint16_t* __restrict src = vol_.data.data() + origin_ + stride_[1] * y + stride_[2] * z;
     const int64_t sx = stride_[0];
     if (sx == 1) {
-      for (int x = 0; x < nx; ++x) dst[x] = static_cast<T>(src[x]);
+      for (int x = x0; x < x1; ++x) dst[x] = static_cast<T>(src[x]);
     } else {
-      for (int x = 0; x < nx; ++x) dst[x] = static_cast<T>(src[sx * x]);
+      for (int x = x0; x < x1; ++x) dst[x] = static_cast<T>(src[sx * x]);
     }
   }
+  template <class T>
+  void load_beam(int y, int z, T* __restrict dst) const { load_beam(y, z, dst, 0, dim_[0]); }
 
  private:
   const Volume& vol_;

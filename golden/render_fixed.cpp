@@ -1,102 +1,231 @@
 // The bit-exact fixed-point renderer: the hardware's traversal (slice by
 // slice, beam by beam, in permuted order) built only from the unit functions,
 // in the slice steps of golden/slice_steps.hpp.
+//
+// Threads each take a band of base-plane rows, i.e. a set of rays, and
+// follow it through every slice (its beams move by the DDA's y offset). No
+// ray is touched by two bands, so bands need no synchronisation, and each
+// ray sees the same samples in the same order whatever the number of bands:
+// the image is the same for every thread count. A band interpolates the
+// beams its gradients read too, one beyond its own on each side.
 #include <algorithm>
+#include <exception>
 #include <memory>
+#include <thread>
 #include <vector>
 
 #include "golden/slice_steps.hpp"
 
 namespace cube4::golden {
 
-BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats, const Progress& progress,
-                       SampleProbe* probe) {
-  const int nx = r.dim[0], ny = r.dim[1];
-  const int K = r.sample_slices();
-  BasePlane bp = empty_base_plane(r);
+namespace {
 
-  const PermutedVolume access(vol, r.perm, r.flip);
-  // Voxel slices zv and zv+1 (one extra zero column/row for x+1, y+1).
-  Plane vox_lo(nx, ny, 1), vox_hi(nx, ny, 1);
-  SliceInterp interp(nx, ny, r.p.weight_bits);
-  int loaded_z = -1;
-  auto samples_of = [&](int k, Plane& out) {
-    if (k < 0 || k >= K) { out.clear(); return; }
-    const SliceControl c = slice_control(r, k);
-    if (c.z_voxel != loaded_z) {
-      if (c.z_voxel == loaded_z + 1 && loaded_z >= 0) {
-        std::swap(vox_lo, vox_hi);
-      } else {
-        load_voxel_slice(access, c.z_voxel, vox_lo);
+struct Frame {
+  const Registers& r;
+  PermutedVolume access;
+  const SkipMap& skip;
+  SliceCompositor& compositor;
+  const FacePositionTable* faces;
+  SampleProbe* probe;
+  bool may_skip;
+};
+
+// Beams [first, second) of slice k.
+using Beams = std::pair<int, int>;
+
+class Band {
+ public:
+  Band(const Frame& f, int v0, int v1)
+      : f_(f), r_(f.r), nx_(r_.dim[0]), ny_(r_.dim[1]), K_(r_.sample_slices()), reach_(r_.gradient ? 1 : 0),
+        iy_last_(r_.y_offset(K_ - 1).integer), v0_(v0), v1_(v1), vox_lo_(nx_, ny_, 1), vox_hi_(nx_, ny_, 1),
+        interp_(nx_, ny_, r_.p.weight_bits), spans_(static_cast<size_t>(ny_)) {}
+
+  void run(const Progress* progress) {
+    const Registers& r = r_;
+    const uint32_t opaque = static_cast<uint32_t>(max_unsigned(acc_bits(r.p)));
+    int32_t first_visible = 0;
+    while (first_visible < static_cast<int32_t>(r.classification.size()) && r.classification[first_visible].a == 0)
+      ++first_visible;
+    // Sample slices behind, current and ahead of the one being shaded.
+    Plane behind(nx_, ny_, 1), current(nx_, ny_, 1), ahead(nx_, ny_, 1);
+    samples_of(0, current);
+    if (r.gradient) samples_of(1, ahead);
+    Neighbourhood n;
+    for (int k = 0; k < K_; ++k) {
+      const SliceControl c = slice_control(r, k);
+      // Which samples of beam y may change their ray: none outside the skip
+      // map's span, nor those at its ends below the first value of non-zero α.
+      auto beam = [&](int y) -> Span {
+        Span s = f_.skip.visible(c.z_voxel, y);
+        if (!f_.may_skip) return s;
+        const int32_t* samples = current.row(y);
+        while (s.begin < s.end && samples[s.begin] < first_visible) ++s.begin;
+        while (s.end > s.begin && samples[s.end - 1] < first_visible) --s.end;
+        return s;
+      };
+      // A composited sample whose classified α is zero, or that meets an
+      // opaque ray, leaves the ray exactly as it is (α only shrinks on the
+      // way through the pipeline, and blend_front_to_back adds nothing for
+      // α = 0 or full α_acc), so its gradient and shading are not computed.
+      auto shade = [&](int x, int y, const RayAcc& ray, ShadedSample& s) {
+        const uint32_t centre = current.at(x, y);
+        if (f_.may_skip && (r.classification[centre].a == 0 || ray.a == opaque)) return false;
+        if (r.gradient) {
+          gather_neighbourhood(behind, current, ahead, c, x, y, n);
+        } else {
+          n.centre = centre;
+        }
+        s = shade_sample(r, c, x, y, n, f_.faces);
+        if (f_.probe) {
+          f_.probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
+          f_.probe->shaded(x, y, c, s);
+        }
+        return true;
+      };
+      f_.compositor.slice(c, shade, beam, v0_, v1_);
+      if (r.gradient) {
+        std::swap(behind, current);
+        std::swap(current, ahead);
+        samples_of(k + 2, ahead);
+      } else if (k + 1 < K_) {
+        samples_of(k + 1, current);
       }
-      load_voxel_slice(access, c.z_voxel + 1, vox_hi);
-      loaded_z = c.z_voxel;
+      if (progress && *progress) (*progress)(static_cast<double>(k + 1) / K_);
     }
-    interp.slice(vox_lo, vox_hi, c, out);
-  };
+    f_.compositor.finish(v0_, v1_);
+  }
 
-  // Sample slices behind, current and ahead of the one being shaded.
-  Plane behind(nx, ny, 1), current(nx, ny, 1), ahead(nx, ny, 1);
-  samples_of(0, current);
-  if (r.gradient) samples_of(1, ahead);
+ private:
+  // The band's own beams of slice k.
+  Beams beams(int k) const {
+    const int iy = r_.y_offset(std::clamp(k, 0, K_ - 1)).integer;
+    return {std::clamp(v0_ + iy - iy_last_, 0, ny_), std::clamp(v1_ + iy - iy_last_, 0, ny_)};
+  }
+  // The beams of slice k the band interpolates: its own, and those the
+  // gradients of slices k - 1 .. k + 1 read (one beam further each way).
+  Beams sample_beams(int k) const {
+    return {std::max(beams(k - reach_).first - reach_, 0), std::min(beams(k + reach_).second + reach_, ny_)};
+  }
+  // The voxel beams of slice z that those read: sample beam y reads voxel
+  // beams y and y + 1 of the voxel slices below and above it.
+  Beams voxel_beams(int z) const {
+    const int S = r_.supersampling;
+    const int k0 = std::max(S * (z - 1), 0), k1 = std::min(S * (z + 1), K_) - 1;
+    if (k0 > k1) return {0, 0};
+    return {sample_beams(k0).first, std::min(sample_beams(k1).second + 1, ny_)};
+  }
+  void load(int z, Plane& out) {
+    const Beams b = voxel_beams(z);
+    for (int y = b.first; y < b.second; ++y) spans_[static_cast<size_t>(y)] = f_.skip.voxels_needed(z, y);
+    load_voxel_slice(f_.access, z, out, b.first, b.second, spans_.data());
+  }
+  void samples_of(int k, Plane& out) {
+    if (k < 0 || k >= K_) { out.clear(); return; }
+    const SliceControl c = slice_control(r_, k);
+    if (c.z_voxel != loaded_z_) {
+      if (c.z_voxel == loaded_z_ + 1 && loaded_z_ >= 0) {
+        std::swap(vox_lo_, vox_hi_);
+      } else {
+        load(c.z_voxel, vox_lo_);
+      }
+      load(c.z_voxel + 1, vox_hi_);
+      loaded_z_ = c.z_voxel;
+    }
+    const Beams b = sample_beams(k);
+    for (int y = b.first; y < b.second; ++y) spans_[static_cast<size_t>(y)] = f_.skip.samples_needed(k, y);
+    interp_.slice(vox_lo_, vox_hi_, c, out, b.first, b.second, spans_.data());
+  }
+
+  const Frame& f_;
+  const Registers& r_;
+  int nx_, ny_, K_, reach_, iy_last_, v0_, v1_;
+  Plane vox_lo_, vox_hi_;  // voxel slices z_voxel and z_voxel + 1
+  SliceInterp interp_;
+  std::vector<Span> spans_;
+  int loaded_z_ = -1;
+};
+
+// Bands of base-plane rows with about equal work: a beam costs its
+// interpolation and the samples that may change their ray.
+std::vector<int> band_edges(const Registers& r, const SkipMap& skip, int bands) {
+  const int height = r.base_height(), K = r.sample_slices(), ny = r.dim[1];
+  const int iy_last = r.y_offset(K - 1).integer;
+  std::vector<double> work(static_cast<size_t>(height), 0.0);
+  for (int k = 0; k < K; ++k) {
+    const int iy = r.y_offset(k).integer, z = z_voxel_slice(k, r.supersampling);
+    for (int y = 0; y < ny; ++y)
+      work[static_cast<size_t>(y - iy + iy_last)] += 0.25 * r.dim[0] + skip.visible(z, y).size();
+  }
+  double total = 0;
+  for (double w : work) total += w;
+  std::vector<int> edges{0};
+  double sum = 0;
+  for (int v = 0; v < height && static_cast<int>(edges.size()) < bands; ++v) {
+    sum += work[static_cast<size_t>(v)];
+    if (sum >= total * static_cast<double>(edges.size()) / bands) edges.push_back(v + 1);
+  }
+  edges.push_back(height);
+  return edges;
+}
+
+}  // namespace
+
+int default_threads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
+
+BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions& opt) {
+  BasePlane bp = empty_base_plane(r);
+  const bool may_skip = r.blend == BlendMode::Composite && opt.probe == nullptr;
+  BlockRanges own;
+  const BlockRanges* ranges = nullptr;
+  if (may_skip && opt.skip_empty) {
+    if (!opt.ranges) own = block_ranges(vol);
+    ranges = opt.ranges ? opt.ranges : &own;
+  }
+  const SkipMap skip(r, ranges);
   SliceCompositor compositor(r, bp);
-  const bool may_skip = r.blend == BlendMode::Composite && probe == nullptr;
   // Up to 10-bit gradients a table of the cube-map divisions (1 MB at most)
   // is cheaper than dividing per sample.
   std::unique_ptr<FacePositionTable> faces;
   if (r.shading && r.p.gradient_bits <= 10)
     faces = std::make_unique<FacePositionTable>(static_cast<int>(max_signed(r.p.gradient_bits)), r.p.map_face_res,
                                                 r.p.weight_bits);
-  const uint32_t opaque = static_cast<uint32_t>(max_unsigned(acc_bits(r.p)));
-  int32_t first_visible = 0;
-  while (first_visible < static_cast<int32_t>(r.classification.size()) && r.classification[first_visible].a == 0)
-    ++first_visible;
-
-  for (int k = 0; k < K; ++k) {
-    const SliceControl c = slice_control(r, k);
-    Neighbourhood n;
-    // A composited sample whose classified α is zero, or that meets an
-    // opaque ray, leaves the ray exactly as it is (α only shrinks on the
-    // way through the pipeline, and blend_front_to_back adds nothing for
-    // α = 0 or full α_acc), so its gradient and shading are not computed;
-    // nor are those of a beam whose samples all classify below the first
-    // non-zero α.
-    auto beam_may_change = [&](int y) {
-      const int32_t* samples = current.row(y);
-      return !may_skip || *std::max_element(samples, samples + nx) >= first_visible;
-    };
-    auto shade = [&](int x, int y, const RayAcc& ray, ShadedSample& s) {
-      const uint32_t centre = current.at(x, y);
-      if (may_skip && (r.classification[centre].a == 0 || ray.a == opaque)) return false;
-      if (r.gradient) {
-        gather_neighbourhood(behind, current, ahead, c, x, y, n);
-      } else {
-        n.centre = centre;
+  const Frame frame{r, PermutedVolume(vol, r.perm, r.flip), skip, compositor, faces.get(), opt.probe, may_skip};
+  const int threads = opt.probe ? 1 : std::clamp(opt.threads > 0 ? opt.threads : default_threads(), 1,
+                                                 std::max(1, bp.height));
+  const std::vector<int> edges = threads == 1 ? std::vector<int>{0, bp.height} : band_edges(r, skip, threads);
+  std::vector<std::thread> workers;
+  std::vector<std::exception_ptr> failed(edges.size() - 1);
+  for (size_t b = 1; b + 1 < edges.size(); ++b)
+    workers.emplace_back([&, b] {
+      try {
+        Band(frame, edges[b], edges[b + 1]).run(nullptr);
+      } catch (...) {
+        failed[b] = std::current_exception();
       }
-      s = shade_sample(r, c, x, y, n, faces.get());
-      if (probe) {
-        probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
-        probe->shaded(x, y, c, s);
-      }
-      return true;
-    };
-    compositor.slice(c, shade, beam_may_change);
-    if (r.gradient) {
-      std::swap(behind, current);
-      std::swap(current, ahead);
-      samples_of(k + 2, ahead);
-    } else if (k + 1 < K) {
-      samples_of(k + 1, current);
-    }
-    if (progress) progress(static_cast<double>(k + 1) / K);
+    });
+  try {
+    Band(frame, edges[0], edges[1]).run(&opt.progress);
+  } catch (...) {
+    failed[0] = std::current_exception();
   }
-  compositor.finish();
+  for (std::thread& t : workers) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
 
-  if (stats) {
-    stats->samples = static_cast<uint64_t>(nx) * ny * K;
-    stats->slices = K;
+  if (opt.stats) {
+    opt.stats->samples = static_cast<uint64_t>(r.dim[0]) * r.dim[1] * r.sample_slices();
+    opt.stats->slices = r.sample_slices();
   }
   return bp;
+}
+
+BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats, const Progress& progress,
+                       SampleProbe* probe) {
+  FixedOptions opt;
+  opt.stats = stats;
+  opt.progress = progress;
+  opt.probe = probe;
+  return render_fixed(vol, r, opt);
 }
 
 ImageF BasePlane::to_float() const {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "golden/empty_space.hpp"
 #include "golden/host_driver.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/volume.hpp"
@@ -53,8 +54,25 @@ struct SampleProbe {
   virtual void shaded(int /*x*/, int /*y*/, const SliceControl& /*c*/, const ShadedSample& /*s*/) {}
 };
 
+// How render_fixed() runs; none of it changes the base plane.
+struct FixedOptions {
+  RenderStats* stats = nullptr;
+  Progress progress;          // called from the calling thread
+  SampleProbe* probe = nullptr;  // sees every sample, in traversal order: one thread, no skipping
+  // Threads, each rendering a band of base-plane rows (0: one per core).
+  int threads = 1;
+  // Skip the samples that cannot change their ray (golden/empty_space.hpp),
+  // using `ranges` if given (block_ranges() of this volume, to build it once
+  // for many frames) or building them for the frame.
+  bool skip_empty = true;
+  const BlockRanges* ranges = nullptr;
+};
+
+BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);
 BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* stats = nullptr,
                        const Progress& progress = {}, SampleProbe* probe = nullptr);
+// What `threads` = 0 means.
+int default_threads();
 BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f,
                         RenderStats* stats = nullptr, const Progress& progress = {});
 

@@ -10,46 +10,63 @@ void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out) {
   for (int y = 0; y < out.ny; ++y) pv.load_beam(y, z, out.row(y));
 }
 
-SliceInterp::SliceInterp(int nx, int ny, int weight_bits) : nx_(nx), ny_(ny), w_(weight_bits),
-  tx_(static_cast<size_t>(nx) * (ny + 1)), ty_lo_(static_cast<size_t>(nx) * ny), ty_hi_(ty_lo_.size()) {}
+void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out, int y0, int y1, const Span* spans) {
+  for (int y = y0; y < y1; ++y)
+    if (!spans[y].empty()) pv.load_beam(y, z, out.row(y), spans[y].begin, spans[y].end);
+}
 
-void SliceInterp::bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out) {
+SliceInterp::SliceInterp(int nx, int ny, int weight_bits) : nx_(nx), ny_(ny), w_(weight_bits),
+  tx_(static_cast<size_t>(nx) * (ny + 1)), ty_lo_(static_cast<size_t>(nx) * ny), ty_hi_(ty_lo_.size()),
+  whole_(static_cast<size_t>(ny), Span{0, nx}) {}
+
+void SliceInterp::bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out, int y0, int y1,
+                            const Span* spans) {
   // Locals, so that stores through int32_t pointers cannot alias them.
-  const int nx = nx_, ny = ny_, w = w_;
-  for (int y = 0; y <= ny; ++y) {
+  const int nx = nx_, w = w_;
+  // Voxel beam y serves sample beams y - 1 and y.
+  for (int y = y0; y <= y1; ++y) {
+    const Span s = hull(y < y1 ? spans[y] : Span{}, y > y0 ? spans[y - 1] : Span{});
+    const int x0 = s.begin, x1 = s.end;
     const int32_t* __restrict a = v.row(y);
     int32_t* __restrict t = &tx_[static_cast<size_t>(y) * nx];
     if (wx == 0) {
-      std::copy(a, a + nx, t);
+      std::copy(a + x0, a + std::max(x0, x1), t + x0);
     } else {
-      for (int x = 0; x < nx; ++x) t[x] = lerp_t<int32_t>(a[x], a[x + 1], wx, w);
+      for (int x = x0; x < x1; ++x) t[x] = lerp_t<int32_t>(a[x], a[x + 1], wx, w);
     }
   }
-  for (int y = 0; y < ny; ++y) {
+  for (int y = y0; y < y1; ++y) {
+    const int x0 = spans[y].begin, x1 = spans[y].end;
     const int32_t* __restrict t0 = &tx_[static_cast<size_t>(y) * nx];
     const int32_t* __restrict t1 = t0 + nx;
     int32_t* __restrict o = &out[static_cast<size_t>(y) * nx];
     if (wy == 0) {
-      std::copy(t0, t0 + nx, o);
+      std::copy(t0 + x0, t0 + std::max(x0, x1), o + x0);
     } else {
-      for (int x = 0; x < nx; ++x) o[x] = lerp_t<int32_t>(t0[x], t1[x], wy, w);
+      for (int x = x0; x < x1; ++x) o[x] = lerp_t<int32_t>(t0[x], t1[x], wy, w);
     }
   }
 }
 
 void SliceInterp::slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out) {
+  slice(lo, hi, c, out, 0, ny_, whole_.data());
+}
+
+void SliceInterp::slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out, int y0, int y1,
+                         const Span* spans) {
   const auto wx = static_cast<int32_t>(c.wx), wy = static_cast<int32_t>(c.wy), wz = static_cast<int32_t>(c.wz);
-  const int nx = nx_, ny = ny_, w = w_;
-  bilinear(lo, wx, wy, ty_lo_);
-  if (wz != 0) bilinear(hi, wx, wy, ty_hi_);
-  for (int y = 0; y < ny; ++y) {
+  const int nx = nx_, w = w_;
+  bilinear(lo, wx, wy, ty_lo_, y0, y1, spans);
+  if (wz != 0) bilinear(hi, wx, wy, ty_hi_, y0, y1, spans);
+  for (int y = y0; y < y1; ++y) {
+    const int x0 = spans[y].begin, x1 = spans[y].end;
     const int32_t* __restrict a = &ty_lo_[static_cast<size_t>(y) * nx];
     const int32_t* __restrict b = &ty_hi_[static_cast<size_t>(y) * nx];
     int32_t* __restrict o = out.row(y);
     if (wz == 0) {
-      std::copy(a, a + nx, o);
+      std::copy(a + x0, a + std::max(x0, x1), o + x0);
     } else {
-      for (int x = 0; x < nx; ++x) o[x] = lerp_t<int32_t>(a[x], b[x], wz, w);
+      for (int x = x0; x < x1; ++x) o[x] = lerp_t<int32_t>(a[x], b[x], wz, w);
     }
   }
 }

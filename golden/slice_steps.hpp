@@ -6,8 +6,10 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
+#include "golden/empty_space.hpp"
 #include "golden/permuted_volume.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/renderers.hpp"
@@ -29,6 +31,9 @@ struct Plane {
 };
 
 void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out);
+// Beams y0 .. y1-1 of voxel slice z, beam y only over spans[y] (the rest of
+// the plane keeps what it held).
+void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out, int y0, int y1, const Span* spans);
 
 // Interpolation unit over a whole sample slice: trilinear() for every
 // sample, computed stage by stage across the slice (x lerps of each voxel
@@ -36,15 +41,22 @@ void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out);
 // trilinear() on each sample's eight voxels (tested). A stage whose weight
 // is zero returns its first operand exactly, so it is not computed.
 // lo, hi: voxel slices z_voxel and z_voxel + 1 with a border of at least 1.
+// The ranged form computes only beams y0 .. y1-1, beam y over spans[y]
+// (which then reads voxel beams y and y + 1 over spans[y] and one voxel
+// more); the rest of `out` keeps what it held.
 class SliceInterp {
  public:
   SliceInterp(int nx, int ny, int weight_bits);
   void slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out);
+  void slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out, int y0, int y1,
+             const Span* spans);
 
  private:
-  void bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out);
+  void bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out, int y0, int y1,
+                const Span* spans);
   int nx_, ny_, w_;
   std::vector<int32_t> tx_, ty_lo_, ty_hi_;
+  std::vector<Span> whole_;  // every beam whole
 };
 
 // The 12-neighbourhood of sample (x, y) of slice c.k from the sample slices
@@ -69,66 +81,77 @@ inline void write_pixel(BasePlane& bp, int u, int v, const Pixel& a) {
   px[0] = a.r; px[1] = a.g; px[2] = a.b; px[3] = a.a;
 }
 
-// The compositing unit over whole slices: the ray store of the previous
-// slice, ray alignment, blending, and the base-plane pixels of the rays
-// that leave. Per slice, `shade(x, y, ray, out)` supplies the cropped and
-// cut sample of (x, y) and returns false if it leaves `ray` exactly as it
-// is (then `out` is not used), and `beam_may_change(y)` may return false
-// for a beam none of whose samples changes its ray.
+// The compositing unit over whole slices: the ray store, ray alignment,
+// blending, and the base-plane pixels of the rays that leave. Per slice,
+// `shade(x, y, ray, out)` supplies the cropped and cut sample of (x, y) and
+// returns false if it leaves `ray` exactly as it is (then `out` is not
+// used), and `beams(y)` says which samples of beam y may change their ray:
+// true or false for all or none, or a Span.
+//
+// Rays are stored by their base-plane pixel: the ray through sample (x, y)
+// of slice k is pixel (x - ix_k + ix_last, y - iy_k + iy_last), which is
+// ray_predecessor()'s alignment (the ray of (x, y) continues the one of
+// (x - dx, y - dy)) without moving any ray. A ray enters the slice once and
+// leaves it once (the offsets only grow), so a pixel not yet reached holds
+// the empty ray a side-face entry starts with.
+//
+// `slice` and `finish` may be given a band of base-plane rows [v0, v1):
+// they then touch only those rays and pixels, so bands run concurrently.
 class SliceCompositor {
  public:
   SliceCompositor(const Registers& r, BasePlane& bp)
       : r_(r), bp_(bp), nx_(r.dim[0]), ny_(r.dim[1]), K_(r.sample_slices()),
-        ix_last_(r.x_offset(K_ - 1).integer), iy_last_(r.y_offset(K_ - 1).integer),
-        prev_(static_cast<size_t>(nx_) * ny_), cur_(prev_.size()) {}
+        ix_last_(r.x_offset(K_ - 1).integer), iy_last_(r.y_offset(K_ - 1).integer), width_(r.base_width()),
+        rays_(static_cast<size_t>(r.base_width()) * r.base_height()) {}
 
-  template <class Shade, class BeamMayChange>
-  void slice(const SliceControl& c, Shade&& shade, BeamMayChange&& beam_may_change) {
-    for (int y = 0; y < ny_; ++y) {
-      RayAcc* out_row = &cur_[static_cast<size_t>(y) * nx_];
-      // ray_predecessor() is the same for the whole beam from x = dx on.
-      const Predecessor from = ray_predecessor(c.dx, y, c.dx, c.dy);
-      if (!from.exists) {
-        std::fill(out_row, out_row + nx_, RayAcc{});
+  // Beams of slice c.k whose rays are base-plane rows [v0, v1).
+  int first_beam(const SliceControl& c, int v0) const { return std::clamp(v0 + c.iy - iy_last_, 0, ny_); }
+  int end_beam(const SliceControl& c, int v1) const { return std::clamp(v1 + c.iy - iy_last_, 0, ny_); }
+
+  template <class Shade, class Beams>
+  void slice(const SliceControl& c, Shade&& shade, Beams&& beams, int v0 = 0, int v1 = kAllRows) {
+    const int y0 = first_beam(c, v0), y1 = end_beam(c, v1);
+    for (int y = y0; y < y1; ++y) {
+      Span span;
+      if constexpr (std::is_same_v<decltype(beams(y)), bool>) {
+        if (beams(y)) span = {0, nx_};
       } else {
-        const RayAcc* in_row = &prev_[static_cast<size_t>(from.y) * nx_ + from.x];
-        std::fill(out_row, out_row + c.dx, RayAcc{});
-        std::copy(in_row, in_row + nx_ - c.dx, out_row + c.dx);
+        span = beams(y);
       }
-      if (!beam_may_change(y)) continue;
+      if (span.empty()) continue;
+      RayAcc* ray = &rays_[static_cast<size_t>(y - c.iy + iy_last_) * width_ + (ix_last_ - c.ix)];
       ShadedSample s;
-      for (int x = 0; x < nx_; ++x) {
-        RayAcc& ray = out_row[x];
-        if (shade(x, y, ray, s)) ray = blend(r_.blend, ray, s, r_.p);
-      }
+      for (int x = span.begin; x < span.end; ++x)
+        if (shade(x, y, ray[x], s)) ray[x] = blend(r_.blend, ray[x], s, r_.p);
     }
     // Rays of slice k-1 with no successor in slice k left through a side
     // face; only the last dy beams and the last dx rays of a beam can.
     if (c.k > 0 && (c.dx | c.dy)) {
       const SliceControl pc = slice_control(r_, c.k - 1);
-      for (int y = 0; y < ny_; ++y)
+      for (int y = first_beam(pc, v0); y < end_beam(pc, v1); ++y)
         for (int x = y >= ny_ - c.dy ? 0 : nx_ - c.dx; x < nx_; ++x)
-          if (ray_leaves(x, y, c.dx, c.dy, nx_, ny_))
-            write_pixel(bp_, x - pc.ix + ix_last_, y - pc.iy + iy_last_,
-                        pixel_of(prev_[static_cast<size_t>(y) * nx_ + x], r_.p));
+          if (ray_leaves(x, y, c.dx, c.dy, nx_, ny_)) leave(pc, x, y);
     }
-    std::swap(prev_, cur_);
   }
 
   // After the last slice: the rays still inside leave through the back face.
-  void finish() {
+  void finish(int v0 = 0, int v1 = kAllRows) {
     const SliceControl last = slice_control(r_, K_ - 1);
-    for (int y = 0; y < ny_; ++y)
-      for (int x = 0; x < nx_; ++x)
-        write_pixel(bp_, x - last.ix + ix_last_, y - last.iy + iy_last_,
-                    pixel_of(prev_[static_cast<size_t>(y) * nx_ + x], r_.p));
+    for (int y = first_beam(last, v0); y < end_beam(last, v1); ++y)
+      for (int x = 0; x < nx_; ++x) leave(last, x, y);
   }
 
+  static constexpr int kAllRows = 1 << 30;
+
  private:
+  void leave(const SliceControl& c, int x, int y) {
+    const int u = x - c.ix + ix_last_, v = y - c.iy + iy_last_;
+    write_pixel(bp_, u, v, pixel_of(rays_[static_cast<size_t>(v) * width_ + u], r_.p));
+  }
   const Registers& r_;
   BasePlane& bp_;
-  int nx_, ny_, K_, ix_last_, iy_last_;
-  std::vector<RayAcc> prev_, cur_;
+  int nx_, ny_, K_, ix_last_, iy_last_, width_;
+  std::vector<RayAcc> rays_;
 };
 
 // An empty base plane of the frame's size, with the warp's shift.

@@ -167,13 +167,15 @@ Volume single_voxel(const VolumeSource& src, int bits) {
 
 }  // namespace
 
-Volume make_synthetic(const VolumeSource& src, int voxel_bits) {
+Volume make_synthetic(const VolumeSource& src, int voxel_bits, bool header_only) {
   check_voxel_bits(voxel_bits);
   check_size(src.size);
   check_memory("volume.size", "the synthetic " + src.kind, 2.0 * static_cast<double>(src.size[0]) * src.size[1] * src.size[2],
                dims_text(src.size) + " voxels");
   Volume v;
-  if (src.kind == "sphere")
+  if (header_only) {
+    v.source = src.kind + " " + dims_text(src.size);
+  } else if (src.kind == "sphere")
     v = sphere(src, voxel_bits);
   else if (src.kind == "field")
     v = field(src, voxel_bits);

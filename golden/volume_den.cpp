@@ -140,7 +140,7 @@ void check_header(const DenHeader& h, const std::string& path) {
 
 }  // namespace
 
-Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits) {
+Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits, bool header_only) {
   check_voxel_bits(voxel_bits);
   GzPtr f = open_den(path);
   const DenHeader h = parse_header(read_up_to(f.get(), kHeaderBytes, path), path);
@@ -148,6 +148,11 @@ Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits) 
   const size_t expected = static_cast<size_t>(h.map_length);
   check_memory(path, "the volume", volume_load_bytes(static_cast<double>(expected), 1),
                dims_text(h.dim[0], h.dim[1], h.dim[2]) + " voxels");
+  Volume v;
+  v.dim = h.dim;
+  v.bits = voxel_bits;
+  v.source = path;
+  if (header_only) return v;
   const std::vector<unsigned char> bytes = read_up_to(f.get(), expected, path);
   // Like VolPack's read_den, bytes after the map are ignored; a little of
   // them is read so that a gzip stream that ends there has its CRC checked
@@ -157,11 +162,7 @@ Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits) 
     throw InputError(path + ": truncated data: expected " + std::to_string(expected) +
                      " bytes after the " + std::to_string(kHeaderBytes) + "-byte header, found " +
                      std::to_string(bytes.size()));
-  Volume v;
-  v.dim = h.dim;
-  v.bits = voxel_bits;
   v.data = quantise(bytes.data(), SampleType::UInt8, h.dim, q, voxel_bits, path);
-  v.source = path;
   return v;
 }
 

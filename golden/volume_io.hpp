@@ -10,13 +10,16 @@
 namespace cube4::golden {
 
 // Loads or generates the volume a scene names. `scene_dir` resolves relative
-// paths. `voxel_bits` is the pipeline's voxel width.
-Volume load_volume(const VolumeSource& src, int voxel_bits, const std::string& scene_dir);
+// paths. `voxel_bits` is the pipeline's voxel width. With `header_only` a
+// loader stops once the header is read and checked (its memory check
+// included) and returns the volume without voxels: its dimensions, spacing,
+// width and source, all a run's limits depend on.
+Volume load_volume(const VolumeSource& src, int voxel_bits, const std::string& scene_dir, bool header_only = false);
 
-Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits);
-Volume load_raw(const VolumeSource& src, const std::string& path, int voxel_bits);
-Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits);
-Volume make_synthetic(const VolumeSource& src, int voxel_bits);
+Volume load_den(const std::string& path, const Quantisation& q, int voxel_bits, bool header_only = false);
+Volume load_raw(const VolumeSource& src, const std::string& path, int voxel_bits, bool header_only = false);
+Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits, bool header_only = false);
+Volume make_synthetic(const VolumeSource& src, int voxel_bits, bool header_only = false);
 
 // Where Debian's libvolpack1-dev puts the MRI head (the default scene's volume).
 std::string default_brainsmall_path();

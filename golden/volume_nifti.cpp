@@ -184,7 +184,7 @@ void swap_samples(unsigned char* p, size_t count, size_t width) {
 
 }  // namespace
 
-Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits) {
+Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits, bool header_only) {
   check_voxel_bits(voxel_bits);
   ZnzPtr fp = open_znz(path, "NIfTI file");
   const Header hd = read_header(fp.get(), path);
@@ -206,6 +206,12 @@ Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits
   const double voxels = static_cast<double>(dim[0]) * dim[1] * dim[2];
   check_memory(path, "the volume", volume_load_bytes(voxels, t.bytes),
                dims_text(dim[0], dim[1], dim[2]) + " voxels of " + std::to_string(t.bytes) + " bytes");
+  Volume v;
+  v.dim = dim;
+  v.spacing = {spacing_of(h.pixdim[1]), spacing_of(h.pixdim[2]), spacing_of(h.pixdim[3])};
+  v.bits = voxel_bits;
+  v.source = path;
+  if (header_only) return v;
   const std::string iname = hd.single_file ? path : image_file_of(path);
   ZnzPtr data_fp = hd.single_file ? std::move(fp) : open_znz(iname, "NIfTI data file");
   const size_t ntot = static_cast<size_t>(voxels) * static_cast<size_t>(t.bytes);
@@ -220,12 +226,7 @@ Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits
   // of a stream that ends there.
   read_bytes(data_fp.get(), size_t{1} << 20, iname);
   if (hd.swapped) swap_samples(data.data(), static_cast<size_t>(voxels), static_cast<size_t>(t.bytes));
-  Volume v;
-  v.dim = dim;
-  v.spacing = {spacing_of(h.pixdim[1]), spacing_of(h.pixdim[2]), spacing_of(h.pixdim[3])};
-  v.bits = voxel_bits;
   v.data = quantise(data.data(), t.type, dim, q, voxel_bits, path, scaling_of(h));
-  v.source = path;
   return v;
 }
 

@@ -86,7 +86,7 @@ void swap_samples(unsigned char* p, size_t count, size_t width) {
 
 }  // namespace
 
-Volume load_raw(const VolumeSource& src, const std::string& path, int voxel_bits) {
+Volume load_raw(const VolumeSource& src, const std::string& path, int voxel_bits, bool header_only) {
   check_voxel_bits(voxel_bits);
   const SampleType t = parse_type(src.type);
   const bool big = parse_big_endian(src.endian);
@@ -100,14 +100,15 @@ Volume load_raw(const VolumeSource& src, const std::string& path, int voxel_bits
                              " bytes " + src.type;
   check_memory(path, "the volume", volume_load_bytes(static_cast<double>(n), static_cast<double>(width)),
                dims_text(src.dim[0], src.dim[1], src.dim[2]) + " voxels of " + std::to_string(width) + " bytes");
-  std::vector<unsigned char> bytes = read_exact(path, src.header_bytes + n * width, layout);
-  unsigned char* samples = bytes.data() + src.header_bytes;
-  if (big != host_is_big_endian()) swap_samples(samples, n, width);
   Volume v;
   v.dim = src.dim;
   v.bits = voxel_bits;
-  v.data = quantise(samples, t, src.dim, src.quantisation, voxel_bits, path);
   v.source = path;
+  if (header_only) return v;
+  std::vector<unsigned char> bytes = read_exact(path, src.header_bytes + n * width, layout);
+  unsigned char* samples = bytes.data() + src.header_bytes;
+  if (big != host_is_big_endian()) swap_samples(samples, n, width);
+  v.data = quantise(samples, t, src.dim, src.quantisation, voxel_bits, path);
   return v;
 }
 

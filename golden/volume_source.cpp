@@ -40,19 +40,19 @@ void check_spacing(const Vec3& s) {
 
 }  // namespace
 
-Volume load_volume(const VolumeSource& src, int voxel_bits, const std::string& scene_dir) {
+Volume load_volume(const VolumeSource& src, int voxel_bits, const std::string& scene_dir, bool header_only) {
   check_voxel_bits(voxel_bits);
   // Checked before any file is read, so a bad override does not cost a load.
   if (src.spacing) check_spacing(*src.spacing);
   Volume v;
   if (src.kind == "den")
-    v = load_den(resolve(src.path, scene_dir), src.quantisation, voxel_bits);
+    v = load_den(resolve(src.path, scene_dir), src.quantisation, voxel_bits, header_only);
   else if (src.kind == "raw")
-    v = load_raw(src, resolve(src.path, scene_dir), voxel_bits);
+    v = load_raw(src, resolve(src.path, scene_dir), voxel_bits, header_only);
   else if (src.kind == "nifti")
-    v = load_nifti(resolve(src.path, scene_dir), src.quantisation, voxel_bits);
+    v = load_nifti(resolve(src.path, scene_dir), src.quantisation, voxel_bits, header_only);
   else if (is_synthetic(src.kind))
-    v = make_synthetic(src, voxel_bits);
+    v = make_synthetic(src, voxel_bits, header_only);
   else
     throw InputError("volume.kind: unknown volume kind '" + src.kind +
                      "' (expected den, raw, nifti, sphere, field, noise, constant or "

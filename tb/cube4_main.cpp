@@ -25,7 +25,9 @@
 #include "tb/progress.hpp"
 #include "tb/regress.hpp"
 #include "tb/report.hpp"
+#include "systemc/core/system.hpp"
 #include "systemc/host/host_program.hpp"
+#include "systemc/host/register_map.hpp"
 #include "tb/system_report.hpp"
 
 namespace {
@@ -50,6 +52,7 @@ struct RenderArgs {
   std::vector<int64_t> trace_window;  // first, last cycle
   uint64_t max_memory_mib = 0;  // 0: golden::kDefaultMemoryLimit
   std::optional<uint32_t> seed;        // default: CUBE4_SEED, else 1
+  int threads = 0;              // golden renders (fixed, and --check's): 0 = one per core
 };
 
 // The RTL's random-reset seed: --seed, else the environment's CUBE4_SEED
@@ -113,34 +116,65 @@ struct Loaded {
   golden::HostProgram host;
 };
 
-Loaded load(const std::string& scene_path) {
+void load_volume(Loaded& l, const std::string& scene_path, bool header_only) {
+  const std::string dir = scene_path.empty() ? "." : std::filesystem::path(scene_path).parent_path().string();
+  l.volume = golden::load_volume(l.scene.volume, l.scene.precision.voxel_bits, dir.empty() ? "." : dir, header_only);
+  l.host = golden::program_host(l.scene, l.volume);
+}
+
+// With `header_only` the volume has no voxels yet: what every limit of a run
+// depends on (dimensions, spacing, so the view and the registers) comes
+// from the scene and the volume's header, so a run the limits refuse costs
+// no load.
+Loaded load(const std::string& scene_path, bool header_only = false) {
   Loaded l;
   l.scene = scene_path.empty() ? golden::default_scene() : golden::load_scene(scene_path);
-  const std::string dir = scene_path.empty() ? "." : std::filesystem::path(scene_path).parent_path().string();
-  l.volume = golden::load_volume(l.scene.volume, l.scene.precision.voxel_bits, dir.empty() ? "." : dir);
-  l.host = golden::program_host(l.scene, l.volume);
+  load_volume(l, scene_path, header_only);
   return l;
 }
+
 
 nlohmann::json effects_json(const golden::EffectSet& e) { return e.names(); }
 
 // What a render holds besides the loaded volume, estimated before it starts
 // so that an 8192x8192 image or a large volume through the system model is
 // refused by name instead of ending in bad_alloc.
-void check_render_memory(const Loaded& l, const std::string& model) {
+void check_render_memory(const Loaded& l, const std::string& model, int golden_threads) {
   const double voxels = static_cast<double>(l.volume.size());
   const double base = static_cast<double>(l.host.regs.base_width()) * l.host.regs.base_height();
+  const double slice = static_cast<double>(l.host.regs.dim[0]) * l.host.regs.dim[1];
   const double image = static_cast<double>(l.scene.width) * l.scene.height;
   // The volume (2 bytes a voxel), the base plane (fixed and float: 16 bytes
   // a pixel at most), the final image (float RGBA, and 8-bit for PNG); the
   // system model keeps its own copy of the volume in voxel memory, and the
-  // check's golden render another base plane.
+  // check's golden render another base plane. The fixed renderer's ray
+  // store holds a ray per base-plane pixel, and each of its threads eight
+  // slices of 4-byte samples and voxels.
   const bool system = is_system_model(model);
-  const double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20;
+  const bool fixed = model == "fixed" || system;
+  const double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20 +
+                       (fixed ? base * sizeof(golden::RayAcc) * (system ? 2 : 1) + golden_threads * 8 * 4 * slice : 0);
   golden::check_memory(l.scene.file.empty() ? std::string("the default scene") : l.scene.file,
                        "the " + model + " render", bytes,
                        golden::dims_text(l.volume.dim[0], l.volume.dim[1], l.volume.dim[2]) + " voxels, " +
                            std::to_string(l.scene.width) + "x" + std::to_string(l.scene.height) + " image");
+}
+
+// The built system's limits, from the registers of the volume's header
+// (before any voxel is loaded): the host interface's volume window, then
+// what sysc::check_system_limits() holds.
+void check_system_limits(const Loaded& l, const sysc::SystemConfig& cfg) {
+  for (int i = 0; i < 3; ++i)
+    if (l.volume.dim[i] > sysc::regmap::kMaxDimLimit)
+      throw InputError(l.volume.source + ": volume " +
+                       golden::dims_text(l.volume.dim[0], l.volume.dim[1], l.volume.dim[2]) +
+                       " has more than the host interface's " + std::to_string(sysc::regmap::kMaxDimLimit) +
+                       " voxels per axis (its volume window, docs/registers.md); render it with --model fixed");
+  try {
+    sysc::check_system_limits(l.host.regs, cfg);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
 }
 
 // The FST files the RTL units write (systemc/rtl/: one per unit, the
@@ -183,10 +217,11 @@ int run_render(const RenderArgs& a) {
   const std::string report_temp = a.report.empty() ? "" : outputs.add(a.report, "--report");
   const std::string trace_temp = a.trace.empty() ? "" : outputs.add_trace(a.trace, kTraceUnits);
   if (!a.scene.empty()) outputs.check_not_output(a.scene, "the scene");
-  Loaded l = load(a.scene);
+  Loaded l = load(a.scene, true);
   if (l.scene.volume.kind == "den" || l.scene.volume.kind == "raw" || l.scene.volume.kind == "nifti")
     outputs.check_not_output(l.volume.source, "the volume");
-  check_render_memory(l, a.model);
+  const int golden_threads = a.threads > 0 ? a.threads : golden::default_threads();
+  check_render_memory(l, a.model, golden_threads);
   sysc::SystemConfig cfg;
   std::optional<sysc::SystemResult> sys;
   double bus_seconds = 0;  // host-bus time of programming the frame and reading it back
@@ -207,7 +242,9 @@ int run_render(const RenderArgs& a) {
         cfg.trace.last = static_cast<uint64_t>(a.trace_window[1]);
       }
     }
+    check_system_limits(l, cfg);
   }
+  load_volume(l, a.scene, false);
   tb::ProgressPrinter progress("render " + a.model, !a.quiet);
   auto cb = [&](double f) { progress(f); };
   golden::RenderStats stats;
@@ -216,6 +253,7 @@ int run_render(const RenderArgs& a) {
   // Each repetition renders the base plane (or reference image) and warps
   // it: a frame as the hardware plus companion card would deliver it.
   std::vector<double> frame_seconds;
+  std::optional<golden::BlockRanges> ranges;
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
@@ -235,7 +273,9 @@ int run_render(const RenderArgs& a) {
         hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
         if (!a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
         if (cfg.check) {
-          const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, l.host.regs), bp);
+          golden::FixedOptions opt;
+          opt.threads = a.threads;
+          const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, l.host.regs, opt), bp);
           if (!diff.empty() || sys->mismatch) {
             check_failure = diff.empty() ? "base plane equal, but " : diff + "; ";
             check_failure += sys->mismatch ? "first unit output that differs: " + sys->mismatch->describe()
@@ -244,7 +284,14 @@ int run_render(const RenderArgs& a) {
         }
       }
     } else if (a.model == "fixed") {
-      const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, &stats, cb);
+      golden::FixedOptions opt;
+      opt.stats = &stats;
+      opt.progress = cb;
+      opt.threads = a.threads;
+      // Built once: the volume is the same for every repetition.
+      if (!ranges) ranges = golden::block_ranges(l.volume);
+      opt.ranges = &*ranges;
+      const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, opt);
       image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
       frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       if (last) {
@@ -285,6 +332,7 @@ int run_render(const RenderArgs& a) {
         {"output", a.output},
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
+    if (a.model == "fixed") r["threads"] = a.threads > 0 ? a.threads : golden::default_threads();
     if (sys) {
       r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
       r["system"]["host_bus_ms"] = bus_seconds * 1e3;
@@ -355,6 +403,10 @@ int main(int argc, char** argv) {
                    "system model: simulate every unit and all RTL hardware, needed or not (to measure what skipping saves)");
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
   render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
+  render->add_option("--threads", ra.threads,
+                     "fixed model and --check: threads, each rendering a band of rays (default 0: one per core; "
+                     "the image is the same for any number)")
+      ->check(CLI::Range(0, 1024));
   render->add_option("--seed", ra.seed, "system model: Verilator random-reset seed of the RTL units (default: CUBE4_SEED, else 1)");
   const std::string memory_help = "refuse volumes and renders estimated to need more than MiB of memory (default " +
                                   std::to_string(golden::kDefaultMemoryLimit >> 20) + ")";

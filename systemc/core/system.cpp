@@ -188,17 +188,36 @@ CycleTop& cycle_top() {
   return *top;
 }
 
-void check_rtl_precision(const golden::Registers& r) {
+}  // namespace
+
+void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
+  if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
+  const FramePlan plan(r, cfg.p);  // p, supersampling and the stream tag's slices
+  if (cfg.all_tlm() && !cfg.cycle_level) return;
+  if (cfg.p > kMaxLanes)
+    throw std::invalid_argument("pipelines: " + std::to_string(cfg.p) + " (a cycle-level run takes at most " +
+                                std::to_string(kMaxLanes) + "; --model tlm takes any)");
+  if (cfg.all_tlm()) return;
+  require_rtl(cfg.p);
   if (const golden::PrecisionField* f = golden::first_difference(r.p, golden::Precision{}, true))
     throw std::invalid_argument(std::string("precision: ") + f->key + " = " + std::to_string(r.p.*f->member) +
                                 ", but the system's RTL is verilated with the default widths "
                                 "(docs/fixed-point.md); run other widths with --model tlm");
-  if (r.dim[0] > kRtlMaxDim || r.dim[1] > kRtlMaxDim)
-    throw std::invalid_argument("volume: permuted " + std::to_string(r.dim[0]) + "x" + std::to_string(r.dim[1]) +
-                                " exceeds the RTL rings' storage (MaxDim " + std::to_string(kRtlMaxDim) + ")");
+  // The rings keep beams and slices of the permuted x and y; a gradient
+  // unit the scene does not need is not run at all.
+  const bool gradient_runs = r.gradient || cfg.simulate_unneeded;
+  for (const Unit u : {Unit::Interp, Unit::Gradient, Unit::Composite}) {
+    if (cfg.levels[static_cast<size_t>(u)] != Level::Rtl || (u == Unit::Gradient && !gradient_runs)) continue;
+    for (int axis = 0; axis < 2; ++axis)
+      if (r.dim[axis] > kRtlMaxDim)
+        throw std::invalid_argument(
+            std::string("volume: the view's permuted ") + (axis == 0 ? "x" : "y") + " axis has " +
+            std::to_string(r.dim[axis]) + " voxels, more than the " + unit_name(u) +
+            " ring's storage at RTL holds (MaxDim " + std::to_string(kRtlMaxDim) +
+            " per axis, verilated in systemc/CMakeLists.txt); run the " + unit_name(u) +
+            " unit at TLM (--model tlm, or mixed: without it), or a view whose permuted x and y fit");
+  }
 }
-
-}  // namespace
 
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress) {
@@ -213,7 +232,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     forced.gradient = true;
     rs = &forced;
   }
-  if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
+  check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
   res.levels = cfg.levels;
@@ -259,13 +278,6 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     for (int pass = 0; pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
-    if (!cfg.all_tlm()) {
-      check_rtl_precision(r);
-      require_rtl(cfg.p);
-    }
-    if (cfg.p > kMaxLanes)
-      throw std::invalid_argument("pipelines: " + std::to_string(cfg.p) + " (a cycle-level run takes at most " +
-                                  std::to_string(kMaxLanes) + "; --model tlm takes any)");
 #ifdef CUBE4_HAVE_RTL
     VerilatedContext ctx;
     if (!cfg.trace.file.empty()) ctx.traceEverOn(true);

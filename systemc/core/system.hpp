@@ -76,6 +76,15 @@ struct SystemResult {
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress = {});
 
+// Whether the built system can run `cfg` on registers `r`, from the
+// registers alone (so before any voxel is loaded; run_frame() checks the
+// same): the pipeline counts verilated, the RTL's widths, the lanes of a
+// cycle-level run, the ring storage of each ring unit at RTL (a unit
+// without ring storage, shading or address generation, is not held to it),
+// the stream tag's slices. Throws std::invalid_argument naming the limit,
+// the value and what to do.
+void check_system_limits(const golden::Registers& r, const SystemConfig& cfg);
+
 // The analytic cycle count of a frame at the hardware's rate, for any p
 // (systemc/core/cycle_model.cpp; equal to run_frame()'s frame_cycles at RTL,
 // which the system tests assert).

@@ -2,7 +2,11 @@
 // warp, as a frame would be delivered), without the image-I/O libraries so
 // that start-up does not blur the numbers. Prints one JSON object.
 //   bench_golden [SCENE] [--model fixed|float|reference] [--frames N] [--warmup K]
-//                [--supersampling S] [--reference-step H]
+//                [--supersampling S] [--reference-step H] [--threads N] [--no-skip]
+// --threads: the fixed renderer's threads (default 1; 0: one per core).
+// The fixed renderer's block ranges (empty-space skipping) are built inside
+// every timed frame, as a renderer that cannot know the volume did not
+// change would have to.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -23,7 +27,8 @@ using namespace cube4::golden;
 
 int main(int argc, char** argv) {
   std::string scene_path, model = "fixed";
-  int frames = 20, warmup = 3, supersampling = 0;
+  int frames = 20, warmup = 3, supersampling = 0, threads = 1;
+  bool skip = true;
   double step = 0.25;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -36,6 +41,8 @@ int main(int argc, char** argv) {
     else if (a == "--warmup") warmup = std::atoi(value().c_str());
     else if (a == "--supersampling") supersampling = std::atoi(value().c_str());
     else if (a == "--reference-step") step = std::atof(value().c_str());
+    else if (a == "--threads") threads = std::atoi(value().c_str());
+    else if (a == "--no-skip") skip = false;
     else if (!a.empty() && a[0] != '-') scene_path = a;
     else { std::fprintf(stderr, "bench_golden: unknown option %s\n", a.c_str()); return 2; }
   }
@@ -57,7 +64,11 @@ int main(int argc, char** argv) {
       const auto t0 = std::chrono::steady_clock::now();
       ImageF img;
       if (model == "fixed") {
-        const BasePlane bp = render_fixed(vol, h.regs, &stats);
+        FixedOptions opt;
+        opt.stats = &stats;
+        opt.threads = threads;
+        opt.skip_empty = skip;
+        const BasePlane bp = render_fixed(vol, h.regs, opt);
         img = warp(bp.to_float(), bp.shift_x, bp.shift_y, h.view);
       } else if (model == "float") {
         const BasePlaneF bp = render_float(vol, s, h.view, &stats);
@@ -86,6 +97,10 @@ int main(int argc, char** argv) {
         {"samples_per_second", stats.samples / (median * 1e-3)},
     };
     if (model == "reference") j["reference_step"] = step;
+    if (model == "fixed") {
+      j["threads"] = threads > 0 ? threads : default_threads();
+      j["skip_empty"] = skip;
+    }
     std::printf("%s\n", j.dump().c_str());
   } catch (const InputError& e) {
     std::fprintf(stderr, "bench_golden: %s\n", e.what());

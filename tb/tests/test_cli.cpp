@@ -172,3 +172,20 @@ TEST_F(Cli, TracesHoldTheFrameQuietly) {
   }
 #endif
 }
+
+TEST_F(Cli, EveryThreadCountGivesTheSameBasePlane) {
+  const std::string scene = write("s.json", kSphere);
+  std::string first;
+  for (const std::string threads : {"1", "2", "5", "0"}) {
+    const std::string rep = path("r" + threads + ".json");
+    const CliResult r = run("render " + scene + " -q --threads " + threads + " -o " + path("o.png") + " --report " + rep);
+    ASSERT_EQ(r.code, 0) << r.err;
+    nlohmann::json j;
+    std::ifstream(rep) >> j;
+    if (threads != "0") EXPECT_EQ(j["threads"], std::stoi(threads));
+    EXPECT_GE(j["threads"].get<int>(), 1);
+    if (first.empty()) first = j["baseplane_hash_fnv1a64"];
+    EXPECT_EQ(j["baseplane_hash_fnv1a64"], first) << threads << " threads";
+  }
+  EXPECT_EQ(run("render " + scene + " -q --threads -1 -o " + path("o.png")).code, 2);
+}

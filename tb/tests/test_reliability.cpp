@@ -453,3 +453,73 @@ TEST_F(Reliability, CorruptGzipStreamsAreExitTwo) {
 }
 
 }  // namespace
+
+// ---- limits: refused from the scene and the header, before any voxel -------
+
+namespace {
+
+// A raw volume whose file does not exist: a run that gets past its limits
+// fails on opening it, so a refusal naming a limit was made before any
+// voxel was loaded.
+std::string missing_raw_scene(int nx, int ny, int nz, const std::string& extra = "", int image = 32) {
+  return R"({"volume": {"file": "missing.raw", "dim": [)" + std::to_string(nx) + ", " + std::to_string(ny) + ", " +
+         std::to_string(nz) + R"(], "type": "uint8"}, "view": {"direction": [0, 0, 1]},
+            "output": {"width": )" + std::to_string(image) + R"(, "height": )" + std::to_string(image) + "}" + extra + "}";
+}
+
+}  // namespace
+
+TEST_F(Reliability, LimitsAreCheckedBeforeAnyVoxelIsLoaded) {
+  const std::string wide = write("wide.json", missing_raw_scene(300, 20, 8));
+  const std::string out = " -q -o " + path("o.png");
+  // Golden and TLM levels have no ring storage: they get as far as the file.
+  for (const char* model : {"fixed", "tlm"}) {
+    const CliResult r = run("render " + wide + " --model " + std::string(model) + out);
+    expect_one_error_line(r, "missing.raw: cannot open raw volume");
+  }
+#if CUBE4_TEST_RTL
+  // The rings hold 256 voxels per permuted x and y: named, with the value,
+  // the limit and what to do.
+  for (const char* model : {"rtl", "mixed:interp", "mixed:composite", "mixed:gradient"}) {
+    const CliResult r = run("render " + wide + " --model " + std::string(model) + out);
+    expect_one_error_line(r, "300 voxels");
+    EXPECT_NE(r.err.find("MaxDim 256"), std::string::npos) << model << ": " << r.err;
+    EXPECT_NE(r.err.find("at TLM"), std::string::npos) << model << ": " << r.err;
+  }
+  // The shading unit and address generation have no ring storage: not
+  // refused for the rings.
+  for (const char* model : {"mixed:shade", "mixed:addr"}) {
+    const CliResult r = run("render " + wide + " --model " + std::string(model) + out);
+    expect_one_error_line(r, "missing.raw: cannot open raw volume");
+  }
+  // An unshaded scene runs no gradient unit, so its ring limit does not apply.
+  const std::string mip = write("mip.json", missing_raw_scene(300, 20, 8, R"(, "shading": false, "blend": "mip")"));
+  expect_one_error_line(run("render " + mip + " --model mixed:gradient" + out), "missing.raw: cannot open raw volume");
+  // Pipeline counts with no verilated variant name the CMake option.
+  const std::string small = write("small.json", missing_raw_scene(16, 16, 8));
+  const CliResult p = run("render " + small + " --model rtl --pipes 3" + out);
+  expect_one_error_line(p, "pipelines: 3 has no RTL build");
+  EXPECT_NE(p.err.find("CUBE4_SYSTEM_PIPES"), std::string::npos) << p.err;
+  // Widths the RTL was not verilated with.
+  const CliResult w = run("render " + write("w.json", missing_raw_scene(16, 16, 8, R"(, "precision": {"alpha_bits": 12, "acc_guard_bits": 0})")) +
+                          " --model mixed:shade" + out);
+  expect_one_error_line(w, "precision: alpha_bits = 12");
+  // More pipelines than a cycle-level run has lanes.
+  expect_one_error_line(run("render " + small + " --model rtl --pipes 32" + out), "at most 16");
+#else
+  expect_one_error_line(run("render " + wide + " --model rtl" + out), "this build has no RTL");
+#endif
+  // The host interface's volume window (1024 per axis), for every system level.
+  const std::string huge = write("huge.json", missing_raw_scene(2000, 4, 4));
+  const CliResult h = run("render " + huge + " --model tlm" + out);
+  expect_one_error_line(h, "2000x4x4");
+  EXPECT_NE(h.err.find("host interface's 1024"), std::string::npos) << h.err;
+  EXPECT_NE(h.err.find("--model fixed"), std::string::npos) << h.err;
+  // Memory, for the volume and for the render, from the header.
+  const std::string deep = write("deep.json", missing_raw_scene(512, 512, 16));
+  expect_one_error_line(run("render --max-memory 4 " + deep + out), "memory limit of 4 MiB");
+  const std::string image = write("image.json", missing_raw_scene(64, 64, 8, "", 8192));
+  const CliResult m = run("render --max-memory 512 " + image + out);
+  expect_one_error_line(m, "8192x8192 image");
+  EXPECT_NE(m.err.find("--max-memory"), std::string::npos) << m.err;
+}
