@@ -50,6 +50,8 @@
 //   IndexBits - width of a module index; the default holds any volume of
 //               DimBits-wide dims
 //   PipeBits  - (derived) width of a module number
+`include "cube4_pkg.sv"
+
 module cube4_addr #(
   parameter int unsigned  NumPipes  = cube4_pkg::NumPipes,
   parameter int unsigned  DimBits   = cube4_pkg::DimBits,

@@ -45,6 +45,8 @@
 // PosBits, CutCoefBits;
 // HasCutPlane (0: no cut-plane hardware, cut_enabled_i is ignored; equals
 // golden with cut_enabled false; same latency).
+`include "cube4_pkg.sv"
+
 module cube4_composite #(
   parameter int unsigned VoxelBits   = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits  = cube4_pkg::WeightBits,

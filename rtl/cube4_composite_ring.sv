@@ -27,6 +27,8 @@
 //   BeamDepth, SliceDepth             - (derived) per-pipeline ray beam delay
 //                                       and ray slice store entries:
 //                                       ceil(MaxDim / p) and MaxDim * that
+`include "cube4_pkg.sv"
+
 module cube4_composite_ring #(
   parameter int unsigned  NumPipes    = cube4_pkg::NumPipes,
   parameter int unsigned  VoxelBits   = cube4_pkg::VoxelBits,

@@ -84,6 +84,8 @@
 //                           of the same step, registered here (the ring wrap)
 //   AccBits               - (derived) a ray: {selected, value, alpha, blue,
 //                           green, red}, golden RayAcc
+`include "cube4_pkg.sv"
+
 module cube4_composite_unit #(
   parameter int unsigned  VoxelBits   = cube4_pkg::VoxelBits,
   parameter int unsigned  WeightBits  = cube4_pkg::WeightBits,

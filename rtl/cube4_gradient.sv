@@ -26,6 +26,8 @@
 //   GradientBits      - signed component width (Precision::gradient_bits, 8)
 //   GradientShift     - full difference >> shift (Precision::gradient_shift, 5)
 //   SupersamplingBits - width of the supersampling factor port (4: S <= 15)
+`include "cube4_pkg.sv"
+
 module cube4_gradient #(
   parameter int unsigned VoxelBits         = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits        = cube4_pkg::WeightBits,

@@ -31,6 +31,8 @@
 //   UserTagBits                                    - user part of the tag
 //   MaxDim                                         - largest nx and ny
 //   CtrlBits, TagBits, DimBits                     - (derived) as the unit
+`include "cube4_pkg.sv"
+
 module cube4_gradient_ring #(
   parameter int unsigned  NumPipes          = cube4_pkg::NumPipes,
   parameter int unsigned  VoxelBits         = cube4_pkg::VoxelBits,

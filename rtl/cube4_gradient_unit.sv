@@ -96,6 +96,8 @@
 //   DimBits               - (derived) width of x_o, y_o
 //   LinkBits              - (derived) link width: five samples, [0] current
 //                           row y, [1]/[2] ahead rows, [3]/[4] behind rows
+`include "cube4_pkg.sv"
+
 module cube4_gradient_unit #(
   parameter int unsigned  NumPipes          = cube4_pkg::NumPipes,
   parameter int unsigned  PipeIndex         = 0,

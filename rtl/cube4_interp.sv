@@ -20,6 +20,8 @@
 //   VoxelBits  - voxel and sample width (golden Precision::voxel_bits, 12)
 //   WeightBits - weight fraction bits; weight ports are WeightBits+1 wide
 //                (Precision::weight_bits, 8)
+`include "cube4_pkg.sv"
+
 module cube4_interp #(
   parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits

@@ -24,6 +24,8 @@
 //   MaxDim                - largest nx and ny the delay storage holds
 //   BeamDepth, SliceDepth - (derived) per-pipeline beam delay and slice store
 //                           entries: ceil(MaxDim / p) and MaxDim * that
+`include "cube4_pkg.sv"
+
 module cube4_interp_ring #(
   parameter int unsigned  NumPipes   = cube4_pkg::NumPipes,
   parameter int unsigned  VoxelBits  = cube4_pkg::VoxelBits,

@@ -59,6 +59,8 @@
 //                           link_now_o (masked to zero at a beam's end)
 //   LinkBits              - (derived) width of a link: four voxels,
 //                           [0] front y, [1] front y+1, [2] back y, [3] back y+1
+`include "cube4_pkg.sv"
+
 module cube4_interp_unit #(
   parameter int unsigned  VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned  WeightBits = cube4_pkg::WeightBits,

@@ -11,6 +11,8 @@
 //   VoxelBits  - width of a, b and y (golden Precision::voxel_bits, 12)
 //   WeightBits - fraction bits of w; the weight port is WeightBits+1 wide so
 //                that w = 2^WeightBits is representable (Precision::weight_bits, 8)
+`include "cube4_pkg.sv"
+
 module cube4_lerp #(
   parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits

@@ -13,6 +13,8 @@
 // Parameters:
 //   XBits - width of x and y
 //   FBits - fraction bits of f (>= 1)
+`include "cube4_pkg.sv"
+
 module cube4_mul_frac #(
   parameter int unsigned XBits = cube4_pkg::AlphaBits,
   parameter int unsigned FBits = cube4_pkg::AlphaBits

@@ -13,10 +13,17 @@
 // width; cube4_lerp and cube4_mul_frac take their widths as parameters and
 // are instantiated wherever the operation occurs.
 //
+// Every unit that uses the package includes it (guarded, so a file list
+// that also names it reads it once): a unit file then lints and
+// synthesises alone, with rtl/ on the include path.
+//
 // Frame registers stay one port per field: a packed struct port would reach
 // C++ as one flat vector (Verilator 5.006 exports no field layout), so the
 // C++ binding would have to restate the struct's layout, the second copy
 // this package exists to avoid.
+`ifndef CUBE4_PKG_SV
+`define CUBE4_PKG_SV
+
 package cube4_pkg;
 
   // Waiver: each unit uses only some of these constants, and Verilator
@@ -63,3 +70,5 @@ package cube4_pkg;
   /* verilator lint_on UNUSEDPARAM */
 
 endpackage
+
+`endif  // CUBE4_PKG_SV

@@ -39,6 +39,8 @@
 // Latency cycles, for the system's per-sample position and tag);
 // HasShading (0: no shading hardware, for machines and scenes without it;
 // shading_i is then ignored and the unit equals golden with shading off).
+`include "cube4_pkg.sv"
+
 module cube4_shade #(
   parameter int unsigned VoxelBits       = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits      = cube4_pkg::WeightBits,

@@ -21,6 +21,8 @@
 //
 // Parameters (defaults = golden Precision): VoxelBits, MagnitudeBits,
 // ColorBits, AlphaBits, GmlutBits.
+`include "cube4_pkg.sv"
+
 module cube4_shade_classify #(
   parameter int unsigned VoxelBits     = cube4_pkg::VoxelBits,
   parameter int unsigned MagnitudeBits = cube4_pkg::MagnitudeBits,

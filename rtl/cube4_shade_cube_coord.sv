@@ -27,6 +27,8 @@
 //
 // Parameters: GradientBits, WeightBits, MapFaceRes (golden Precision
 // defaults), DivBitsPerStage (quotient bits per pipeline stage, >= 1).
+`include "cube4_pkg.sv"
+
 module cube4_shade_cube_coord #(
   parameter int unsigned GradientBits    = cube4_pkg::GradientBits,
   parameter int unsigned WeightBits      = cube4_pkg::WeightBits,

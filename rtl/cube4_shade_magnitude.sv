@@ -21,6 +21,8 @@
 //   GradientBits  - signed input component width (golden Precision::gradient_bits, 8)
 //   MagnitudeBits - unsigned output width (Precision::magnitude_bits, 8)
 //   NrIterations  - Newton-Raphson steps (Precision::nr_iterations, 3)
+`include "cube4_pkg.sv"
+
 module cube4_shade_magnitude #(
   parameter int unsigned GradientBits  = cube4_pkg::GradientBits,
   parameter int unsigned MagnitudeBits = cube4_pkg::MagnitudeBits,

@@ -21,6 +21,8 @@
 //
 // Parameters (defaults = golden Precision): AlphaBits, MapBits,
 // MapFracBits, CoefBits, CoefFracBits.
+`include "cube4_pkg.sv"
+
 module cube4_shade_phong #(
   parameter int unsigned AlphaBits    = cube4_pkg::AlphaBits,
   parameter int unsigned MapBits      = cube4_pkg::MapBits,

@@ -22,6 +22,8 @@
 // travels with the data to valid_o. Only the valid registers are reset.
 //
 // Parameters (defaults = golden Precision): WeightBits, MapFaceRes, MapBits.
+`include "cube4_pkg.sv"
+
 module cube4_shade_reflectance #(
   parameter int unsigned WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned MapFaceRes = cube4_pkg::MapFaceRes,

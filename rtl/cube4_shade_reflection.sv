@@ -20,6 +20,8 @@
 // vector is in flight.
 //
 // Parameters (defaults = golden Precision): GradientBits, EyeBits.
+`include "cube4_pkg.sv"
+
 module cube4_shade_reflection #(
   parameter int unsigned GradientBits = cube4_pkg::GradientBits,
   parameter int unsigned EyeBits      = cube4_pkg::EyeBits

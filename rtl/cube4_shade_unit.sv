@@ -21,6 +21,8 @@
 // unit, |g| = 0: equals golden when the magnitude is off, same latency).
 // The system model runs HasShading = HasMagnitude = 0 for scenes without
 // shading and gradient-magnitude modulation (docs/system.md).
+`include "cube4_pkg.sv"
+
 module cube4_shade_unit #(
   parameter int unsigned VoxelBits       = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits      = cube4_pkg::WeightBits,

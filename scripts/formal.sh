@@ -104,7 +104,7 @@ elaborate() {
     fi
   done
   {
-    echo "read_verilog -formal -sv ${files[*]}"
+    echo "read_verilog -formal -sv -Irtl ${files[*]}"
     for p in ${P_PARAMS[$n]}; do
       [[ $p == +* ]] || echo "chparam -set ${p%%=*} ${p#*=} ${P_TOP[$n]}"
     done
