@@ -1,11 +1,11 @@
 # `cmake --install` and the exported package: find_package(cube4) gives
 # cube4::cube4_system (the system model and the Accelerator IP block, with
 # the RTL variants this build verilated), cube4::cube4_host_if and
-# cube4::cube4_golden, and the headers under include/cube4/.
+# cube4::cube4_golden (with cube4::cube4_stream, which the system links), and the headers under include/cube4/.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(_cube4_exported cube4_golden cube4_host_if cube4_system cube4_nifti)
+set(_cube4_exported cube4_golden cube4_stream cube4_host_if cube4_system cube4_nifti)
 # The libraries name the source tree as their include directory; installed,
 # the headers are under include/cube4. The verilated models' folders, which
 # verilate() makes public, are for the library's own sources only (the

@@ -5,14 +5,18 @@
 
 namespace cube4::sysc {
 
-FramePlan::FramePlan(const golden::Registers& regs, int pipes)
+FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits_, uint64_t tag_base_)
     : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]),
       B(pipes > 0 ? (regs.dim[0] + pipes - 1) / pipes : 0),  // p < 1 is refused below
-      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)) {
+      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)), user_tag_bits(user_tag_bits_),
+      tag_base(tag_base_) {
   if (p < 1) throw std::invalid_argument("pipelines: " + std::to_string(p) + " (must be at least 1)");
-  if (K >= (1 << kUserTagBits))
+  if (user_tag_bits < 1 || user_tag_bits > 32)
+    throw std::invalid_argument("user tag bits: " + std::to_string(user_tag_bits) + " (1 to 32)");
+  // The system reads the slice number back from the tag: it must not wrap.
+  if (tag_base == 0 && K >= (int64_t{1} << user_tag_bits))
     throw std::invalid_argument("sample slices: " + std::to_string(K) + " (the stream tag holds fewer than " +
-                                std::to_string(1 << kUserTagBits) + ")");
+                                std::to_string(int64_t{1} << user_tag_bits) + ")");
   if (regs.supersampling >= (1 << kSupersamplingBits))
     throw std::invalid_argument("supersampling: " + std::to_string(regs.supersampling) + " (at most " +
                                 std::to_string((1 << kSupersamplingBits) - 1) + ")");
@@ -26,10 +30,27 @@ int FramePlan::pass_voxel_slice(int pass) const {
   return c.z_voxel + (c.wz != 0 ? 1 : 0);
 }
 
+PassStep FramePlan::step(int pass, int y, int j) const {
+  PassStep s;
+  s.f.beam_start = j == 0;
+  s.f.beam_end = j == B - 1;
+  s.f.slice_start = y == 0;
+  s.f.slice_end = y == ny;
+  if (!zero_pass(pass)) {
+    const golden::SliceControl& c = slices[static_cast<size_t>(pass)];
+    s.wx = c.wx;
+    s.wy = c.wy;
+    s.wz = c.wz;
+  }
+  s.voxel_slice = pass_voxel_slice(pass);
+  s.reads = y < ny && s.voxel_slice < nz;
+  return s;
+}
+
 uint64_t FramePlan::pass_tag(int pass) const {
   const golden::SliceControl* control = zero_pass(pass) ? nullptr : &slices[static_cast<size_t>(pass)];
-  return rtl::gradient_tag(control, 0, static_cast<uint64_t>(r.supersampling), static_cast<uint64_t>(pass),
-                           r.p.weight_bits, kUserTagBits);
+  return rtl::gradient_tag(control, 0, static_cast<uint64_t>(r.supersampling), user_tag(pass), r.p.weight_bits,
+                           user_tag_bits);
 }
 
 #ifdef CUBE4_SYSTEM_TAG_BITS

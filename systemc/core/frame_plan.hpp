@@ -1,14 +1,19 @@
 // Everything a frame's stream is made of, derived once from the registers
-// and p: the traversal sizes, the per-slice control of the weight generator
-// (golden slice_control()) and the stream tag that carries it through the
-// interpolation unit to the gradient unit. The cycle model of a frame
-// (frame_cycles(), systemc/core/cycle_model.cpp) is computed from the same sizes.
+// and p: the traversal sizes, the pass order with its flags and weights
+// (step()), the per-slice control of the weight generator (golden
+// slice_control()) and the stream tag that carries it through the
+// interpolation unit to the gradient unit. The system's stream former and
+// the RTL ring testbenches (tb/rtl/ring_bench.hpp) both form their streams
+// here; the cycle model of a frame (frame_cycles(),
+// systemc/core/cycle_model.cpp) is computed from the same sizes. No
+// SystemC: library cube4_stream.
 #pragma once
 #include <cstdint>
 #include <vector>
 
 #include "golden/pipeline.hpp"
 #include "golden/registers.hpp"
+#include "systemc/core/beats.hpp"
 #include "systemc/rtl/gradient_tag.hpp"
 
 namespace cube4::sysc {
@@ -18,8 +23,20 @@ namespace cube4::sysc {
 using rtl::kSupersamplingBits;
 constexpr int kUserTagBits = 16;
 
+// What travels with one partial beam of the pass order: its flags, the
+// pass's weights and the voxel slice it reads.
+struct PassStep {
+  BeamFlags f;
+  uint32_t wx = 0, wy = 0, wz = 0;  // zero in the zero pass
+  int voxel_slice = 0;              // pass_voxel_slice(pass)
+  bool reads = false;               // a memory read: y < ny and voxel_slice < nz
+};
+
 struct FramePlan {
-  FramePlan(const golden::Registers& regs, int pipes);
+  // user_tag_bits and tag_base shape the tag's user field (the system's:
+  // the pass number in kUserTagBits); a testbench that streams frames back
+  // to back gives each frame its own base so that the tags tell them apart.
+  FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits = kUserTagBits, uint64_t tag_base = 0);
 
   const golden::Registers& r;
   int p;              // pipelines
@@ -27,20 +44,27 @@ struct FramePlan {
   int B;              // partial beams per beam, ceil(nx / p)
   int K;              // sample slices, nz * S
   int passes;         // interpolation passes: K, plus the zero pass when the gradient unit runs
+  int user_tag_bits;
+  uint64_t tag_base;
   std::vector<golden::SliceControl> slices;  // slice_control(k), k = 0 .. K (K: the next of the last)
 
   // The pass's voxel slice: z_voxel(k) when wz = 0, else z_voxel(k) + 1
   // (docs/rtl-interp.md); nz for the zero pass (no memory read).
   int pass_voxel_slice(int pass) const;
   bool zero_pass(int pass) const { return pass >= K; }
+  // Partial beam j of beam y (0 .. ny; ny is the zero beam) of a pass.
+  PassStep step(int pass, int y, int j) const;
   // The interpolation ring's tag of a pass: the gradient ring's control
-  // fields (realign x4, S, ZeroSlice), then the slice number.
+  // fields (realign x4, S, ZeroSlice), then tag_base + pass.
   uint64_t pass_tag(int pass) const;
-  int tag_bits() const { return rtl::gradient_tag_bits(r.p.weight_bits, kUserTagBits); }
-  uint32_t tag_slice(uint64_t tag) const {
-    return static_cast<uint32_t>(tag >> (tag_bits() - kUserTagBits)) & ((1u << kUserTagBits) - 1);
+  uint64_t user_tag(int pass) const {
+    return (tag_base + static_cast<uint64_t>(pass)) & ((uint64_t{1} << user_tag_bits) - 1);
   }
-  bool tag_zero_slice(uint64_t tag) const { return tag >> (tag_bits() - kUserTagBits - 1) & 1; }
+  int tag_bits() const { return rtl::gradient_tag_bits(r.p.weight_bits, user_tag_bits); }
+  uint32_t tag_slice(uint64_t tag) const {
+    return static_cast<uint32_t>(tag >> (tag_bits() - user_tag_bits) & ((uint64_t{1} << user_tag_bits) - 1));
+  }
+  bool tag_zero_slice(uint64_t tag) const { return tag >> (tag_bits() - user_tag_bits - 1) & 1; }
 };
 
 }  // namespace cube4::sysc

@@ -55,17 +55,12 @@ VoxelBeat StreamFormer::next() {
   VoxelBeat b;
   if (done()) return b;
   const Pos cur = at_;
+  const PassStep st = plan_.step(cur.pass, cur.y, cur.j);
   b.valid = true;
-  b.f.beam_start = cur.j == 0;
-  b.f.beam_end = cur.j == plan_.B - 1;
-  b.f.slice_start = cur.y == 0;
-  b.f.slice_end = cur.y == plan_.ny;
-  if (!plan_.zero_pass(cur.pass)) {
-    const golden::SliceControl& c = plan_.slices[static_cast<size_t>(cur.pass)];
-    b.wx = c.wx;
-    b.wy = c.wy;
-    b.wz = c.wz;
-  }
+  b.f = st.f;
+  b.wx = st.wx;
+  b.wy = st.wy;
+  b.wz = st.wz;
   b.tag = plan_.pass_tag(cur.pass);
   // One edge of the address generator: it answers this beat's read (issued
   // at the previous edge) and takes the next beat's, if that one reads.

@@ -31,7 +31,7 @@ class StreamFormer {
     int frame = 0, pass = 0, y = 0, j = 0;
   };
   Pos following(Pos p) const;
-  bool reads(const Pos& p) const { return p.frame < frames_ && p.y < plan_.ny && plan_.pass_voxel_slice(p.pass) < plan_.nz; }
+  bool reads(const Pos& p) const { return p.frame < frames_ && plan_.step(p.pass, p.y, p.j).reads; }
   // The walk's controls that go with issuing the read at p.
   AddrRequest request_for(const Pos& p) const;
   // The next position that reads, from p on (p itself included).

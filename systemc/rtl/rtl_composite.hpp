@@ -11,6 +11,7 @@
 #include "systemc/core/unit_if.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/unit_registers.hpp"
+#include "systemc/rtl/unit_streams.hpp"
 
 namespace cube4::sysc {
 
@@ -21,54 +22,23 @@ class RtlComposite final : public CompositeIf {
 
   RtlComposite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite") {
-    M& m = *m_;
-    rtl::drive_composite_registers(m, plan.r);
-    m.nx_i = static_cast<uint32_t>(plan.nx);
-    m.last_ix_i = static_cast<uint32_t>(plan.slices[static_cast<size_t>(plan.K - 1)].ix);
-    m.last_iy_i = static_cast<uint32_t>(plan.slices[static_cast<size_t>(plan.K - 1)].iy);
+    rtl::drive_composite_registers(*m_, plan.r);
   }
 
   void clock(const ShadedBeat& in, CompositeOut& out) override {
     using rtl::get_bits;
-    using rtl::put_bits;
-    const golden::Precision& pr = plan_.r.p;
-    const int a = pr.alpha_bits, v = pr.voxel_bits, p = plan_.p;
+    const int a = plan_.r.p.alpha_bits, p = plan_.p;
     M& m = *m_;
-    m.valid_i = in.valid;
     if (in.valid) {
       if (in.slice >= static_cast<uint32_t>(plan_.K))
         throw std::logic_error("compositing unit (RTL): sample of slice " + std::to_string(in.slice) +
                                " in a frame of " + std::to_string(plan_.K) + " slices");
-      const golden::SliceControl& c = plan_.slices[in.slice];
-      const golden::SliceControl& next = plan_.slices[in.slice + 1];
-      m.beam_start_i = in.f.beam_start;
-      m.beam_end_i = in.f.beam_end;
-      m.slice_start_i = in.f.slice_start;
-      m.slice_end_i = in.f.slice_end;
-      m.first_slice_i = in.slice == 0;
-      m.last_slice_i = in.slice + 1 == static_cast<uint32_t>(plan_.K);
-      m.dx_i = c.dx != 0;
-      m.dy_i = c.dy != 0;
-      m.next_dx_i = next.dx != 0;
-      m.next_dy_i = next.dy != 0;
-      m.ix_i = static_cast<uint32_t>(c.ix);
-      m.iy_i = static_cast<uint32_t>(c.iy);
-      m.x_i = static_cast<uint32_t>(in.x);
-      m.y_i = static_cast<uint32_t>(in.y);
-      m.z_i = static_cast<uint32_t>(c.z_voxel);
-      m.wx_i = c.wx;
-      m.wy_i = c.wy;
-      m.wz_i = c.wz;
-      for (int k = 0; k < p; ++k) {
-        const auto i = static_cast<size_t>(k);
-        put_bits(m.red_i, k * a, a, in.red[i]);
-        put_bits(m.green_i, k * a, a, in.green[i]);
-        put_bits(m.blue_i, k * a, a, in.blue[i]);
-        put_bits(m.alpha_i, k * a, a, in.alpha[i]);
-        put_bits(m.value_i, k * v, v, in.value[i]);
-      }
-      if (m.last_slice_i && in.f.slice_end && in.f.beam_end) drain_ = kLatency + 1;
+      control_ = rtl::composite_control(plan_, static_cast<int>(in.slice), in.f, in.x, in.y);
+      if (control_.last_slice && in.f.slice_end && in.f.beam_end) drain_ = kLatency + 1;
+    } else {
+      control_.valid = false;  // the rest is held: the ring ignores it
     }
+    rtl::drive_composite_stream(m, control_, in, p, plan_.r.p);
     m_.settle();
     out.pixels.valid = static_cast<uint32_t>(get_bits(m.pixel_valid_o, 0, p));
     for (int k = 0; out.pixels.valid >> k; ++k) {
@@ -89,6 +59,7 @@ class RtlComposite final : public CompositeIf {
   const FramePlan& plan_;
   PixelMemory& pixels_;
   RtlModel<M> m_;
+  rtl::CompositeControl control_;
   int drain_ = 0;
 };
 

@@ -3,6 +3,7 @@
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/unit_streams.hpp"
 
 namespace cube4::sysc {
 
@@ -14,18 +15,8 @@ class RtlInterp final : public InterpIf {
 
   void clock(const VoxelBeat& in, SampleBeat& out) override {
     using rtl::get_bits;
-    using rtl::put_bits;
     M& m = *m_;
-    m.valid_i = in.valid;
-    m.beam_start_i = in.f.beam_start;
-    m.beam_end_i = in.f.beam_end;
-    m.slice_start_i = in.f.slice_start;
-    m.slice_end_i = in.f.slice_end;
-    for (int k = 0; k < p_; ++k) put_bits(m.voxel_i, k * v_, v_, in.voxel[static_cast<size_t>(k)]);
-    m.wx_i = in.wx;
-    m.wy_i = in.wy;
-    m.wz_i = in.wz;
-    m.tag_i = in.tag;
+    rtl::drive_interp_stream(m, in, p_, v_, tag_bits_);
     m_.settle();
     // All pipelines run in lock step: pipeline 0's control stands for all.
     out.valid = m.valid_o & 1;

@@ -1,12 +1,19 @@
-// What the three ring testbenches (test_interp.cpp, test_gradient_ring.cpp,
-// test_composite_ring.cpp) share: the ring sizes the CMake groups verilate,
-// the check that a frame fits a ring, the first-mismatch report, a stage
-// timer, the views every ring is run through and the view's JSON.
+// What the three ring testbenches (test_interp_ring.cpp,
+// test_gradient_ring.cpp, test_composite_ring.cpp) share: the ring sizes the
+// CMake groups verilate, the golden frames (scene, registers, every sample
+// and gradient golden computed), the voxel stream in the system's pass
+// order (formed by the system's own FramePlan), the check that a frame fits
+// a ring, the first-mismatch report, the views every ring is run through and
+// the view's JSON. The rings' input ports are bound in
+// systemc/rtl/unit_streams.hpp, for the system and these tests alike.
 #pragma once
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -14,6 +21,14 @@
 
 #include <gtest/gtest.h>
 
+#include "golden/host_driver.hpp"
+#include "golden/permuted_volume.hpp"
+#include "golden/pipeline.hpp"
+#include "golden/renderers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+#include "systemc/core/beats.hpp"
+#include "systemc/core/frame_plan.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace cube4::rtl {
@@ -66,6 +81,17 @@ std::string mismatch_report(uint64_t cycle, int pipe, int p, const std::vector<c
   return o.str();
 }
 
+// Whether pipeline `pipe`'s valid_o agrees with the output due this cycle
+// (nullptr: none) and one is due; a disagreement goes to
+// fail(cycle, pipe, due, what, detail).
+template <class Due, class Fail>
+bool output_due(bool valid, const Due* due, uint64_t cycle, int pipe, const std::string& output, Fail& fail) {
+  if (valid != (due != nullptr))
+    fail(cycle, pipe, due, due ? "valid_o low, a " + output + " was due" : "valid_o high with no " + output + " due",
+         "");
+  return valid && due;
+}
+
 struct View {
   const char* name;
   std::array<double, 3> dir, up;
@@ -114,6 +140,215 @@ inline RandomScene random_scene(Random& rng) {
   r.size = {static_cast<int>(rng.range(1, 12)), static_cast<int>(rng.range(1, 12)), static_cast<int>(rng.range(1, 12))};
   r.S = static_cast<int>(rng.range(1, 8));
   return r;
+}
+
+// ===========================================================================
+// Golden frames.
+
+// A scene as the host driver programs it: the volume and the registers.
+struct RingFrame {
+  std::string name;
+  golden::Volume vol;
+  golden::Registers regs;
+  int nx = 0, ny = 0, nz = 0, S = 1, K = 0;  // permuted volume, supersampling, sample slices
+
+  void load(const std::string& json, const char* file, std::string frame_name) {
+    const golden::Scene scene = golden::parse_scene(json, file);
+    vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, ".");
+    regs = golden::program_host(scene, vol).regs;
+    name = std::move(frame_name);
+    nx = regs.dim[0];
+    ny = regs.dim[1];
+    nz = regs.dim[2];
+    S = regs.supersampling;
+    K = regs.sample_slices();
+  }
+};
+
+// A frame per scene JSON, built once per test program (the golden renders
+// are the slow part of a ring test).
+template <class F, class Build>
+const F& cached_frame(const std::string& key, Build&& build) {
+  static std::map<std::string, std::unique_ptr<F>> cache;
+  auto& slot = cache[key];
+  if (!slot) {
+    auto f = std::make_unique<F>();
+    build(*f);
+    slot = std::move(f);
+  }
+  return *slot;
+}
+
+// A frame with every sample golden render_fixed() interpolated and, when the
+// gradient unit runs (regs.gradient), its gradient, collected by a
+// SampleProbe; the volume in the pipelines' permuted axes.
+struct SampleFrame : RingFrame {
+  std::unique_ptr<golden::PermutedVolume> pv;  // refers to vol
+  std::vector<uint32_t> samples;               // [(k * ny + y) * nx + x]
+  std::vector<golden::Gradient> gradients;
+  size_t index(int k, int y, int x) const { return (static_cast<size_t>(k) * ny + y) * nx + x; }
+};
+
+// Every sample once, with the slice control the renderer used: it must be
+// slice_control()'s, which the streams are formed from.
+struct SampleCollect : golden::SampleProbe {
+  SampleFrame& f;
+  std::vector<int> count;
+  bool control_ok = true;
+  explicit SampleCollect(SampleFrame& fr) : f(fr), count(fr.samples.size(), 0) {}
+  void sample(int x, int y, const golden::SliceControl& c, uint32_t value, const golden::Gradient& gr) override {
+    const size_t i = f.index(c.k, y, x);
+    f.samples[i] = value;
+    f.gradients[i] = gr;
+    ++count[i];
+    const golden::SliceControl e = golden::slice_control(f.regs, c.k);
+    auto same = [](const golden::Realign& a, const golden::Realign& b) {
+      return a.base == b.base && a.weight == b.weight;
+    };
+    if (e.wx != c.wx || e.wy != c.wy || e.wz != c.wz || e.z_voxel != c.z_voxel || !same(e.behind_x, c.behind_x) ||
+        !same(e.behind_y, c.behind_y) || !same(e.ahead_x, c.ahead_x) || !same(e.ahead_y, c.ahead_y))
+      control_ok = false;
+  }
+};
+
+// A noise volume of `size` seen along `dir`, unshaded, with the gradient
+// unit on or off: the scenes of the interpolation and gradient rings.
+inline const SampleFrame& sample_frame(const std::string& name, const std::array<int, 3>& size,
+                                       const std::array<double, 3>& dir, const std::array<double, 3>& up, int S,
+                                       int seed, bool gradient) {
+  std::ostringstream js;
+  js << R"({"volume": {"synthetic": "noise", "size": [)" << size[0] << ", " << size[1] << ", " << size[2]
+     << R"(], "seed": )" << seed << R"(}, "view": )" << direction_json(dir, up) << R"(, "supersampling": )" << S
+     << R"(, "shading": false})";
+  const std::string json = js.str();
+  return cached_frame<SampleFrame>(json + (gradient ? " gradient" : ""), [&](SampleFrame& f) {
+    std::ostringstream n;
+    n << name << " size " << size[0] << "x" << size[1] << "x" << size[2] << " S=" << S;
+    f.load(json, "ring_scene.json", n.str());
+    f.regs.gradient = gradient;  // on: the probe sees every sample's gradient; off: no zero pass
+    f.pv = std::make_unique<golden::PermutedVolume>(f.vol, f.regs.perm, f.regs.flip);
+    EXPECT_EQ(f.pv->dim(), f.regs.dim);
+    f.samples.assign(static_cast<size_t>(f.K) * f.ny * f.nx, 0);
+    f.gradients.assign(f.samples.size(), golden::Gradient{});
+    SampleCollect probe(f);
+    golden::render_fixed(f.vol, f.regs, nullptr, {}, &probe);
+    for (int c : probe.count)
+      if (c != 1) ADD_FAILURE() << f.name << ": the golden probe saw a sample " << c << " times";
+    EXPECT_TRUE(probe.control_ok) << f.name << ": probe slice control differs from slice_control()";
+  });
+}
+
+// ===========================================================================
+// The voxel stream: what the system's stream former sends the interpolation
+// ring, frame after frame (pass order, flags and weights from FramePlan),
+// with idle cycles and junk where the ring must ignore its inputs.
+
+// From a valid input to its sample, when the next input follows at once or
+// the input ends a beam: the alignment register, then cube4_interp's 3
+// (docs/rtl-interp.md).
+constexpr int kInterpLatency = 4;
+
+struct VoxelStreamOptions {
+  double stall = 0;   // probability of idle cycles before a partial beam
+  int max_gap = 3;    // 1 .. max_gap idle cycles each time
+  bool junk = false;  // random voxels in the zero beam and the zero pass, random weights in the zero pass
+};
+
+// A partial beam of samples the interpolation ring emits (every pipeline
+// at once; pipeline q: x = j*p + q).
+struct PassSample {
+  uint64_t cycle;
+  int frame, k, y, j;  // k: the pass (sample slice k, or K for the zero pass)
+  sysc::BeamFlags f;
+  uint64_t tag;
+};
+
+struct VoxelStream {
+  std::vector<sysc::VoxelBeat> beats;  // one per cycle
+  std::vector<PassSample> samples;     // by cycle
+  uint64_t valid = 0, idle = 0, last_input = 0;
+};
+
+// A beat with valid low and anything elsewhere.
+inline sysc::VoxelBeat junk_voxel_beat(Random& rng, int p, int voxel_bits, int tag_bits) {
+  sysc::VoxelBeat b;
+  b.f.beam_start = rng.chance(0.5);
+  b.f.beam_end = rng.chance(0.5);
+  b.f.slice_start = rng.chance(0.5);
+  b.f.slice_end = rng.chance(0.5);
+  b.wx = rng.range(0, 256);
+  b.wy = rng.range(0, 256);
+  b.wz = rng.chance(0.5) ? 0 : rng.range(0, 256);
+  b.tag = rng.bits(tag_bits);
+  for (int q = 0; q < p; ++q) b.voxel[static_cast<size_t>(q)] = static_cast<uint16_t>(rng.bits(voxel_bits));
+  return b;
+}
+
+// The frames back to back, frame i formed by plans[i] (its p, passes and
+// tags) from the voxels of frames[i]; tag(i, pass) is the tag its beats
+// carry. A frame with shorter beams than the one before starts after the
+// difference in idle cycles (the next pass's beam 0 is the gradient ring's
+// zero beam of the last slice).
+inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
+                                const std::vector<sysc::FramePlan>& plans,
+                                const std::function<uint64_t(int frame, int pass)>& tag, int voxel_bits, int tag_bits,
+                                const VoxelStreamOptions& opt, Random& rng) {
+  VoxelStream s;
+  auto idle = [&](int n) {
+    for (int i = 0; i < n; ++i) s.beats.push_back(junk_voxel_beat(rng, plans.front().p, voxel_bits, tag_bits));
+    s.idle += static_cast<uint64_t>(n);
+  };
+  std::vector<PassSample> due;  // with the index of the beat that produces them
+  for (size_t fi = 0; fi < frames.size(); ++fi) {
+    const SampleFrame& f = *frames[fi];
+    const sysc::FramePlan& plan = plans[fi];
+    const int p = plan.p;
+    if (fi > 0) idle(plans[fi - 1].B - plan.B);
+    for (int pass = 0; pass < plan.passes; ++pass) {
+      const uint64_t pass_tag = tag(static_cast<int>(fi), pass);
+      for (int y = 0; y <= plan.ny; ++y)
+        for (int j = 0; j < plan.B; ++j) {
+          if (opt.stall > 0 && rng.chance(opt.stall)) idle(static_cast<int>(rng.range(1, opt.max_gap)));
+          const sysc::PassStep st = plan.step(pass, y, j);
+          sysc::VoxelBeat b;
+          b.valid = true;
+          b.f = st.f;
+          const bool zero = plan.zero_pass(pass);
+          b.wx = zero && opt.junk ? rng.range(0, 256) : st.wx;
+          b.wy = zero && opt.junk ? rng.range(0, 256) : st.wy;
+          b.wz = st.wz;
+          b.tag = pass_tag;
+          for (int q = 0; q < p; ++q) {
+            uint32_t v = st.reads ? f.pv->at(j * p + q, y, st.voxel_slice) : 0;  // zero outside the volume
+            if (opt.junk && (y == plan.ny || zero)) v = static_cast<uint32_t>(rng.bits(voxel_bits));
+            b.voxel[static_cast<size_t>(q)] = static_cast<uint16_t>(v);
+          }
+          s.beats.push_back(b);
+          ++s.valid;
+          if (y > 0) {
+            sysc::BeamFlags of = st.f;
+            of.slice_start = y == 1;
+            of.slice_end = y == plan.ny;
+            due.push_back({s.beats.size() - 1, static_cast<int>(fi), pass, y - 1, j, of, pass_tag});
+          }
+        }
+    }
+  }
+  s.last_input = s.beats.size() - 1;
+  // The sample of a column leaves the alignment register with the next valid
+  // input, or one cycle later if the column ends a beam.
+  std::vector<uint64_t> next_valid(s.beats.size(), 0);
+  uint64_t nv = ~uint64_t{0};
+  for (size_t i = s.beats.size(); i-- > 0;) {
+    next_valid[i] = nv;
+    if (s.beats[i].valid) nv = i;
+  }
+  for (PassSample& e : due) {
+    const uint64_t t = e.cycle;
+    e.cycle = (e.f.beam_end ? t + 1 : next_valid[t]) + (kInterpLatency - 1);
+  }
+  s.samples = std::move(due);
+  return s;
 }
 
 }  // namespace cube4::rtl

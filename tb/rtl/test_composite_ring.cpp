@@ -23,10 +23,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -36,18 +34,17 @@
 #include "Vcube4_composite_ring_p1.h"
 #include "Vcube4_composite_ring_p2.h"
 #include "Vcube4_composite_ring_p5.h"
-#include "golden/host_driver.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/renderers.hpp"
-#include "golden/scene_io.hpp"
-#include "golden/volume_io.hpp"
 #include "tb/rtl/ring_bench.hpp"
 #include "systemc/rtl/unit_registers.hpp"
+#include "systemc/rtl/unit_streams.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
 
 namespace g = cube4::golden;
+namespace sysc = cube4::sysc;
 using namespace cube4::rtl;  // the shared bench: rtl_check.hpp, ring_bench.hpp
 
 // Ring parameters, as in rtl/groups/composite.cmake.
@@ -66,11 +63,8 @@ struct Sample {
   uint32_t r = 0, g = 0, b = 0, a = 0, value = 0;
 };
 
-struct Frame {
-  std::string name;
-  g::Registers regs;
+struct Frame : RingFrame {
   g::BasePlane golden;  // render_fixed(), with cropping and cut plane
-  int nx = 0, ny = 0, nz = 0, S = 1, K = 0;
   int last_ix = 0, last_iy = 0;
   std::vector<g::SliceControl> ctrl;  // per sample slice
   std::vector<Sample> samples;        // [(k * ny + y) * nx + x], before cropping and cut plane
@@ -129,7 +123,6 @@ struct VolumeSpec {
 
 const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const std::array<double, 3>& up, int S,
                    const Effects& fx, const std::string& view_name) {
-  static std::map<std::string, std::unique_ptr<Frame>> cache;
   std::ostringstream js;
   js << R"({"volume": {"synthetic": ")" << vs.kind << R"(", "size": [)" << vs.size[0] << ", " << vs.size[1] << ", "
      << vs.size[2] << "]";
@@ -137,60 +130,51 @@ const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const
   js << R"(}, "view": {"direction": )" << vec_json(dir) << R"(, "up": )" << vec_json(up) << R"(, "ray_offset": [0.3, 0.6]})"
      << R"(, "supersampling": )" << S << ", " << kTransfer << ", " << fx.json << "}";
   const std::string json = js.str();
-  auto& slot = cache[json];
-  if (slot) return *slot;
-  auto f = std::make_unique<Frame>();
-  const g::Scene scene = g::parse_scene(json, "test_composite_ring.json");
-  const g::Volume vol = g::load_volume(scene.volume, scene.precision.voxel_bits, ".");
-  f->regs = g::program_host(scene, vol).regs;
-  std::ostringstream n;
-  n << fx.name << ", " << vs.kind << " " << vs.size[0] << "x" << vs.size[1] << "x" << vs.size[2] << ", view "
-    << view_name << ", S=" << S;
-  f->name = n.str();
-  const g::Registers& r = f->regs;
-  f->nx = r.dim[0];
-  f->ny = r.dim[1];
-  f->nz = r.dim[2];
-  f->S = r.supersampling;
-  f->K = r.sample_slices();
-  f->last_ix = r.x_offset(f->K - 1).integer;
-  f->last_iy = r.y_offset(f->K - 1).integer;
-  for (int k = 0; k < f->K; ++k) f->ctrl.push_back(g::slice_control(r, k));
-  // The golden base plane, and the samples the compositor receives.
-  f->golden = g::render_fixed(vol, r);
-  g::Registers open = r;
-  open.crop_enabled = false;
-  open.cut_enabled = false;
-  f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, Sample{});
-  Collect probe(*f);
-  const g::BasePlane unclipped = g::render_fixed(vol, open, nullptr, {}, &probe);
-  for (size_t i = 0; i < f->golden.rgba.size(); i += 4) {
-    bool lit = false, clipped = false;
-    for (int c = 0; c < 4; ++c) {
-      lit |= f->golden.rgba[i + c] != 0;
-      clipped |= f->golden.rgba[i + c] != unclipped.rgba[i + c];
+  return cached_frame<Frame>(json, [&](Frame& fr) {
+    Frame* f = &fr;
+    std::ostringstream n;
+    n << fx.name << ", " << vs.kind << " " << vs.size[0] << "x" << vs.size[1] << "x" << vs.size[2] << ", view "
+      << view_name << ", S=" << S;
+    f->load(json, "test_composite_ring.json", n.str());
+    const g::Registers& r = f->regs;
+    const g::Volume& vol = f->vol;
+    f->last_ix = r.x_offset(f->K - 1).integer;
+    f->last_iy = r.y_offset(f->K - 1).integer;
+    for (int k = 0; k < f->K; ++k) f->ctrl.push_back(g::slice_control(r, k));
+    // The golden base plane, and the samples the compositor receives.
+    f->golden = g::render_fixed(vol, r);
+    g::Registers open = r;
+    open.crop_enabled = false;
+    open.cut_enabled = false;
+    f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, Sample{});
+    Collect probe(*f);
+    const g::BasePlane unclipped = g::render_fixed(vol, open, nullptr, {}, &probe);
+    for (size_t i = 0; i < f->golden.rgba.size(); i += 4) {
+      bool lit = false, clipped = false;
+      for (int c = 0; c < 4; ++c) {
+        lit |= f->golden.rgba[i + c] != 0;
+        clipped |= f->golden.rgba[i + c] != unclipped.rgba[i + c];
+      }
+      f->lit_pixels += lit;
+      f->clipped_pixels += clipped;
     }
-    f->lit_pixels += lit;
-    f->clipped_pixels += clipped;
-  }
-  for (const g::SliceControl& c : f->ctrl) {
-    f->dx_slices += c.dx;
-    f->dy_slices += c.dy;
-  }
-  for (int c : probe.count)
-    if (c != 1) ADD_FAILURE() << f->name << ": the golden probe saw a sample " << c << " times";
-  EXPECT_TRUE(probe.all_visible) << f->name << ": a sample is invisible without cropping and cut plane";
-  // The stream's preconditions: offsets that move by 0 or 1 per slice, in
-  // the RTL's position range.
-  for (const g::SliceControl& c : f->ctrl) {
-    EXPECT_TRUE(c.dx == 0 || c.dx == 1) << f->name << ": dx = " << c.dx << " in slice " << c.k;
-    EXPECT_TRUE(c.dy == 0 || c.dy == 1) << f->name << ": dy = " << c.dy << " in slice " << c.k;
-    EXPECT_TRUE(c.ix >= 0 && c.iy >= 0 && c.ix <= f->last_ix && c.iy <= f->last_iy) << f->name;
-  }
-  EXPECT_EQ(f->golden.width, f->nx + f->last_ix);
-  EXPECT_EQ(f->golden.height, f->ny + f->last_iy);
-  slot = std::move(f);
-  return *slot;
+    for (const g::SliceControl& c : f->ctrl) {
+      f->dx_slices += c.dx;
+      f->dy_slices += c.dy;
+    }
+    for (int c : probe.count)
+      if (c != 1) ADD_FAILURE() << f->name << ": the golden probe saw a sample " << c << " times";
+    EXPECT_TRUE(probe.all_visible) << f->name << ": a sample is invisible without cropping and cut plane";
+    // The stream's preconditions: offsets that move by 0 or 1 per slice, in
+    // the RTL's position range.
+    for (const g::SliceControl& c : f->ctrl) {
+      EXPECT_TRUE(c.dx == 0 || c.dx == 1) << f->name << ": dx = " << c.dx << " in slice " << c.k;
+      EXPECT_TRUE(c.dy == 0 || c.dy == 1) << f->name << ": dy = " << c.dy << " in slice " << c.k;
+      EXPECT_TRUE(c.ix >= 0 && c.iy >= 0 && c.ix <= f->last_ix && c.iy <= f->last_iy) << f->name;
+    }
+    EXPECT_EQ(f->golden.width, f->nx + f->last_ix);
+    EXPECT_EQ(f->golden.height, f->ny + f->last_iy);
+  });
 }
 
 // ===========================================================================
@@ -211,15 +195,13 @@ struct Config {
 
 Config config_of(const g::Registers& r) { return Config{r}; }
 
-// One cycle of the input stream.
+// One cycle of the input stream: what the system's RTL wrapper drives
+// (systemc/rtl/unit_streams.hpp), and which frame's slice it belongs to.
 struct Beat {
-  bool valid = false, beam_start = false, beam_end = false, slice_start = false, slice_end = false;
-  bool first_slice = false, last_slice = false, dx = false, dy = false, next_dx = false, next_dy = false;
-  uint32_t ix = 0, iy = 0, x = 0, y = 0, z = 0, wx = 0, wy = 0, wz = 0;
-  uint32_t nx = 0, last_ix = 0, last_iy = 0;
-  int config = 0;  // index into Stream::configs
+  CompositeControl c;
+  sysc::ShadedBeat lanes;  // one shaded sample per pipeline
+  int config = 0;          // index into Stream::configs
   int frame = -1, k = -1;  // of a valid beat, for reports
-  std::vector<Sample> sample;  // one per pipeline
 };
 
 // A pixel pipeline `pipe` must emit in `cycle`.
@@ -243,6 +225,14 @@ struct Stream {
 
 Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamOptions& opt, Random& rng) {
   Stream s;
+  auto put_sample = [](sysc::ShadedBeat& lanes, int q, const Sample& v) {
+    const auto i = static_cast<size_t>(q);
+    lanes.red[i] = static_cast<uint16_t>(v.r);
+    lanes.green[i] = static_cast<uint16_t>(v.g);
+    lanes.blue[i] = static_cast<uint16_t>(v.b);
+    lanes.alpha[i] = static_cast<uint16_t>(v.a);
+    lanes.value[i] = static_cast<uint16_t>(v.value);
+  };
   auto junk_sample = [&] {
     return Sample{static_cast<uint32_t>(rng.bits(kAlphaBits)), static_cast<uint32_t>(rng.bits(kAlphaBits)),
                   static_cast<uint32_t>(rng.bits(kAlphaBits)), static_cast<uint32_t>(rng.bits(kAlphaBits)),
@@ -250,19 +240,20 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
   };
   auto junk = [&](int config) {
     Beat b;
-    b.valid = false;
-    for (bool* f : {&b.beam_start, &b.beam_end, &b.slice_start, &b.slice_end, &b.first_slice, &b.last_slice, &b.dx,
-                    &b.dy, &b.next_dx, &b.next_dy})
+    CompositeControl& c = b.c;
+    for (bool* f : {&c.f.beam_start, &c.f.beam_end, &c.f.slice_start, &c.f.slice_end, &c.first_slice, &c.last_slice,
+                    &c.dx, &c.dy, &c.next_dx, &c.next_dy})
       *f = rng.chance(0.5);
-    for (uint32_t* v : {&b.ix, &b.iy, &b.x, &b.y, &b.z, &b.nx, &b.last_ix, &b.last_iy})
+    for (uint32_t* v : {&c.ix, &c.iy, &c.x, &c.y, &c.z, &c.nx, &c.last_ix, &c.last_iy})
       *v = static_cast<uint32_t>(rng.bits(kPosBits));
-    for (uint32_t* v : {&b.wx, &b.wy, &b.wz}) *v = static_cast<uint32_t>(rng.bits(kWeightBits));
+    for (uint32_t* v : {&c.wx, &c.wy, &c.wz}) *v = static_cast<uint32_t>(rng.bits(kWeightBits));
     b.config = config;
-    for (int q = 0; q < p; ++q) b.sample.push_back(junk_sample());
+    for (int q = 0; q < p; ++q) put_sample(b.lanes, q, junk_sample());
     return b;
   };
   for (size_t fi = 0; fi < frames.size(); ++fi) {
     const Frame& f = *frames[fi];
+    const sysc::FramePlan plan(f.regs, p);
     const Config cfg = config_of(f.regs);
     if (s.configs.empty() || !(s.configs.back() == cfg)) {
       // New compositor registers: drain the samples in flight first.
@@ -272,13 +263,11 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
       s.configs.push_back(cfg);
     }
     const int config = static_cast<int>(s.configs.size()) - 1;
-    const int B = (f.nx + p - 1) / p;
+    const int B = plan.B;
     s.expected_valid += static_cast<uint64_t>(f.K) * f.ny * B;
     for (int k = 0; k < f.K; ++k) {
       const g::SliceControl& c = f.ctrl[k];
       const bool last = k == f.K - 1;
-      const int next_dx = last ? static_cast<int>(rng.bits(1)) : f.ctrl[k + 1].dx;  // ignored in the last slice
-      const int next_dy = last ? static_cast<int>(rng.bits(1)) : f.ctrl[k + 1].dy;
       for (int y = 0; y < f.ny; ++y)
         for (int j = 0; j < B; ++j) {
           if (opt.stall > 0 && rng.chance(opt.stall)) {
@@ -287,34 +276,21 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
             s.idle_beats += gap;
           }
           Beat b;
-          b.valid = true;
-          b.beam_start = j == 0;
-          b.beam_end = j == B - 1;
-          b.slice_start = y == 0;
-          b.slice_end = y == f.ny - 1;
-          b.first_slice = k == 0;
-          b.last_slice = last;
-          b.dx = c.dx;
-          b.dy = c.dy;
-          b.next_dx = next_dx;
-          b.next_dy = next_dy;
-          b.ix = static_cast<uint32_t>(c.ix);
-          b.iy = static_cast<uint32_t>(c.iy);
-          b.x = static_cast<uint32_t>(j * p);
-          b.y = static_cast<uint32_t>(y);
-          b.z = static_cast<uint32_t>(c.z_voxel);
-          b.wx = c.wx;
-          b.wy = c.wy;
-          b.wz = c.wz;
-          b.nx = static_cast<uint32_t>(f.nx);
-          b.last_ix = static_cast<uint32_t>(f.last_ix);
-          b.last_iy = static_cast<uint32_t>(f.last_iy);
+          // The interpolation pass's flags, less the zero beam: the samples'
+          // (docs/rtl-composite.md).
+          sysc::BeamFlags flags = plan.step(k, y, j).f;
+          flags.slice_end = y == f.ny - 1;
+          b.c = composite_control(plan, k, flags, j * p, y);
+          if (last) {  // the next slice's steps are ignored in the last slice
+            b.c.next_dx = rng.chance(0.5);
+            b.c.next_dy = rng.chance(0.5);
+          }
           b.config = config;
           b.frame = static_cast<int>(fi);
           b.k = k;
           for (int q = 0; q < p; ++q) {
             const int x = j * p + q;
-            b.sample.push_back(x < f.nx ? f.at(k, x, y) : junk_sample());  // padding: any value
+            put_sample(b.lanes, q, x < f.nx ? f.at(k, x, y) : junk_sample());  // padding: any value
           }
           s.beats.push_back(b);
           ++s.valid_beats;
@@ -385,42 +361,12 @@ RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const S
     if (cycle < s.beats.size()) {
       b = &s.beats[cycle];
     } else {
-      idle.valid = false;
       idle.config = static_cast<int>(s.configs.size()) - 1;
-      idle.x = static_cast<uint32_t>(rng.bits(kPosBits));
-      idle.sample.assign(p, Sample{static_cast<uint32_t>(rng.bits(kAlphaBits)), 0, 0, 0, 0});
+      idle.c.x = static_cast<uint32_t>(rng.bits(kPosBits));
+      for (int q = 0; q < p; ++q) idle.lanes.alpha[static_cast<size_t>(q)] = static_cast<uint16_t>(rng.bits(kAlphaBits));
     }
-    drive_config(m, s.configs[b->config]);
-    m.valid_i = b->valid;
-    m.beam_start_i = b->beam_start;
-    m.beam_end_i = b->beam_end;
-    m.slice_start_i = b->slice_start;
-    m.slice_end_i = b->slice_end;
-    m.first_slice_i = b->first_slice;
-    m.last_slice_i = b->last_slice;
-    m.dx_i = b->dx;
-    m.dy_i = b->dy;
-    m.next_dx_i = b->next_dx;
-    m.next_dy_i = b->next_dy;
-    m.ix_i = b->ix;
-    m.iy_i = b->iy;
-    m.x_i = b->x;
-    m.y_i = b->y;
-    m.z_i = b->z;
-    m.wx_i = b->wx;
-    m.wy_i = b->wy;
-    m.wz_i = b->wz;
-    m.nx_i = b->nx;
-    m.last_ix_i = b->last_ix;
-    m.last_iy_i = b->last_iy;
-    for (int q = 0; q < p; ++q) {
-      const Sample& smp = b->sample[q];
-      put_bits(m.red_i, q * kAlphaBits, kAlphaBits, smp.r);
-      put_bits(m.green_i, q * kAlphaBits, kAlphaBits, smp.g);
-      put_bits(m.blue_i, q * kAlphaBits, kAlphaBits, smp.b);
-      put_bits(m.alpha_i, q * kAlphaBits, kAlphaBits, smp.a);
-      put_bits(m.value_i, q * kVoxelBits, kVoxelBits, smp.value);
-    }
+    drive_config(m, s.configs[static_cast<size_t>(b->config)]);
+    drive_composite_stream(m, b->c, b->lanes, p, kDefaults);
     cube4::rtl::settle(m);
 
     for (int q = 0; q < p; ++q) {
@@ -433,9 +379,9 @@ RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const S
                             : nullptr;
       std::ostringstream where;
       where << "cycle " << cycle << ", pipeline " << q;
-      if (src && src->valid)
+      if (src && src->c.valid)
         where << ", sample of frame " << src->frame << " (" << frames[src->frame]->name << ") slice k=" << src->k
-              << " x=" << src->x + q << " y=" << src->y;
+              << " x=" << src->c.x + q << " y=" << src->c.y;
       if (!valid) {
         if (e) {
           std::ostringstream o;

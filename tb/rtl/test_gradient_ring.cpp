@@ -20,10 +20,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -37,19 +35,16 @@
 #include "Vcube4_interp_ring_g2.h"
 #include "Vcube4_interp_ring_g4.h"
 #include "Vcube4_interp_ring_g5.h"
-#include "golden/host_driver.hpp"
-#include "golden/permuted_volume.hpp"
 #include "golden/pipeline.hpp"
-#include "golden/renderers.hpp"
-#include "golden/scene_io.hpp"
-#include "golden/volume_io.hpp"
 #include "systemc/rtl/gradient_tag.hpp"
+#include "systemc/rtl/unit_streams.hpp"
 #include "tb/rtl/ring_bench.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
 
 namespace g = cube4::golden;
+namespace sysc = cube4::sysc;
 using namespace cube4::rtl;  // the shared bench: rtl_check.hpp, ring_bench.hpp
 
 // Ring defaults (cube4_gradient_ring, cube4_interp_ring).
@@ -60,8 +55,6 @@ constexpr int kUserTagBits = 8;
 constexpr int kTagBits = CUBE4_GRADIENT_TAG_BITS;  // rtl/groups/gradient.cmake
 static_assert(kTagBits == gradient_tag_bits(kWeightBits, kUserTagBits), "gradient.cmake's tag width differs from the ring's");
 static_assert(kTagBits <= 64, "the test packs a tag into 64 bits");
-// Interpolation ring: a sample 4 cycles after its input step (docs/rtl-interp.md).
-constexpr int kInterpLatency = 4;
 // Gradient ring: a step fires with the next step (or one cycle later if it
 // ends a beam), then cube4_gradient's 3 cycles.
 constexpr int kGradientStages = 3;
@@ -70,108 +63,40 @@ constexpr int kGradientStages = 3;
 
 
 // ===========================================================================
-// Golden frames.
+// Golden frames: every sample and its gradient (regs.gradient forced on).
 
-struct Frame {
-  std::string name;
-  g::Volume vol;
-  g::Registers regs;
-  std::unique_ptr<g::PermutedVolume> pv;  // refers to vol
-  int nx = 0, ny = 0, nz = 0, S = 1, K = 0;
-  std::vector<uint32_t> samples;      // [(k * ny + y) * nx + x]
-  std::vector<g::Gradient> gradients;
-  size_t index(int k, int y, int x) const { return (static_cast<size_t>(k) * ny + y) * nx + x; }
-};
-
-struct Collect : g::SampleProbe {
-  Frame& f;
-  std::vector<int> count;
-  bool control_ok = true;
-  explicit Collect(Frame& fr) : f(fr), count(fr.samples.size(), 0) {}
-  void sample(int x, int y, const g::SliceControl& c, uint32_t value, const g::Gradient& gr) override {
-    const size_t i = f.index(c.k, y, x);
-    f.samples[i] = value;
-    f.gradients[i] = gr;
-    ++count[i];
-    // The tag the test sends is built from slice_control(): it must be what
-    // the renderer used.
-    const g::SliceControl e = g::slice_control(f.regs, c.k);
-    auto same = [](const g::Realign& a, const g::Realign& b) { return a.base == b.base && a.weight == b.weight; };
-    if (e.wx != c.wx || e.wy != c.wy || e.wz != c.wz || e.z_voxel != c.z_voxel || !same(e.behind_x, c.behind_x) ||
-        !same(e.behind_y, c.behind_y) || !same(e.ahead_x, c.ahead_x) || !same(e.ahead_y, c.ahead_y))
-      control_ok = false;
-  }
-};
-
-
-const Frame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
-                   const std::array<double, 3>& up, int S, int seed) {
-  static std::map<std::string, std::unique_ptr<Frame>> cache;
-  std::ostringstream js;
-  js << R"({"volume": {"synthetic": "noise", "size": [)" << size[0] << ", " << size[1] << ", " << size[2]
-     << R"(], "seed": )" << seed << R"(}, "view": )" << direction_json(dir, up) << R"(, "supersampling": )" << S
-     << R"(, "shading": false})";
-  const std::string json = js.str();
-  auto& slot = cache[json];
-  if (slot) return *slot;
-  auto f = std::make_unique<Frame>();
-  const g::Scene scene = g::parse_scene(json, "test_gradient_ring.json");
-  f->vol = g::load_volume(scene.volume, scene.precision.voxel_bits, ".");
-  f->regs = g::program_host(scene, f->vol).regs;
-  f->regs.gradient = true;  // the probe then sees every sample's gradient
-  EXPECT_EQ(f->regs.p.voxel_bits, kVoxelBits);
-  EXPECT_EQ(f->regs.p.weight_bits, kWeightBits);
-  EXPECT_EQ(f->regs.p.gradient_bits, kGradientBits);
-  std::ostringstream n;
-  n << name << " size " << size[0] << "x" << size[1] << "x" << size[2] << " S=" << S;
-  f->name = n.str();
-  f->pv = std::make_unique<g::PermutedVolume>(f->vol, f->regs.perm, f->regs.flip);
-  f->nx = f->regs.dim[0];
-  f->ny = f->regs.dim[1];
-  f->nz = f->regs.dim[2];
-  EXPECT_EQ(f->pv->dim(), f->regs.dim);
-  f->S = f->regs.supersampling;
-  f->K = f->regs.sample_slices();
-  f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, 0);
-  f->gradients.assign(f->samples.size(), g::Gradient{});
-  Collect probe(*f);
-  g::render_fixed(f->vol, f->regs, nullptr, {}, &probe);
-  for (int c : probe.count)
-    if (c != 1) ADD_FAILURE() << f->name << ": the golden probe saw a sample " << c << " times";
-  EXPECT_TRUE(probe.control_ok) << f->name << ": probe slice control differs from slice_control()";
-  slot = std::move(f);
-  return *slot;
+const SampleFrame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
+                         const std::array<double, 3>& up, int S, int seed) {
+  const SampleFrame& f = sample_frame(name, size, dir, up, S, seed, /*gradient=*/true);
+  EXPECT_EQ(f.regs.p.voxel_bits, kVoxelBits);
+  EXPECT_EQ(f.regs.p.weight_bits, kWeightBits);
+  EXPECT_EQ(f.regs.p.gradient_bits, kGradientBits);
+  return f;
 }
 
-// The user tag of slice k of frame fi (any value; it must come back).
-uint32_t user_tag(int fi, int k) { return static_cast<uint32_t>(k + 61 * fi) & ((1u << kUserTagBits) - 1); }
+// Frame fi's plan: the system's stream formation, with the ring's user tag
+// (61 apart from frame to frame).
+sysc::FramePlan plan_of(const SampleFrame& f, int p, size_t fi) { return sysc::FramePlan(f.regs, p, kUserTagBits, 61 * fi); }
 
-// The gradient ring's tag for input slice k (k = K: the zero slice, whose
-// slice control is junk: the ring must not use it).
-uint64_t slice_tag(const Frame& f, int fi, int k, Random& rng) {
-  if (k == f.K) {
+// The gradient ring's tag for input slice k: the plan's, except that the
+// zero slice (k = K), whose slice control the ring must not use, carries
+// random realign fields and supersampling factor.
+uint64_t slice_tag(const sysc::FramePlan& plan, int k, Random& rng) {
+  if (k == plan.K) {
     const uint64_t realign = rng.bits(4 * (kWeightBits + 1));
     const uint64_t supersampling = rng.bits(kSupersamplingBits);
-    return gradient_tag(nullptr, realign, supersampling, user_tag(fi, k), kWeightBits, kUserTagBits);
+    return gradient_tag(nullptr, realign, supersampling, plan.user_tag(k), kWeightBits, kUserTagBits);
   }
-  const g::SliceControl c = g::slice_control(f.regs, k);
-  for (const g::Realign& r : {c.behind_x, c.behind_y, c.ahead_x, c.ahead_y}) {
+  for (const g::Realign& r : {plan.slices[k].behind_x, plan.slices[k].behind_y, plan.slices[k].ahead_x,
+                              plan.slices[k].ahead_y}) {
     EXPECT_TRUE(r.base == 0 || r.base == -1);
     EXPECT_LT(r.weight, 1u << kWeightBits);
   }
-  return gradient_tag(&c, 0, static_cast<uint64_t>(f.S), user_tag(fi, k), kWeightBits, kUserTagBits);
+  return plan.pass_tag(k);
 }
 
 // ===========================================================================
 // Streams.
-
-// One cycle of the interpolation ring's input (chain mode).
-struct VoxelBeat {
-  bool valid = false, beam_start = false, beam_end = false, slice_start = false, slice_end = false;
-  uint32_t wx = 0, wy = 0, wz = 0;
-  uint64_t tag = 0;
-  std::vector<uint32_t> voxel;  // one per pipeline
-};
 
 // A sample entering the gradient ring (one partial beam, every pipeline).
 struct SampleIn {
@@ -197,103 +122,44 @@ struct StreamOptions {
 };
 
 struct Stream {
-  std::vector<VoxelBeat> beats;  // chain: the interpolation ring's input, one per cycle
+  std::vector<sysc::VoxelBeat> beats;  // chain: the interpolation ring's input, one per cycle
   std::vector<SampleIn> in;      // the gradient ring's input samples, by cycle
   std::vector<Expect> expects;   // the gradient ring's outputs, by cycle
   uint64_t voxel_valid = 0, expected_voxel_valid = 0;
   uint64_t sample_valid = 0, expected_sample_valid = 0, zero_steps = 0;
   uint64_t last_voxel = 0, last_sample = 0, last_output = 0, end = 0;
   int last_B = 1;
-  uint64_t frame_gap = 0;  // chain: idle cycles added between frames
+  std::vector<sysc::FramePlan> plans;  // per frame
   std::string error;  // the stream breaks the ring's preconditions
 };
 
-Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamOptions& opt, Random& rng) {
+Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const StreamOptions& opt, Random& rng) {
   Stream s;
+  std::vector<sysc::FramePlan>& plans = s.plans;
+  for (size_t fi = 0; fi < frames.size(); ++fi) plans.push_back(plan_of(*frames[fi], p, fi));
   if (opt.chain) {
-    auto junk = [&] {
-      VoxelBeat b;
-      b.beam_start = rng.chance(0.5);
-      b.beam_end = rng.chance(0.5);
-      b.slice_start = rng.chance(0.5);
-      b.slice_end = rng.chance(0.5);
-      b.wx = rng.range(0, 256);
-      b.wy = rng.range(0, 256);
-      b.wz = rng.chance(0.5) ? 0 : rng.range(0, 256);
-      b.tag = rng.bits(kTagBits);
-      for (int q = 0; q < p; ++q) b.voxel.push_back(rng.bits(kVoxelBits));
-      return b;
-    };
-    std::vector<SampleIn> pending;  // with the index of the beat that produces them
-    for (size_t fi = 0; fi < frames.size(); ++fi) {
-      const Frame& f = *frames[fi];
-      const int B = (f.nx + p - 1) / p;
-      // Within a frame the interpolation ring's beam 0 of the next pass (B
-      // cycles without samples) is the gradient ring's zero beam. A frame
-      // with shorter beams than the one before needs the difference as idle
-      // cycles in front (the stream former's job).
-      if (fi > 0) {
-        const int B_prev = (frames[fi - 1]->nx + p - 1) / p;
-        for (int i = B; i < B_prev; ++i) {
-          s.beats.push_back(junk());
-          ++s.frame_gap;
-        }
-      }
-      s.expected_voxel_valid += static_cast<uint64_t>(f.ny + 1) * B * (f.K + 1);
-      for (int k = 0; k <= f.K; ++k) {
-        // Pass K is the zero slice: voxel slice nz (no memory read), wz = 0.
-        const g::SliceControl c = g::slice_control(f.regs, k);
-        const int z_in = k == f.K ? f.nz : (c.wz == 0 ? c.z_voxel : c.z_voxel + 1);
-        const uint64_t tag = slice_tag(f, static_cast<int>(fi), k, rng);
-        for (int y = 0; y <= f.ny; ++y)
-          for (int j = 0; j < B; ++j) {
-            if (opt.stall > 0 && rng.chance(opt.stall)) {
-              const int gap = static_cast<int>(rng.range(1, opt.max_gap));
-              for (int i = 0; i < gap; ++i) s.beats.push_back(junk());
-            }
-            VoxelBeat b;
-            b.valid = true;
-            b.beam_start = j == 0;
-            b.beam_end = j == B - 1;
-            b.slice_start = y == 0;
-            b.slice_end = y == f.ny;
-            b.wx = k == f.K && opt.junk ? rng.range(0, 256) : c.wx;
-            b.wy = k == f.K && opt.junk ? rng.range(0, 256) : c.wy;
-            b.wz = k == f.K ? 0 : c.wz;
-            b.tag = tag;
-            for (int q = 0; q < p; ++q) {
-              uint32_t v = f.pv->at(j * p + q, y, z_in);  // zero outside the volume
-              if (opt.junk && (y == f.ny || k == f.K)) v = rng.bits(kVoxelBits);
-              b.voxel.push_back(v);
-            }
-            s.beats.push_back(b);
-            ++s.voxel_valid;
-            if (y > 0)
-              pending.push_back({s.beats.size() - 1, static_cast<int>(fi), k, y - 1, j, j == 0, j == B - 1, y == 1,
-                                 y == f.ny, tag, {}});
-          }
-      }
-    }
-    s.last_voxel = s.beats.size() - 1;
-    // The interpolation ring's output cycle of each sample (docs/rtl-interp.md).
-    std::vector<uint64_t> next_valid(s.beats.size(), 0);
-    uint64_t nv = ~uint64_t{0};
-    for (size_t i = s.beats.size(); i-- > 0;) {
-      next_valid[i] = nv;
-      if (s.beats[i].valid) nv = i;
-    }
-    for (SampleIn& e : pending) {
-      const uint64_t t = e.cycle;
-      e.cycle = (e.beam_end ? t + 1 : next_valid[t]) + (kInterpLatency - 1);
-    }
-    s.in = std::move(pending);
+    VoxelStreamOptions vo;
+    vo.stall = opt.stall;
+    vo.max_gap = opt.max_gap;
+    vo.junk = opt.junk;
+    VoxelStream v = voxel_stream(
+        frames, plans, [&](int fi, int pass) { return slice_tag(plans[static_cast<size_t>(fi)], pass, rng); },
+        kVoxelBits, kTagBits, vo, rng);
+    s.voxel_valid = v.valid;
+    for (const SampleFrame* f : frames)
+      s.expected_voxel_valid += static_cast<uint64_t>(f->ny + 1) * ((f->nx + p - 1) / p) * (f->K + 1);
+    s.last_voxel = v.last_input;
+    s.beats = std::move(v.beats);
+    for (const PassSample& e : v.samples)
+      s.in.push_back({e.cycle, e.frame, e.k, e.y, e.j, e.f.beam_start, e.f.beam_end, e.f.slice_start, e.f.slice_end,
+                      e.tag, {}});
   } else {
     uint64_t cycle = 0;
     for (size_t fi = 0; fi < frames.size(); ++fi) {
-      const Frame& f = *frames[fi];
+      const SampleFrame& f = *frames[fi];
       const int B = (f.nx + p - 1) / p;
       for (int k = 0; k <= f.K; ++k) {
-        const uint64_t tag = slice_tag(f, static_cast<int>(fi), k, rng);
+        const uint64_t tag = slice_tag(plans[fi], k, rng);
         for (int y = 0; y < f.ny; ++y)
           for (int j = 0; j < B; ++j) {
             if (opt.stall > 0 && rng.chance(opt.stall)) cycle += rng.range(1, opt.max_gap);
@@ -313,7 +179,7 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
       }
     }
   }
-  for (const Frame* f : frames)
+  for (const SampleFrame* f : frames)
     s.expected_sample_valid += static_cast<uint64_t>(f->ny) * ((f->nx + p - 1) / p) * (f->K + 1);
   s.sample_valid = s.in.size();
   s.last_sample = s.in.back().cycle;
@@ -337,7 +203,7 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
     }
     steps.push_back({e.cycle, e.frame, e.k, e.y, e.j, e.beam_end});
     if (e.slice_end && e.beam_end) {
-      const Frame& f = *frames[e.frame];
+      const SampleFrame& f = *frames[e.frame];
       const int B = (f.nx + p - 1) / p;
       for (int j = 0; j < B; ++j) steps.push_back({e.cycle + 1 + j, e.frame, e.k, f.ny, j, j == B - 1});
       s.zero_steps += B;
@@ -350,7 +216,7 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
   for (size_t i = 0; i < steps.size(); ++i) {
     const Step& st = steps[i];
     if (st.k == 0 || st.y == 0) continue;
-    const Frame& f = *frames[st.frame];
+    const SampleFrame& f = *frames[st.frame];
     const int B = (f.nx + p - 1) / p;
     const uint64_t fire = st.beam_end ? st.cycle + 1 : steps[i + 1].cycle;
     s.expects.push_back({fire + kGradientStages, st.frame, st.k - 1, st.y - 1, st.j, st.j == 0, st.j == B - 1,
@@ -373,7 +239,7 @@ struct RunResult {
 };
 
 template <class G, class I>
-RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<const Frame*>& frames,
+RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<const SampleFrame*>& frames,
               const Stream& s, Random& rng) {
   RunResult r;
   cube4::rtl::reset(m);
@@ -388,27 +254,11 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
   for (uint64_t cycle = 0; cycle < s.end; ++cycle) {
     const SampleIn* in = ii < s.in.size() && s.in[ii].cycle == cycle ? &s.in[ii] : nullptr;
     if (interp) {
-      VoxelBeat idle;
-      const VoxelBeat* b = &idle;
-      if (cycle < s.beats.size()) {
-        b = &s.beats[cycle];
-      } else {
-        idle.wz = rng.range(0, 256);
-        idle.tag = rng.bits(kTagBits);
-        for (int q = 0; q < p; ++q) idle.voxel.push_back(rng.bits(kVoxelBits));
-      }
+      const sysc::VoxelBeat b =
+          cycle < s.beats.size() ? s.beats[cycle] : junk_voxel_beat(rng, p, kVoxelBits, kTagBits);
       I& v = *interp;
-      v.valid_i = b->valid;
-      v.beam_start_i = b->beam_start;
-      v.beam_end_i = b->beam_end;
-      v.slice_start_i = b->slice_start;
-      v.slice_end_i = b->slice_end;
-      v.wx_i = b->wx;
-      v.wy_i = b->wy;
-      v.wz_i = b->wz;
-      v.tag_i = b->tag;
-      for (int q = 0; q < p; ++q) put_bits(v.voxel_i, q * kVoxelBits, kVoxelBits, b->voxel[q]);
-      if (b->valid) ++r.voxel_valid;
+      drive_interp_stream(v, b, p, kVoxelBits, kTagBits);
+      if (b.valid) ++r.voxel_valid;
       cube4::rtl::settle(v);
       // The interpolation ring's outputs drive the gradient ring as they are.
       m.valid_i = v.valid_o;
@@ -427,7 +277,7 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
           continue;
         }
         if (!in) continue;
-        const Frame& f = *frames[in->frame];
+        const SampleFrame& f = *frames[in->frame];
         const int x = in->j * p + q;
         if (in->k < f.K && x < f.nx) {
           const uint32_t exp = f.samples[f.index(in->k, in->y, x)];
@@ -459,29 +309,21 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
 
     const Expect* e = ei < s.expects.size() && s.expects[ei].cycle == cycle ? &s.expects[ei] : nullptr;
     for (int q = 0; q < p; ++q) {
-      const bool valid = get_bits(m.valid_o, q, 1);
-      if (!e) {
-        if (valid) fail(cycle, q, nullptr, "valid_o high with no gradient due", "");
-        continue;
-      }
-      if (!valid) {
-        fail(cycle, q, e, "valid_o low, a gradient was due", "");
-        continue;
-      }
-      const Frame& f = *frames[e->frame];
+      if (!output_due(get_bits(m.valid_o, q, 1), e, cycle, q, "gradient", fail)) continue;
+      const SampleFrame& f = *frames[e->frame];
       const int x = e->j * p + q;
       const bool real = x < f.nx;  // else a padding column: sample 0, gradient not defined
       const size_t i = real ? f.index(e->k, e->y, x) : 0;
       const uint32_t exp_sample = real ? f.samples[i] : 0;
       const g::Gradient exp_g = real ? f.gradients[i] : g::Gradient{};
-      const uint32_t exp_tag = user_tag(e->frame, e->k);
+      const uint64_t exp_tag = s.plans[static_cast<size_t>(e->frame)].user_tag(e->k);
       const uint32_t sample = static_cast<uint32_t>(get_bits(m.sample_o, q * kVoxelBits, kVoxelBits));
       const g::Gradient got_g{
           static_cast<int32_t>(cube4::rtl::sign_extend(get_bits(m.gx_o, q * kGradientBits, kGradientBits), kGradientBits)),
           static_cast<int32_t>(cube4::rtl::sign_extend(get_bits(m.gy_o, q * kGradientBits, kGradientBits), kGradientBits)),
           static_cast<int32_t>(cube4::rtl::sign_extend(get_bits(m.gz_o, q * kGradientBits, kGradientBits), kGradientBits))};
       const int gx = static_cast<int>(get_bits(m.x_o, q * D, D)), gy = static_cast<int>(get_bits(m.y_o, q * D, D));
-      const uint32_t tag = static_cast<uint32_t>(get_bits(m.tag_o, q * kUserTagBits, kUserTagBits));
+      const uint64_t tag = get_bits(m.tag_o, q * kUserTagBits, kUserTagBits);
       const bool bs = get_bits(m.beam_start_o, q, 1), be = get_bits(m.beam_end_o, q, 1);
       const bool ss = get_bits(m.slice_start_o, q, 1), se = get_bits(m.slice_end_o, q, 1);
       const bool same = sample == exp_sample && (!real || got_g == exp_g) && gx == x && gy == e->y &&
@@ -514,11 +356,11 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
 // Streams the frames back to back through ring G (chain: behind ring I) and
 // checks everything.
 template <class G, class I>
-void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, const StreamOptions& opt,
+void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& frames, const StreamOptions& opt,
                 uint64_t salt, uint64_t* gradients_checked = nullptr) {
   std::string what;
   ASSERT_TRUE(frames_fit(rp, frames, what));
-  for (const Frame* f : frames) ASSERT_LE(f->S, (1 << kSupersamplingBits) - 1) << f->name;
+  for (const SampleFrame* f : frames) ASSERT_LE(f->S, (1 << kSupersamplingBits) - 1) << f->name;
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.chain ? ", chain" : ", direct") +
                (opt.stall > 0 ? ", stalls" : ", no stalls") + (opt.junk ? ", junk" : "") + ": " + what);
   Random rng(salt);
@@ -535,7 +377,7 @@ void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, c
   // Every sample of every frame has its gradient, once per pipeline column;
   // the columns x < nx equal golden.
   uint64_t expected = 0, golden = 0;
-  for (const Frame* f : frames) {
+  for (const SampleFrame* f : frames) {
     expected += static_cast<uint64_t>(f->K) * f->ny * ((f->nx + rp.p - 1) / rp.p) * rp.p;
     golden += f->samples.size();
   }
@@ -553,7 +395,7 @@ void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, c
   }
   EXPECT_EQ(r.last_output, s.last_sample + s.last_B + 1 + kGradientStages);
   uint64_t zero_steps = 0;
-  for (const Frame* f : frames) zero_steps += static_cast<uint64_t>((f->nx + rp.p - 1) / rp.p) * (f->K + 1);
+  for (const SampleFrame* f : frames) zero_steps += static_cast<uint64_t>((f->nx + rp.p - 1) / rp.p) * (f->K + 1);
   EXPECT_EQ(s.zero_steps, zero_steps);
   if (gradients_checked) *gradients_checked += golden;
 }
@@ -570,7 +412,7 @@ void ring_matrix(const RingParams& rp) {
   std::array<std::array<int, 2>, 4> bases{};
   for (size_t v = 0; v < kViews.size(); ++v)
     for (int S : {1, 2, 3}) {
-      const Frame& f = frame(kViews[v].name, kSizes[(v + S) % kSizes.size()], kViews[v].dir, kViews[v].up, S,
+      const SampleFrame& f = frame(kViews[v].name, kSizes[(v + S) % kSizes.size()], kViews[v].dir, kViews[v].up, S,
                              static_cast<int>(3 + v));
       for (int k = 0; k < f.K; ++k) {
         const g::SliceControl c = g::slice_control(f.regs, k);
@@ -617,11 +459,11 @@ TEST(RtlGradientRing, P5MatchesGoldenGradients) {
 // direct, with and without stalls, every p.
 TEST(RtlGradientRing, BackToBackFrames) {
   Timer t("back-to-back frames");
-  const Frame& a = frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 21);
-  const Frame& b = frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 22);
-  const Frame& c = frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 1, 23);
-  const Frame& d = frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24);
-  const std::vector<const Frame*> frames = {&a, &b, &c, &d};
+  const SampleFrame& a = frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 21);
+  const SampleFrame& b = frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 22);
+  const SampleFrame& c = frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 1, 23);
+  const SampleFrame& d = frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24);
+  const std::vector<const SampleFrame*> frames = {&a, &b, &c, &d};
   for (int mode = 0; mode < 4; ++mode) {
     StreamOptions opt;
     opt.chain = mode < 2;
@@ -639,11 +481,11 @@ TEST(RtlGradientRing, BackToBackFrames) {
 // tiny volumes (one beam, one partial beam, one slice).
 TEST(RtlGradientRing, FullStorageAndTinyVolumes) {
   Timer t("full storage, tiny volumes");
-  const Frame& f2 = frame("+z tilted", {16, 16, 3}, {0.2, 0.3, 1}, {0, 1, 0}, 2, 31);
+  const SampleFrame& f2 = frame("+z tilted", {16, 16, 3}, {0.2, 0.3, 1}, {0, 1, 0}, 2, 31);
   ASSERT_EQ((f2.nx + 1) / 2 * f2.ny, kRingP2.slice_depth());
-  const Frame& f5 = frame("-z tilted", {15, 12, 3}, {0.3, -0.2, -1}, {0, 1, 0}, 3, 32);
+  const SampleFrame& f5 = frame("-z tilted", {15, 12, 3}, {0.3, -0.2, -1}, {0, 1, 0}, 3, 32);
   ASSERT_EQ((f5.nx + 4) / 5 * f5.ny, kRingP5.slice_depth());
-  const Frame& f1 = frame("+z tilted", {24, 24, 2}, {0.45, 0.2, 1}, {0, 1, 0}, 2, 33);
+  const SampleFrame& f1 = frame("+z tilted", {24, 24, 2}, {0.45, 0.2, 1}, {0, 1, 0}, 2, 33);
   ASSERT_EQ(f1.nx * f1.ny, kRingP1.slice_depth());
   for (int mode = 0; mode < 3; ++mode) {
     StreamOptions opt;
@@ -657,7 +499,7 @@ TEST(RtlGradientRing, FullStorageAndTinyVolumes) {
   const std::vector<std::array<int, 3>> tiny = {{1, 1, 1}, {1, 3, 2}, {4, 1, 3}, {2, 2, 1}, {5, 1, 1}};
   for (size_t i = 0; i < tiny.size(); ++i)
     for (int S : {1, 2}) {
-      const Frame& f = frame("tiny +z tilted", tiny[i], {0.3, -0.4, 1}, {0, 1, 0}, S, static_cast<int>(40 + i));
+      const SampleFrame& f = frame("tiny +z tilted", tiny[i], {0.3, -0.4, 1}, {0, 1, 0}, S, static_cast<int>(40 + i));
       for (bool chain : {true, false}) {
         StreamOptions opt;
         opt.chain = chain;
@@ -680,7 +522,7 @@ TEST(RtlGradientRing, RandomScenes) {
   uint64_t gradients = 0;
   for (long i = 0; i < n; ++i) {
     const RandomScene sc = random_scene(rng);
-    const Frame& f = frame("random " + std::to_string(i), sc.size, sc.dir, sc.up, sc.S, static_cast<int>(100 + i));
+    const SampleFrame& f = frame("random " + std::to_string(i), sc.size, sc.dir, sc.up, sc.S, static_cast<int>(100 + i));
     StreamOptions opt;
     opt.chain = rng.chance(0.5);
     opt.stall = rng.chance(0.5) ? 0 : static_cast<double>(rng.range(1, 60)) / 100.0;
@@ -700,7 +542,7 @@ TEST(RtlGradientRing, RandomScenes) {
 TEST(RtlGradientRing, LargerVolumeP4) {
   Timer t("larger volume, p=4");
   for (int S : {1, 4}) {
-    const Frame& f = frame("oblique", {37, 30, 14}, {0.55, 0.4, -1}, {0, 1, 0}, S, 41);
+    const SampleFrame& f = frame("oblique", {37, 30, 14}, {0.55, 0.4, -1}, {0, 1, 0}, S, 41);
     StreamOptions opt;
     opt.stall = 0.1;
     check_ring<Vcube4_gradient_ring, Vcube4_interp_ring_g4>(kRingP4, {&f}, opt, 90 + S);

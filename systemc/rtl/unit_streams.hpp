@@ -1,0 +1,115 @@
+// The input streams of the RTL rings, bound to their ports once: the
+// system's RTL wrappers (rtl_interp.hpp, rtl_composite.hpp) and the ring
+// testbenches (tb/rtl/test_*_ring.cpp) drive the verilated rings through
+// these, so a port the RTL adds or widens is bound in one place, and what
+// the compositing ring is told about a slice is derived from the frame plan
+// in one place. Header-only and without SystemC (the beats and the plan are
+// plain structs), on any verilated cube4_interp_ring / cube4_composite_ring.
+#pragma once
+#include <cstdint>
+
+#include "golden/precision.hpp"
+#include "systemc/core/beats.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/rtl/vl_bits.hpp"
+
+namespace cube4::rtl {
+
+// The interpolation ring's inputs in one cycle (docs/rtl-interp.md). While
+// b.valid is low the other inputs may hold anything: the ring ignores them.
+template <class M>
+void drive_interp_stream(M& m, const sysc::VoxelBeat& b, int pipes, int voxel_bits, int tag_bits) {
+  m.valid_i = b.valid;
+  m.beam_start_i = b.f.beam_start;
+  m.beam_end_i = b.f.beam_end;
+  m.slice_start_i = b.f.slice_start;
+  m.slice_end_i = b.f.slice_end;
+  for (int k = 0; k < pipes; ++k) put_bits(m.voxel_i, k * voxel_bits, voxel_bits, b.voxel[static_cast<size_t>(k)]);
+  m.wx_i = b.wx;
+  m.wy_i = b.wy;
+  m.wz_i = b.wz;
+  put_bits(m.tag_i, 0, tag_bits, b.tag);
+}
+
+// What the compositing ring needs beside a partial beam's shaded samples
+// (docs/rtl-composite.md): the beam flags, the slice's position in the
+// frame, its DDA offsets and steps (and the next slice's), the beam's
+// position and the weights, and the frame's width and last offsets.
+struct CompositeControl {
+  bool valid = false;
+  sysc::BeamFlags f;
+  bool first_slice = false, last_slice = false, dx = false, dy = false, next_dx = false, next_dy = false;
+  uint32_t ix = 0, iy = 0, x = 0, y = 0, z = 0, wx = 0, wy = 0, wz = 0;
+  uint32_t nx = 0, last_ix = 0, last_iy = 0;
+};
+
+// The control of sample slice k's partial beam at (x = j*p, y): the weight
+// generator's slice_control() of k and of k + 1 (plan.slices), which the
+// system looks up by the slice number the stream carries.
+inline CompositeControl composite_control(const sysc::FramePlan& plan, int k, const sysc::BeamFlags& f, int x,
+                                          int y) {
+  const golden::SliceControl& c = plan.slices[static_cast<size_t>(k)];
+  const golden::SliceControl& next = plan.slices[static_cast<size_t>(k) + 1];
+  const golden::SliceControl& last = plan.slices[static_cast<size_t>(plan.K) - 1];
+  CompositeControl cc;
+  cc.valid = true;
+  cc.f = f;
+  cc.first_slice = k == 0;
+  cc.last_slice = k + 1 == plan.K;
+  cc.dx = c.dx != 0;
+  cc.dy = c.dy != 0;
+  cc.next_dx = next.dx != 0;
+  cc.next_dy = next.dy != 0;
+  cc.ix = static_cast<uint32_t>(c.ix);
+  cc.iy = static_cast<uint32_t>(c.iy);
+  cc.x = static_cast<uint32_t>(x);
+  cc.y = static_cast<uint32_t>(y);
+  cc.z = static_cast<uint32_t>(c.z_voxel);
+  cc.wx = c.wx;
+  cc.wy = c.wy;
+  cc.wz = c.wz;
+  cc.nx = static_cast<uint32_t>(plan.nx);
+  cc.last_ix = static_cast<uint32_t>(last.ix);
+  cc.last_iy = static_cast<uint32_t>(last.iy);
+  return cc;
+}
+
+// The compositing ring's stream inputs in one cycle: the control and each
+// pipeline's shaded sample (colour and α at alpha_bits, value at voxel_bits).
+template <class M>
+void drive_composite_stream(M& m, const CompositeControl& c, const sysc::ShadedBeat& s, int pipes,
+                            const golden::Precision& pr) {
+  const int a = pr.alpha_bits, v = pr.voxel_bits;
+  m.valid_i = c.valid;
+  m.beam_start_i = c.f.beam_start;
+  m.beam_end_i = c.f.beam_end;
+  m.slice_start_i = c.f.slice_start;
+  m.slice_end_i = c.f.slice_end;
+  m.first_slice_i = c.first_slice;
+  m.last_slice_i = c.last_slice;
+  m.dx_i = c.dx;
+  m.dy_i = c.dy;
+  m.next_dx_i = c.next_dx;
+  m.next_dy_i = c.next_dy;
+  m.ix_i = c.ix;
+  m.iy_i = c.iy;
+  m.x_i = c.x;
+  m.y_i = c.y;
+  m.z_i = c.z;
+  m.wx_i = c.wx;
+  m.wy_i = c.wy;
+  m.wz_i = c.wz;
+  m.nx_i = c.nx;
+  m.last_ix_i = c.last_ix;
+  m.last_iy_i = c.last_iy;
+  for (int k = 0; k < pipes; ++k) {
+    const auto i = static_cast<size_t>(k);
+    put_bits(m.red_i, k * a, a, s.red[i]);
+    put_bits(m.green_i, k * a, a, s.green[i]);
+    put_bits(m.blue_i, k * a, a, s.blue[i]);
+    put_bits(m.alpha_i, k * a, a, s.alpha[i]);
+    put_bits(m.value_i, k * v, v, s.value[i]);
+  }
+}
+
+}  // namespace cube4::rtl
