@@ -25,6 +25,7 @@
 
 #ifdef CUBE4_HAVE_RTL
 #include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/vl_context.hpp"
 #endif
 
 namespace cube4::sysc {
@@ -279,11 +280,11 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
 #ifdef CUBE4_HAVE_RTL
-    VerilatedContext ctx;
-    if (!cfg.trace.file.empty()) ctx.traceEverOn(true);
-    ctx.randReset(2);
-    ctx.randSeed(static_cast<int>(cfg.seed & 0x7FFFFFFF));
-    VerilatedContext* rtl_ctx = &ctx;
+    rtl::ScopedVerilatedContext ctx;
+    if (!cfg.trace.file.empty()) ctx->traceEverOn(true);
+    ctx->randReset(2);
+    ctx->randSeed(static_cast<int>(cfg.seed & 0x7FFFFFFF));
+    VerilatedContext* rtl_ctx = ctx.get();
 #else
     VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit
 #endif

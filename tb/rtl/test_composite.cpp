@@ -33,6 +33,7 @@
 #include "golden/pipeline.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "systemc/rtl/vl_context.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -746,10 +747,10 @@ namespace {
 // initial states, and one seed is one.
 TEST(RtlComposite, RandomResetFollowsTheContextsSeed) {
   auto initial_state = [](int seed) {
-    VerilatedContext ctx;
-    ctx.randReset(2);
-    ctx.randSeed(seed);
-    Vcube4_composite m(&ctx, "seeded");
+    cube4::rtl::ScopedVerilatedContext ctx;
+    ctx->randReset(2);
+    ctx->randSeed(seed);
+    Vcube4_composite m(ctx.get(), "seeded");
     m.eval();
     // Output registers of stage 7 are not reset (only the valid chain is).
     return std::array<uint64_t, 4>{uint64_t{m.red_o}, uint64_t{m.green_o}, uint64_t{m.blue_o}, uint64_t{m.alpha_o}};
