@@ -56,13 +56,22 @@ struct Hosted {
   std::unique_ptr<HostBus> bus;
 };
 
-Hosted& hosted(const SystemConfig& cfg, const golden::Registers& r, const golden::Volume& vol) {
+Hosted& hosted_once() {
   static Hosted h;
+  return h;
+}
+
+Hosted& hosted(const SystemConfig& cfg, const golden::Registers& r, const golden::Volume& vol) {
+  Hosted& h = hosted_once();
   HardwareParams hw;
   hw.precision = r.p;
   hw.pipelines = cfg.p;
   hw.max_dim = std::max({256, vol.dim[0], vol.dim[1], vol.dim[2]});
   if (!h.host) {
+    if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
+      throw std::invalid_argument(
+          "host interface: this process has simulated frames without it already, and SystemC adds no module once "
+          "it runs; render through the host interface first, or in a process of its own");
     h.hw = hw;
     h.machine = std::make_unique<Machine>(cfg, r.p.voxel_bits);
     h.host = std::make_unique<HostInterface>("host", HostConfig{hw, sc_core::sc_time(30, sc_core::SC_NS)}, *h.machine);
@@ -78,6 +87,11 @@ Hosted& hosted(const SystemConfig& cfg, const golden::Registers& r, const golden
 }
 
 }  // namespace
+
+bool host_interface_available(int p) {
+  const Hosted& h = hosted_once();
+  return h.host ? h.hw.pipelines == p : sc_core::sc_get_status() == sc_core::SC_ELABORATION;
+}
 
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds) {

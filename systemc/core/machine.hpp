@@ -51,5 +51,9 @@ class Machine final : public HostBackend {
 // once), for the first call's p and precision.
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds = nullptr);
+// Whether render_through_host() can run a frame for p pipelines in this
+// process: its modules are built already, for p, or can still be built
+// (no frame has been simulated yet: SystemC adds no module once it runs).
+bool host_interface_available(int p);
 
 }  // namespace cube4::sysc
