@@ -258,4 +258,19 @@ HostProgram program_host(const Scene& s, const Volume& vol) {
   return h;
 }
 
+std::vector<Scene> xy_subframes(const Scene& s) {
+  const int n = s.xy_supersampling;
+  std::vector<Scene> frames;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      Scene f = s;
+      for (int axis = 0; axis < 2; ++axis) {
+        const double o = s.view.ray_offset[static_cast<size_t>(axis)] + static_cast<double>(axis == 0 ? i : j) / n;
+        f.view.ray_offset[static_cast<size_t>(axis)] = o >= 1 ? o - 1 : o;
+      }
+      frames.push_back(std::move(f));
+    }
+  return frames;
+}
+
 }  // namespace cube4::golden

@@ -16,6 +16,15 @@ struct HostProgram {
 
 HostProgram program_host(const Scene& s, const Volume& vol);
 
+// The frames x/y supersampling renders (VolumePro §4.1): for n =
+// s.xy_supersampling, n² copies of s whose rays start at view.ray_offset +
+// (i, j) / n base-plane pixels (each wrapped into [0, 1): the same grid of
+// rays, the base plane's shift accounts for the wrap), i and j in 0..n-1,
+// row by row; for n = 1 s itself. Their warped images, blended by
+// blend_frames(), are the supersampled image: the hardware renders each one
+// as an ordinary frame.
+std::vector<Scene> xy_subframes(const Scene& s);
+
 // Pieces of program_host, exposed for tests and for the RTL testbenches.
 std::vector<ClassEntry> build_classification(const Scene& s, double step_ratio);
 std::vector<uint16_t> build_gm_lut(const Scene& s);

@@ -85,5 +85,8 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
 
 // Bilinear warp of a base plane onto the final image (transparent outside).
 ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactorisation& f);
+// The mean of equally sized images, channel by channel: the host's blend of
+// the frames of x/y supersampling (xy_subframes(), golden/host_driver.hpp).
+ImageF blend_frames(const std::vector<ImageF>& frames);
 
 }  // namespace cube4::golden

@@ -47,6 +47,13 @@ struct View {
   std::optional<Vec3> direction;          // or: viewing direction in object space ...
   Vec3 up{0, 1, 0};                       // ... and the up vector
   std::array<double, 2> ray_offset{0, 0}; // sub-pixel start of rays on the base plane, [0,1)
+  // The camera of the parallel projection (docs/scene.md): image scale
+  // (1: the volume's diagonal fits the smaller image side) and the point of
+  // the volume, in voxel coordinates, at the image centre (default: the
+  // volume's centre). The hardware never sees them: only the warp of the
+  // base plane and the reference ray caster do.
+  double zoom = 1;
+  std::optional<Vec3> look_at;
 };
 
 struct ColorPoint { double x; Vec3 rgb; };     // x: normalised sample value [0,1]
@@ -92,6 +99,7 @@ struct Scene {
   Blend blend = Blend::Composite;
   GradientModulation gm;
   int supersampling = 1;             // z only, 1..8
+  int xy_supersampling = 1;          // rays per base-plane pixel and axis, 1..4: n² frames blended on the host
   Cropping cropping;
   CutPlane cut;
   int pipelines = 4;

@@ -458,6 +458,8 @@ void read_view(const Node& n, View& v) {
   const auto direction = r.get("direction");
   const auto up = r.get("up");
   const auto offset = r.get("ray_offset");
+  const auto zoom = r.get("zoom");
+  const auto look_at = r.get("look_at");
   r.reject_unknown();
   if (rotate && direction) n.fail("gives both \"rotate\" and \"direction\"; give one");
   if (up && !direction) up->fail("needs \"view.direction\" (it does not apply to \"rotate\")");
@@ -471,6 +473,10 @@ void read_view(const Node& n, View& v) {
       if (v.ray_offset[i] < 0 || v.ray_offset[i] >= 1) e[i].fail("is out of range [0, 1)");
     }
   }
+  // Beyond 1/64 the volume is a few pixels; beyond 1024 a pixel is a small
+  // fraction of a voxel: either way the image says nothing the range does not.
+  if (zoom) v.zoom = zoom->number_in(1.0 / 64, 1024);
+  if (look_at) v.look_at = look_at->vec3();
 }
 
 void read_output(const Node& n, Scene& s) {
@@ -693,6 +699,7 @@ Scene parse_scene(const std::string& json_text, const std::string& file_name) {
   if (auto n = r.get("blend")) s.blend = read_blend(*n);
   if (auto n = r.get("gradient_modulation")) read_gradient_modulation(*n, s.gm);
   if (auto n = r.get("supersampling")) s.supersampling = n->int_in(1, 8);
+  if (auto n = r.get("xy_supersampling")) s.xy_supersampling = n->int_in(1, 4);
   if (auto n = r.get("cropping")) read_cropping(*n, s.cropping);
   if (auto n = r.get("cut_plane")) read_cut_plane(*n, s.cut);
   if (auto n = r.get("pipelines")) s.pipelines = n->int_in(1, 256);

@@ -96,7 +96,12 @@ ViewFactorisation factorise_view(const Scene& s, const Volume& vol) {
 
   double diag2 = 0;
   for (int i = 0; i < 3; ++i) diag2 += std::pow(vol.dim[i] * vol.spacing[i], 2);
-  f.pixel_size = std::sqrt(diag2) / std::min(s.width, s.height);
+  f.pixel_size = std::sqrt(diag2) / std::min(s.width, s.height) / s.view.zoom;
+  if (s.view.look_at) {
+    f.look_at = *s.view.look_at;
+  } else {
+    for (int i = 0; i < 3; ++i) f.look_at[i] = (vol.dim[i] - 1) / 2.0;
+  }
   return f;
 }
 
@@ -121,18 +126,8 @@ Vec3 ViewFactorisation::direction_to_object(const Vec3& p) const {
   return o;
 }
 
-namespace {
-// Object voxel size per axis in permuted order is not needed; the volume
-// centre in object voxel coordinates is.
-Vec3 centre_of(const ViewFactorisation& f) {
-  Vec3 c{};
-  for (int i = 0; i < 3; ++i) c[f.perm[i]] = (f.pdim[i] - 1) / 2.0;
-  return c;
-}
-}  // namespace
-
 std::array<double, 2> ViewFactorisation::image_of(const Vec3& ov) const {
-  const Vec3 c = centre_of(*this);
+  const Vec3& c = look_at;
   Vec3 phys{};
   for (int i = 0; i < 3; ++i) phys[i] = (ov[i] - c[i]) * spacing[i];
   const double wx = dot(object_to_world[0], phys), wy = dot(object_to_world[1], phys);
@@ -142,7 +137,7 @@ std::array<double, 2> ViewFactorisation::image_of(const Vec3& ov) const {
 Vec3 ViewFactorisation::object_of_image(double X, double Y) const {
   const double wx = (X - image_width / 2.0 + 0.5) * pixel_size;
   const double wy = -(Y - image_height / 2.0 + 0.5) * pixel_size;
-  const Vec3 c = centre_of(*this);
+  const Vec3& c = look_at;
   Vec3 o{};
   for (int i = 0; i < 3; ++i)
     o[i] = (object_to_world[0][i] * wx + object_to_world[1][i] * wy) / spacing[i] + c[i];

@@ -29,7 +29,8 @@ struct ViewFactorisation {
   std::array<int, 3> pdim{};        // volume size in permuted axes
   double shear_x = 0, shear_y = 0;  // ray movement per voxel slice, each in [0, 1]
   Vec3 eye_perm{};                  // unit vector towards the viewer, permuted voxel space
-  double pixel_size = 1;            // physical size of a final-image pixel
+  double pixel_size = 1;            // physical size of a final-image pixel (view.zoom applied)
+  Vec3 look_at{};                   // object voxel coordinates at the image centre (view.look_at)
   int image_width = 0, image_height = 0;
   std::array<double, 3> spacing{1, 1, 1};
 

@@ -1,6 +1,7 @@
 // The 2-D warp from base plane to final image (VolumePro's companion
 // graphics card): bilinear resampling, transparent outside the base plane.
 #include <cmath>
+#include <stdexcept>
 
 #include "golden/renderers.hpp"
 
@@ -30,6 +31,19 @@ ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactor
         px[c] = a + tv * (b - a);
       }
     }
+  return out;
+}
+
+ImageF blend_frames(const std::vector<ImageF>& frames) {
+  if (frames.empty()) throw std::invalid_argument("blend_frames: no frames");
+  ImageF out = frames.front();
+  for (size_t i = 1; i < frames.size(); ++i) {
+    if (frames[i].width != out.width || frames[i].height != out.height)
+      throw std::invalid_argument("blend_frames: frames of different sizes");
+    for (size_t k = 0; k < out.rgba.size(); ++k) out.rgba[k] += frames[i].rgba[k];
+  }
+  const float scale = 1.0f / static_cast<float>(frames.size());
+  for (float& v : out.rgba) v *= scale;
   return out;
 }
 

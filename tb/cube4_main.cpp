@@ -250,65 +250,91 @@ int run_render(const RenderArgs& a) {
   golden::RenderStats stats;
   golden::ImageF image;
   std::optional<uint64_t> hash;
-  // Each repetition renders the base plane (or reference image) and warps
-  // it: a frame as the hardware plus companion card would deliver it.
+  // x/y supersampling (VolumePro §4.1): n² frames whose rays start 1/n of a
+  // pixel apart, each warped, then blended on the host; for n = 1 the one
+  // frame of the scene. The reference ray caster casts a ray per output
+  // pixel already and renders once.
+  const std::vector<golden::Scene> sub_scenes =
+      a.model == "reference" ? std::vector<golden::Scene>{l.scene} : golden::xy_subframes(l.scene);
+  std::vector<golden::HostProgram> sub_hosts;
+  for (const golden::Scene& s : sub_scenes)
+    sub_hosts.push_back(sub_scenes.size() == 1 ? l.host : golden::program_host(s, l.volume));
+  auto sub_frame_name = [&](size_t i) {
+    if (sub_scenes.size() == 1) return std::string();
+    const auto& o = sub_scenes[i].view.ray_offset;
+    return "frame " + std::to_string(i + 1) + " of " + std::to_string(sub_scenes.size()) + " (ray offset " +
+           std::to_string(o[0]) + ", " + std::to_string(o[1]) + "): ";
+  };
+  // Each repetition renders the base plane(s) (or the reference image) and
+  // warps them: an image as the hardware plus companion card would deliver it.
   std::vector<double> frame_seconds;
   std::optional<golden::BlockRanges> ranges;
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
-    if (system) {
-      try {
-        sys = sysc::render_through_host(l.host.regs, l.volume, cfg, cb, &bus_seconds);
-      } catch (const std::invalid_argument& e) {
-        throw InputError(e.what());
-      } catch (const sysc::HostError& e) {  // registers the built hardware cannot take
-        throw InputError(e.what());
-      }
-      const golden::BasePlane& bp = sys->plane;
-      stats.samples = sys->samples;
-      image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
-      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      if (last) {
-        hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
-        if (!a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
-        if (cfg.check) {
+    std::vector<golden::ImageF> frames;
+    std::vector<uint16_t> planes;  // every frame's base plane, in order: the hash
+    uint64_t samples = 0;
+    auto keep_plane = [&](const golden::BasePlane& bp, size_t i) {
+      if (!last) return;
+      planes.insert(planes.end(), bp.rgba.begin(), bp.rgba.end());
+      if (i == 0 && !a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
+    };
+    for (size_t i = 0; i < sub_scenes.size(); ++i) {
+      const golden::HostProgram& host = sub_hosts[i];
+      if (system) {
+        try {
+          sys = sysc::render_through_host(host.regs, l.volume, cfg, cb, &bus_seconds);
+        } catch (const std::invalid_argument& e) {
+          throw InputError(e.what());
+        } catch (const sysc::HostError& e) {  // registers the built hardware cannot take
+          throw InputError(e.what());
+        }
+        const golden::BasePlane& bp = sys->plane;
+        samples += sys->samples;
+        frames.push_back(golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, host.view));
+        keep_plane(bp, i);
+        if (last && cfg.check && check_failure.empty()) {
           golden::FixedOptions opt;
           opt.threads = a.threads;
-          const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, l.host.regs, opt), bp);
+          const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, host.regs, opt), bp);
           if (!diff.empty() || sys->mismatch) {
-            check_failure = diff.empty() ? "base plane equal, but " : diff + "; ";
+            check_failure = sub_frame_name(i) + (diff.empty() ? "base plane equal, but " : diff + "; ");
             check_failure += sys->mismatch ? "first unit output that differs: " + sys->mismatch->describe()
                                            : "every unit stream matched: the compositing unit or pixel memory differs";
           }
         }
+      } else if (a.model == "fixed") {
+        golden::RenderStats frame_stats;
+        golden::FixedOptions opt;
+        opt.stats = &frame_stats;
+        opt.progress = cb;
+        opt.threads = a.threads;
+        // Built once: the volume is the same for every repetition and frame.
+        if (!ranges) ranges = golden::block_ranges(l.volume);
+        opt.ranges = &*ranges;
+        const golden::BasePlane bp = golden::render_fixed(l.volume, host.regs, opt);
+        samples += frame_stats.samples;
+        frames.push_back(golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, host.view));
+        keep_plane(bp, i);
+      } else if (a.model == "float") {
+        golden::RenderStats frame_stats;
+        const golden::BasePlaneF bp = golden::render_float(l.volume, sub_scenes[i], host.view, &frame_stats, cb);
+        samples += frame_stats.samples;
+        frames.push_back(golden::warp(bp.image, bp.shift_x, bp.shift_y, host.view));
+        if (last && i == 0 && !a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp.image, a.baseplane);
+      } else {
+        golden::ReferenceOptions opt;
+        opt.step = a.reference_step;
+        golden::RenderStats frame_stats;
+        frames.push_back(golden::render_reference(l.volume, l.scene, l.host.view, opt, &frame_stats, cb));
+        samples += frame_stats.samples;
       }
-    } else if (a.model == "fixed") {
-      golden::FixedOptions opt;
-      opt.stats = &stats;
-      opt.progress = cb;
-      opt.threads = a.threads;
-      // Built once: the volume is the same for every repetition.
-      if (!ranges) ranges = golden::block_ranges(l.volume);
-      opt.ranges = &*ranges;
-      const golden::BasePlane bp = golden::render_fixed(l.volume, l.host.regs, opt);
-      image = golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view);
-      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      if (last) {
-        hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
-        if (!a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
-      }
-    } else if (a.model == "float") {
-      const golden::BasePlaneF bp = golden::render_float(l.volume, l.scene, l.host.view, &stats, cb);
-      image = golden::warp(bp.image, bp.shift_x, bp.shift_y, l.host.view);
-      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-      if (last && !a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp.image, a.baseplane);
-    } else {
-      golden::ReferenceOptions opt;
-      opt.step = a.reference_step;
-      image = golden::render_reference(l.volume, l.scene, l.host.view, opt, &stats, cb);
-      frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
+    image = frames.size() == 1 ? std::move(frames.front()) : golden::blend_frames(frames);
+    stats.samples = samples;
+    frame_seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (last && !planes.empty()) hash = tb::fnv1a64(planes.data(), planes.size() * sizeof(uint16_t));
   }
   std::vector<double> sorted = frame_seconds;
   std::sort(sorted.begin(), sorted.end());
@@ -323,6 +349,8 @@ int run_render(const RenderArgs& a) {
         {"pipelines", l.scene.pipelines},
         {"clock_mhz", l.scene.clock_mhz},
         {"supersampling", l.scene.supersampling},
+        {"xy_supersampling", l.scene.xy_supersampling},
+        {"frames_per_image", sub_scenes.size()},
         {"samples", stats.samples},
         {"wall_seconds", seconds},
         {"frames", a.repeat},
@@ -336,6 +364,10 @@ int run_render(const RenderArgs& a) {
     if (sys) {
       r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
       r["system"]["host_bus_ms"] = bus_seconds * 1e3;
+      // The cycle figures are one frame's; an image of x/y supersampling is
+      // frames_per_image of them.
+      r["system"]["image_fps_steady_state"] =
+          r["system"]["fps_steady_state"].get<double>() / static_cast<double>(sub_scenes.size());
     }
     if (!a.baseplane.empty()) r["baseplane"] = a.baseplane;
     if (hash) r["baseplane_hash_fnv1a64"] = tb::hex64(*hash);
@@ -384,7 +416,7 @@ int main(int argc, char** argv) {
                      "mixed:UNIT,... (units interp, gradient, shade, composite, addr at RTL, the rest TLM)")
       ;
   render->add_option("-o,--output", ra.output, "final image, .png or .exr")->capture_default_str();
-  render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact)");
+  render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact; with xy_supersampling, the first frame's)");
   render->add_option("--report", ra.report, "write a JSON report");
   render->add_option("--reference-step", ra.reference_step, "reference model: ray step in voxels")->capture_default_str();
   render->add_option("--repeat", ra.repeat, "render N times (benchmarking): the report gives min and median")

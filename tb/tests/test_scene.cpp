@@ -57,6 +57,8 @@ void expect_same(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.view.direction, b.view.direction);
   EXPECT_EQ(a.view.up, b.view.up);
   EXPECT_EQ(a.view.ray_offset, b.view.ray_offset);
+  EXPECT_EQ(a.view.zoom, b.view.zoom);
+  EXPECT_EQ(a.view.look_at, b.view.look_at);
   EXPECT_EQ(a.width, b.width);
   EXPECT_EQ(a.height, b.height);
   ASSERT_EQ(a.color.size(), b.color.size());
@@ -276,6 +278,15 @@ TEST(SceneView, RotateAndRayOffset) {
   EXPECT_EQ(s.view.ray_offset, (std::array<double, 2>{0, 0.999}));
 }
 
+TEST(SceneView, ZoomAndLookAt) {
+  const Scene d = parse_with(R"("view": {"rotate": [0, 0, 0]})");
+  EXPECT_EQ(d.view.zoom, 1.0);
+  EXPECT_FALSE(d.view.look_at.has_value());
+  const Scene s = parse_with(R"("view": {"direction": [0, 0, -1], "zoom": 2.5, "look_at": [3, -4.5, 100]})");
+  EXPECT_EQ(s.view.zoom, 2.5);
+  EXPECT_EQ(s.view.look_at, (Vec3{3, -4.5, 100}));
+}
+
 TEST(SceneView, DirectionAndUp) {
   const Scene s = parse_with(R"("view": {"direction": [0, 0, -2], "up": [1, 0, 0]})");
   EXPECT_EQ(s.view.direction, (Vec3{0, 0, -2}));
@@ -425,7 +436,7 @@ TEST(SceneErrors, UnknownKeys) {
   expect_error(with(R"("material": {"kss": 0.3})"), {"unknown key \"material.kss\" = 0.3"});
   expect_error(with(R"("lights": [{"direction": [0, 0, 1]}, {"direction": [0, 0, 1], "color": 1}])"),
                {"unknown key \"lights[1].color\""});
-  expect_error(with(R"("view": {"rotate": [0, 0, 0], "zoom": 2})"), {"\"view.zoom\""});
+  expect_error(with(R"("view": {"rotate": [0, 0, 0], "zooom": 2})"), {"\"view.zooom\""});
   expect_error(with(R"("cropping": {"w": [0, 1]})"), {"\"cropping.w\""});
   expect_error(with(R"("precision": {"voxelbits": 8})"), {"\"precision.voxelbits\""});
   // Keys of another volume kind are not accepted either.
@@ -493,6 +504,13 @@ const RangeCase kRangeCases[] = {
     {R"({"volume": {"synthetic": "constant", "map": [5, 5]}})", "volume.map[1]", "5"},
     {R"("view": {"ray_offset": [1, 0]})", "view.ray_offset[0]", "1"},
     {R"("view": {"ray_offset": [0, -0.1]})", "view.ray_offset[1]", "-0.1"},
+    {R"("xy_supersampling": 0)", "xy_supersampling", "0"},
+    {R"("xy_supersampling": 5)", "xy_supersampling", "5"},
+    {R"("view": {"zoom": 0})", "view.zoom", "0"},
+    {R"("view": {"zoom": 2000})", "view.zoom", "2000"},
+    {R"("view": {"zoom": "big"})", "view.zoom", "\"big\""},
+    {R"("view": {"look_at": [1, 2]})", "view.look_at", "[1,2]"},
+    {R"("view": {"look_at": [1, "a", 3]})", "view.look_at[1]", "\"a\""},
     {R"("view": {"direction": [0, 0, 0]})", "view.direction", "[0,0,0]"},
     {R"("view": {"direction": [0, 0, 1], "up": [0, 0, -3]})", "view.up", "[0,0,-3]"},
     {R"("output": {"width": 0})", "output.width", "0"},

@@ -98,3 +98,76 @@ TEST(View, VolumeCentreProjectsToImageCentreAndWarpIsConsistent) {
   EXPECT_NEAR(back[0], 5, 1e-9);
   EXPECT_NEAR(back[1], 7, 1e-9);
 }
+
+// The camera of the parallel projection: zoom scales the image about its
+// centre, look_at moves a point of the volume there; object_of_image stays
+// the inverse of image_of on the image plane.
+TEST(View, ZoomScalesAboutTheImageCentreAndLookAtCentresItsPoint) {
+  golden::Scene s = golden::default_scene();
+  s.view.direction = Vec3{0.3, -0.2, 0.9};
+  golden::Volume v;
+  v.dim = {20, 16, 12};
+  const auto plain = golden::factorise_view(s, v);
+  s.view.zoom = 2.5;
+  const auto zoomed = golden::factorise_view(s, v);
+  const double cx = plain.image_width / 2.0 - 0.5, cy = plain.image_height / 2.0 - 0.5;
+  for (const Vec3& p : {Vec3{0, 0, 0}, Vec3{19, 15, 11}, Vec3{3, 12, 7}}) {
+    const auto a = plain.image_of(p), b = zoomed.image_of(p);
+    EXPECT_NEAR(b[0] - cx, 2.5 * (a[0] - cx), 1e-9);
+    EXPECT_NEAR(b[1] - cy, 2.5 * (a[1] - cy), 1e-9);
+  }
+  s.view.look_at = Vec3{0, 15, 11};
+  const auto aimed = golden::factorise_view(s, v);
+  const auto c = aimed.image_of({0, 15, 11});
+  EXPECT_NEAR(c[0], cx, 1e-9);
+  EXPECT_NEAR(c[1], cy, 1e-9);
+  for (const auto& f : {plain, zoomed, aimed}) {
+    const auto back = f.image_of(f.object_of_image(40.25, 97.5));
+    EXPECT_NEAR(back[0], 40.25, 1e-9);
+    EXPECT_NEAR(back[1], 97.5, 1e-9);
+  }
+}
+
+// The camera is the host's business: the registers, and so the base plane,
+// are those of the default camera; only the warp differs.
+TEST(View, TheCameraLeavesTheBasePlaneAlone) {
+  const std::string volume = R"({"volume": {"synthetic": "sphere", "size": [12, 10, 9]}, "view": {"direction": [0.3, -0.2, 0.9])";
+  const test::Setup a = test::setup(volume + "}}");
+  const test::Setup b = test::setup(volume + R"(, "zoom": 3, "look_at": [2, 8, 1]}})");
+  const golden::BasePlane pa = golden::render_fixed(a.volume, a.host.regs), pb = golden::render_fixed(b.volume, b.host.regs);
+  EXPECT_EQ(pa.rgba, pb.rgba);
+  EXPECT_EQ(pa.width, pb.width);
+  EXPECT_NE(test::final_fixed(a).rgba, test::final_fixed(b).rgba);
+}
+
+// x/y supersampling's frames: n² scenes whose rays start (i, j) / n of a
+// pixel after the scene's offset, wrapped into [0, 1), row by row; n = 1 is
+// the scene itself. Their blend is the plain mean.
+TEST(View, XySubframesOffsetTheRaysByFractionsOfAPixel) {
+  golden::Scene s = golden::default_scene();
+  s.view.ray_offset = {0.5, 0.25};
+  const auto one = golden::xy_subframes(s);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].view.ray_offset, s.view.ray_offset);
+  s.xy_supersampling = 4;
+  const auto f = golden::xy_subframes(s);
+  ASSERT_EQ(f.size(), 16u);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const auto& o = f[static_cast<size_t>(j * 4 + i)].view.ray_offset;
+      EXPECT_DOUBLE_EQ(o[0], std::fmod(0.5 + i / 4.0, 1.0)) << i << " " << j;
+      EXPECT_DOUBLE_EQ(o[1], std::fmod(0.25 + j / 4.0, 1.0)) << i << " " << j;
+      EXPECT_GE(o[0], 0.0);
+      EXPECT_LT(o[0], 1.0);
+    }
+  golden::ImageF a, b;
+  a.width = b.width = 2;
+  a.height = b.height = 1;
+  a.rgba = {0, 1, 0.5f, 1, 0.25f, 0, 0, 0};
+  b.rgba = {1, 0, 0.5f, 0, 0.75f, 1, 0, 1};
+  const golden::ImageF m = golden::blend_frames({a, b});
+  EXPECT_EQ(m.rgba, (std::vector<float>{0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0, 0.5f}));
+  b.width = 1;
+  b.rgba.resize(4);
+  EXPECT_THROW(golden::blend_frames({a, b}), std::invalid_argument);
+}
