@@ -29,7 +29,7 @@ Vec3 cross3(const Vec3& a, const Vec3& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
+double norm3(const Vec3& a) { return std::hypot(a[0], a[1], a[2]); }  // no overflow
 
 bool finite3(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
@@ -134,18 +134,36 @@ void make_round(double r, double length, double tip, int segments, Mesh& m) {
 
 // ---- files --------------------------------------------------------------------
 
-void collect(const aiScene& sc, const aiNode& node, const aiMatrix4x4& parent, Mesh& m,
-             const std::string& path, size_t& faces) {
-  const aiMatrix4x4 t = parent * node.mTransformation;
-  for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-    const aiMesh& mesh = *sc.mMeshes[node.mMeshes[i]];
-    const auto base = uint32_t(m.vertices.size());
+// The file's meshes (an OBJ group, a PLY or STL body each) placed by their
+// nodes' transforms (the identity in OBJ, PLY and STL) and merged into one,
+// with equal positions shared across meshes as JoinIdenticalVertices shares
+// them within one, so that a closed surface split into groups stays closed.
+struct Collector {
+  const aiScene& sc;
+  const std::string& path;
+  Mesh& m;
+  std::map<Vec3, uint32_t> index;
+  size_t faces = 0;
+
+  uint32_t vertex(const Vec3& p) {
+    const auto [it, added] = index.emplace(p, uint32_t(m.vertices.size()));
+    if (added) m.vertices.push_back(p);
+    return it->second;
+  }
+  void node(const aiNode& n, const aiMatrix4x4& parent);
+};
+
+void Collector::node(const aiNode& n, const aiMatrix4x4& parent) {
+  const aiMatrix4x4 t = parent * n.mTransformation;
+  for (unsigned i = 0; i < n.mNumMeshes; ++i) {
+    const aiMesh& mesh = *sc.mMeshes[n.mMeshes[i]];
+    std::vector<uint32_t> at;
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D& p = mesh.mVertices[v];
       const Vec3 raw{p.x, p.y, p.z};
       if (!finite3(raw)) throw InputError(path + ": a vertex is " + show_point(raw) + ", not a finite point");
       const aiVector3D q = t * p;
-      m.vertices.push_back({q.x, q.y, q.z});
+      at.push_back(vertex({q.x, q.y, q.z}));
     }
     faces += mesh.mNumFaces;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
@@ -156,12 +174,12 @@ void collect(const aiScene& sc, const aiNode& node, const aiMatrix4x4& parent, M
         if (face.mIndices[k] >= mesh.mNumVertices)
           throw InputError(path + ": a face names vertex " + std::to_string(face.mIndices[k]) + " of " +
                            std::to_string(mesh.mNumVertices));
-        tri[size_t(k)] = base + face.mIndices[k];
+        tri[size_t(k)] = at[face.mIndices[k]];
       }
       m.triangles.push_back(tri);
     }
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) collect(sc, *node.mChildren[c], t, m, path, faces);
+  for (unsigned c = 0; c < n.mNumChildren; ++c) node(*n.mChildren[c], t);
 }
 
 std::string resolve(const std::string& path, const std::string& scene_dir) {
@@ -195,24 +213,37 @@ Affine affine_of(const MeshTransform& t) {
   return f;
 }
 
+Vec3 transformed(const Affine& f, const Vec3& p) {
+  return {dot3(f.a[0], p) + f.t[0], dot3(f.a[1], p) + f.t[1], dot3(f.a[2], p) + f.t[2]};
+}
+
 double determinant(const std::array<Vec3, 3>& a) { return dot3(a[0], cross3(a[1], a[2])); }
 
 [[noreturn]] void fail_key(const std::string& scene_file, const std::string& key, const std::string& rest) {
   throw InputError((scene_file.empty() ? std::string("scene") : scene_file) + ": \"" + key + "\"" + rest);
 }
 
+void drop_degenerate(Mesh& m) {
+  std::vector<Tri> kept;
+  for (const Tri& t : m.triangles)
+    if (!degenerate(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]])) kept.push_back(t);
+  m.dropped_degenerate += m.triangles.size() - kept.size();
+  m.triangles = std::move(kept);
+}
+
 }  // namespace
 
 bool degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double e = std::max({norm3(sub(b, a)), norm3(sub(c, b)), norm3(sub(a, c))});
-  // |(b - a) × (c - a)| is twice the area, = longest edge × its height.
-  return !(norm3(cross3(sub(b, a), sub(c, a))) > 1e-12 * e * e);
+  // |(b - a) × (c - a)| is twice the area, = longest edge × its height; the
+  // edges are divided by e first so that nothing overflows. e = 0 gives NaN:
+  // degenerate.
+  const Vec3 u = sub(b, a), w = sub(c, a);
+  const Vec3 un{u[0] / e, u[1] / e, u[2] / e}, wn{w[0] / e, w[1] / e, w[2] / e};
+  return !(norm3(cross3(un, wn)) > 1e-12);
 }
 
-Vec3 apply(const MeshTransform& t, const Vec3& p) {
-  const Affine f = affine_of(t);
-  return {dot3(f.a[0], p) + f.t[0], dot3(f.a[1], p) + f.t[1], dot3(f.a[2], p) + f.t[2]};
-}
+Vec3 apply(const MeshTransform& t, const Vec3& p) { return transformed(affine_of(t), p); }
 
 Mesh make_shape(const MeshSpec& spec) {
   Mesh m;
@@ -241,25 +272,30 @@ Mesh read_mesh_file(const std::string& path) {
   // Triangulate: polygons become triangles (points and lines stay, and are
   // skipped). JoinIdenticalVertices: shared corners become one vertex. Neither
   // removes degenerate triangles (aiProcess_FindDegenerates is not asked
-  // for): load_mesh drops them itself, by the rule of degenerate().
-  const aiScene* sc = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure);
+  // for): they are dropped here, by the rule of degenerate().
+  // aiProcess_ValidateDataStructure is left out: it reports a file without
+  // vertices as "The mesh t contains no vertices", where "no triangles" is
+  // the fault; face indices are checked below instead.
+  const aiScene* sc = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
   if (!sc || !sc->mRootNode)
     throw InputError(path + ": assimp cannot read it: " + std::string(importer.GetErrorString()));
   Mesh m;
   m.source = path;
-  size_t faces = 0;
-  collect(*sc, *sc->mRootNode, aiMatrix4x4(), m, path, faces);
+  Collector c{*sc, path, m, {}, 0};
+  c.node(*sc->mRootNode, aiMatrix4x4());
   if (m.triangles.empty())
     throw InputError(path + ": no triangles (" + std::to_string(m.vertices.size()) + " vertices, " +
-                     std::to_string(faces) + " points and lines)");
+                     std::to_string(c.faces) + " points and lines)");
+  drop_degenerate(m);
+  if (m.triangles.empty())
+    throw InputError(path + ": only degenerate triangles (all " + std::to_string(m.dropped_degenerate) +
+                     " have zero area)");
   return m;
 }
 
 Mesh load_mesh(const MeshSpec& spec, const std::string& scene_file, const std::string& scene_dir) {
   Mesh m;
-  // Where a fault is reported: the file, or the shape.
-  const std::string what_key = spec.key + (spec.file.empty() ? ".shape" : ".file");
+  // What the messages call the mesh: the file or the shape as written.
   const std::string what_value =
       spec.file.empty() ? std::string("\"") + shape_name(spec.shape) + "\"" : nlohmann::json(spec.file).dump();
   if (spec.file.empty()) {
@@ -268,21 +304,12 @@ Mesh load_mesh(const MeshSpec& spec, const std::string& scene_file, const std::s
     try {
       m = read_mesh_file(resolve(spec.file, scene_dir));
     } catch (const InputError& e) {
-      fail_key(scene_file, what_key, " = " + what_value + " cannot be loaded: " + e.what());
+      fail_key(scene_file, spec.key + ".file", " = " + what_value + " cannot be loaded: " + e.what());
     }
   }
-  std::vector<Tri> kept;
-  for (const Tri& t : m.triangles)
-    if (!degenerate(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]])) kept.push_back(t);
-  if (kept.empty())
-    fail_key(scene_file, what_key,
-             " = " + what_value + " has only degenerate triangles (all " + std::to_string(m.triangles.size()) +
-                 " have zero area)");
-  const size_t dropped = m.triangles.size() - kept.size();
-
   const Affine f = affine_of(spec.transform);
   for (Vec3& p : m.vertices) {
-    const Vec3 q{dot3(f.a[0], p) + f.t[0], dot3(f.a[1], p) + f.t[1], dot3(f.a[2], p) + f.t[2]};
+    const Vec3 q = transformed(f, p);
     if (!finite3(q))
       fail_key(scene_file, spec.key + ".transform",
                " takes the vertex " + show_point(p) + " of " + what_value + " to " + show_point(q) +
@@ -291,14 +318,12 @@ Mesh load_mesh(const MeshSpec& spec, const std::string& scene_file, const std::s
   }
   // A mirroring transform would turn the triangles inside out.
   if (determinant(f.a) < 0)
-    for (Tri& t : kept) std::swap(t[1], t[2]);
-  m.triangles.clear();
-  for (const Tri& t : kept)
-    if (!degenerate(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]])) m.triangles.push_back(t);
+    for (Tri& t : m.triangles) std::swap(t[1], t[2]);
+  // A transform that flattens (a nearly singular matrix) can make more.
+  drop_degenerate(m);
   if (m.triangles.empty())
     fail_key(scene_file, spec.key + ".transform",
              " makes every triangle of " + what_value + " degenerate (zero area)");
-  m.dropped_degenerate = dropped + (kept.size() - m.triangles.size());
   m.color = spec.color;
   m.opacity = spec.opacity;
   m.lit = spec.lit;

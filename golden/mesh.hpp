@@ -31,7 +31,8 @@ bool degenerate(const Vec3& a, const Vec3& b, const Vec3& c);
 
 // The built-in shape alone, in local coordinates, before the transform.
 Mesh make_shape(const MeshSpec& spec);
-// Reads the file's triangles through assimp, in file coordinates.
+// Reads the file's triangles through assimp, in file coordinates (assimp
+// reads them in single precision), and drops the degenerate ones.
 // Throws InputError "<path>: <fault>".
 Mesh read_mesh_file(const std::string& path);
 
