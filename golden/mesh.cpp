@@ -284,8 +284,8 @@ Mesh read_mesh_file(const std::string& path) {
   Collector c{*sc, path, m, {}, 0};
   c.node(*sc->mRootNode, aiMatrix4x4());
   if (m.triangles.empty())
-    throw InputError(path + ": no triangles (" + std::to_string(m.vertices.size()) + " vertices, " +
-                     std::to_string(c.faces) + " points and lines)");
+    throw InputError(path + ": no triangles (" + std::to_string(m.vertices.size()) + " vertices and " +
+                     std::to_string(c.faces) + (c.faces == 1 ? " point or line)" : " points or lines)"));
   drop_degenerate(m);
   if (m.triangles.empty())
     throw InputError(path + ": only degenerate triangles (all " + std::to_string(m.dropped_degenerate) +

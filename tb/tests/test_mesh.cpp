@@ -303,6 +303,26 @@ TEST(MeshFiles, AsciiPlyCubeOfQuads) {
   expect_close(surface_area(m), 6, "area");
 }
 
+TEST(MeshFiles, BinaryPly) {
+  TempDir d;
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const Vec3& v : kTetra) {
+    const float xyz[3] = {float(v[0]), float(v[1]), float(v[2])};
+    ply.append(reinterpret_cast<const char*>(xyz), sizeof xyz);  // little-endian hosts, as the format says
+  }
+  for (const auto& f : std::vector<std::array<int32_t, 3>>{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
+    ply += char(3);
+    ply.append(reinterpret_cast<const char*>(f.data()), 12);
+  }
+  const Mesh m = read_mesh_file(d.write("t.ply", ply));
+  EXPECT_EQ(m.triangles.size(), 4u);
+  expect_vertex_set(m, kTetra);
+  EXPECT_TRUE(is_closed(m));
+  expect_close(enclosed_volume(m), 1.0 / 6, "volume");
+}
+
 std::string ascii_stl(const std::vector<std::array<Vec3, 3>>& facets) {
   std::string s = "solid t\n";
   for (const auto& f : facets) {
@@ -565,7 +585,7 @@ TEST(MeshErrors, UnreadableFilesCarryAssimpsMessage) {
 }
 
 TEST(MeshErrors, NoTriangles) {
-  expect_file_error("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n", {"no triangles"});
+  expect_file_error("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n", {"no triangles (3 vertices and 2 points or lines)"});
   expect_file_error("empty.stl", "solid t\nendsolid t\n", {"no triangles"});
 }
 
