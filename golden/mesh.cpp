@@ -297,7 +297,7 @@ Mesh load_mesh(const MeshSpec& spec, const std::string& scene_file, const std::s
   Mesh m;
   // What the messages call the mesh: the file or the shape as written.
   const std::string what_value =
-      spec.file.empty() ? std::string("\"") + shape_name(spec.shape) + "\"" : nlohmann::json(spec.file).dump();
+      spec.file.empty() ? std::string("\"") + shape_name(spec.shape) + "\"" : nlohmann::json(spec.file).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   if (spec.file.empty()) {
     m = make_shape(spec);
   } else {

@@ -136,46 +136,47 @@ TEST(MeshShapes, SphereBoundsWithSegmentsAMultipleOfFour) {
   expect_point(b[1], {5, 5, 5});
 }
 
+// Cylinders and needles: 2n ring vertices and two centres; n side quads,
+// a fan of n at each end. n a multiple of 4 puts ring vertices on ±x and ±y.
+Mesh load_round(MeshShape kind, double r, double length, double tip, int n) {
+  MeshSpec s = shape(kind);
+  s.radius = r;
+  s.length = length;
+  s.tip = tip;
+  s.segments = n;
+  const Mesh m = load_mesh(s, kFile, "");
+  EXPECT_EQ(m.vertices.size(), 2u * size_t(n) + 2);
+  EXPECT_EQ(m.triangles.size(), 4u * size_t(n));
+  EXPECT_TRUE(is_closed(m));
+  const auto b = bounds(m);
+  EXPECT_EQ(n % 4, 0) << "the bounds below need it";
+  expect_point(b[0], {-r, -r, 0});
+  expect_point(b[1], {r, r, length});
+  return m;
+}
+
 // Regular n-gon of circumradius r: area A r² with A = (n/2) sin(2 pi / n),
 // edge 2 r sin(pi / n).
 TEST(MeshShapes, Cylinder) {
-  MeshSpec s = shape(MeshShape::Cylinder);
-  s.radius = 2;
-  s.length = 6;
-  s.segments = 24;
-  const Mesh m = load_mesh(s, kFile, "");
   const int n = 24;
-  EXPECT_EQ(m.vertices.size(), 2u * n + 2);
-  EXPECT_EQ(m.triangles.size(), 4u * n);
-  EXPECT_TRUE(is_closed(m));
+  const Mesh m = load_round(MeshShape::Cylinder, 2, 6, 0, n);
   const double cap = 0.5 * n * std::sin(2 * kPi / n) * 4;
   expect_close(enclosed_volume(m), cap * 6, "volume");
   expect_close(surface_area(m), 2 * cap + n * 2 * 2 * std::sin(kPi / n) * 6, "area");
-  const auto b = bounds(m);
-  expect_point(b[0], {-2, -2, 0});
-  expect_point(b[1], {2, 2, 6});
 }
 
+// The prism to length - tip, then a pyramid of height tip over the same n-gon;
+// each of its faces has base 2 r sin(pi/n) and slant height
+// sqrt(tip² + (r cos(pi/n))²).
 TEST(MeshShapes, Needle) {
-  MeshSpec s = shape(MeshShape::Needle);
-  s.radius = 0.5;
-  s.length = 10;
-  s.tip = 2;
-  s.segments = 16;
-  const Mesh m = load_mesh(s, kFile, "");
   const int n = 16;
   const double r = 0.5;
-  EXPECT_EQ(m.vertices.size(), 2u * n + 2);
-  EXPECT_EQ(m.triangles.size(), 4u * n);
-  EXPECT_TRUE(is_closed(m));
+  const Mesh m = load_round(MeshShape::Needle, r, 10, 2, n);
   const double cap = 0.5 * n * std::sin(2 * kPi / n) * r * r;
   expect_close(enclosed_volume(m), cap * 8 + cap * 2 / 3, "volume");
   const double c = std::cos(kPi / n);
   const double cone = n * r * std::sin(kPi / n) * std::sqrt(2 * 2 + r * r * c * c);
   expect_close(surface_area(m), cap + n * 2 * r * std::sin(kPi / n) * 8 + cone, "area");
-  const auto b = bounds(m);
-  expect_point(b[0], {-0.5, -0.5, 0});
-  expect_point(b[1], {0.5, 0.5, 10});
 }
 
 TEST(MeshShapes, NeedleTipDefaultsToAQuarterOfItsLength) {
