@@ -85,6 +85,41 @@ struct CutPlane {
   bool keep_inside = true;    // false: keep what is outside the slab
 };
 
+// ---- polygons (meshes; golden/mesh.hpp loads them) ----
+
+// Local (file or shape) coordinates to volume coordinates:
+//   p' = translate + R · (scale ⊙ p)
+// scale first (per axis), then rotate (degrees about x, then y, then z, the
+// convention of view.rotate), then translate; or `matrix` instead of all
+// three: a row-major 4×4 affine matrix applied to column vectors [x y z 1].
+struct MeshTransform {
+  Vec3 scale{1, 1, 1};
+  Vec3 rotate{0, 0, 0};
+  Vec3 translate{0, 0, 0};
+  std::optional<std::array<double, 16>> matrix;
+};
+
+enum class MeshShape { Box, Sphere, Cylinder, Needle, Plane };
+
+struct MeshSpec {
+  std::string key;   // where the scene gives it, for messages: "polygons[1]"
+  // A file (path as written; relative paths resolve against the scene's
+  // folder when loaded) or, when `file` is empty, a built-in shape.
+  std::string file;
+  MeshShape shape = MeshShape::Box;
+  // Shape parameters in local units (docs/scene.md, "polygons"):
+  Vec3 size{1, 1, 1};   // box: x, y, z; plane: x, y (z unused)
+  double radius = 1;    // sphere, cylinder, needle
+  double length = 1;    // cylinder, needle: along local +z from z = 0
+  double tip = 0;       // needle: length of the conical tip (0 = length / 4)
+  int segments = 32;    // sphere (around z), cylinder, needle: 3..1024
+  int rings = 16;       // sphere: latitude bands, 2..1024
+  MeshTransform transform;
+  Vec3 color{1, 1, 1};  // RGB, each 0..1
+  double opacity = 1;   // 0..1; 1 = opaque
+  bool lit = true;      // shaded by the scene's lights (false: flat colour)
+};
+
 struct Scene {
   std::string file;  // where it was read from ("" = built in)
   VolumeSource volume;
@@ -105,6 +140,7 @@ struct Scene {
   int pipelines = 4;
   double clock_mhz = 125;
   Precision precision;
+  std::vector<MeshSpec> polygons;   // docs/scene.md, "polygons"; not rendered yet
 };
 
 // The effects a scene calls for: decides what is computed and simulated.

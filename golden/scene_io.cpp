@@ -606,6 +606,123 @@ void read_cut_plane(const Node& n, CutPlane& c) {
   r.reject_unknown();
 }
 
+// ---- polygons -------------------------------------------------------------
+
+constexpr size_t kMaxMeshes = 1024;
+
+// A number (uniform) or [x, y, z], every factor > 0.
+Vec3 read_scale(const Node& n) {
+  if (n.value().is_number()) {
+    const double s = n.positive();
+    return {s, s, s};
+  }
+  if (!n.value().is_array()) n.fail("should be a number or [x, y, z]");
+  return n.positive_vec3();
+}
+
+// [[a, b, c, tx], [d, e, f, ty], [g, h, i, tz], [0, 0, 0, 1]]: rows, affine,
+// with an invertible 3×3 part.
+std::array<double, 16> read_matrix(const Node& n) {
+  std::array<double, 16> m{};
+  const auto rows = n.elements(4, 4);
+  for (size_t i = 0; i < 4; ++i) {
+    const auto cells = rows[i].elements(4, 4);
+    for (size_t j = 0; j < 4; ++j) m[4 * i + j] = cells[j].number();
+  }
+  if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1)
+    rows[3].fail("should be [0, 0, 0, 1] (an affine transform)");
+  const double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+                     m[2] * (m[4] * m[9] - m[5] * m[8]);
+  if (!(std::fabs(det) > 0) || !std::isfinite(det))
+    n.fail("is singular (its 3x3 part has determinant " + fmt(det) + "); it would flatten the mesh");
+  return m;
+}
+
+void read_transform(const Node& n, MeshTransform& t) {
+  ObjectReader r(n);
+  const auto scale = r.get("scale");
+  const auto rotate = r.get("rotate");
+  const auto translate = r.get("translate");
+  const auto matrix = r.get("matrix");
+  r.reject_unknown();
+  if (matrix && (scale || rotate || translate))
+    n.fail("gives \"matrix\" and \"scale\", \"rotate\" or \"translate\"; give the matrix alone");
+  if (scale) t.scale = read_scale(*scale);
+  if (rotate) t.rotate = rotate->vec3();
+  if (translate) t.translate = translate->vec3();
+  if (matrix) t.matrix = read_matrix(*matrix);
+}
+
+MeshShape read_shape(const Node& n) {
+  const std::string s = n.one_of({"box", "sphere", "cylinder", "needle", "plane"});
+  if (s == "box") return MeshShape::Box;
+  if (s == "sphere") return MeshShape::Sphere;
+  if (s == "cylinder") return MeshShape::Cylinder;
+  return s == "needle" ? MeshShape::Needle : MeshShape::Plane;
+}
+
+// Only the keys of the chosen shape are read, so "radius" on a box is unknown.
+void read_shape_parameters(ObjectReader& r, MeshSpec& m) {
+  switch (m.shape) {
+    case MeshShape::Box:
+      if (auto n = r.get("size")) m.size = n->positive_vec3();
+      return;
+    case MeshShape::Plane:
+      if (auto n = r.get("size")) {
+        const auto e = n->elements(2, 2);
+        m.size = {e[0].positive(), e[1].positive(), 0};
+      } else {
+        m.size = {1, 1, 0};
+      }
+      return;
+    case MeshShape::Sphere:
+      if (auto n = r.get("radius")) m.radius = n->positive();
+      if (auto n = r.get("segments")) m.segments = n->int_in(3, 1024);
+      if (auto n = r.get("rings")) m.rings = n->int_in(2, 1024);
+      return;
+    case MeshShape::Cylinder:
+    case MeshShape::Needle:
+      break;
+  }
+  if (auto n = r.get("radius")) m.radius = n->positive();
+  if (auto n = r.get("length")) m.length = n->positive();
+  if (auto n = r.get("segments")) m.segments = n->int_in(3, 1024);
+  if (m.shape != MeshShape::Needle) return;
+  m.tip = m.length / 4;
+  if (auto n = r.get("tip")) {
+    m.tip = n->positive();
+    if (m.tip >= m.length) n->fail("should be less than the needle's length (" + fmt(m.length) + ")");
+  }
+}
+
+MeshSpec read_mesh(const Node& n) {
+  ObjectReader r(n);
+  MeshSpec m;
+  m.key = n.path();
+  const auto file = r.get("file");
+  const auto shape = r.get("shape");
+  if (file && shape) n.fail("gives both \"file\" and \"shape\"; give one");
+  if (file) {
+    m.file = file->string();
+    if (m.file.empty()) file->fail("should name a file");
+  }
+  if (shape) {
+    m.shape = read_shape(*shape);
+    read_shape_parameters(r, m);
+  }
+  if (auto t = r.get("transform")) read_transform(*t, m.transform);
+  if (auto c = r.get("color")) m.color = c->vec3_in(0, 1);
+  if (auto o = r.get("opacity")) m.opacity = o->number_in(0, 1);
+  if (auto l = r.get("lit")) m.lit = l->boolean();
+  r.reject_unknown();
+  if (!file && !shape) n.fail("needs \"file\" or \"shape\"");
+  return m;
+}
+
+void read_polygons(const Node& n, Scene& s) {
+  for (const Node& m : n.elements(0, kMaxMeshes)) s.polygons.push_back(read_mesh(m));
+}
+
 // ---- precision ------------------------------------------------------------
 
 void read_precision(const Node& n, Precision& p) {
@@ -708,6 +825,7 @@ Scene parse_scene(const std::string& json_text, const std::string& file_name) {
     if (s.clock_mhz <= 0 || s.clock_mhz > 10000) n->fail("is out of range (0, 10000]");
   }
   if (auto n = r.get("precision")) read_precision(*n, s.precision);
+  if (auto n = r.get("polygons")) read_polygons(*n, s);
   // Unknown keys first: a misspelt "volume" should be reported as such.
   r.reject_unknown();
   if (!volume) r.fail_missing("volume", "every scene needs one (\"file\" or \"synthetic\")");

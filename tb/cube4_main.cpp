@@ -17,6 +17,7 @@
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
 #include "golden/input_file.hpp"
+#include "golden/mesh.hpp"
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
@@ -114,11 +115,17 @@ struct Loaded {
   golden::Scene scene;
   golden::Volume volume;
   golden::HostProgram host;
+  std::vector<golden::Mesh> meshes;  // the scene's "polygons", checked; not rendered yet
 };
 
-void load_volume(Loaded& l, const std::string& scene_path, bool header_only) {
+// Relative paths in a scene are relative to its folder.
+std::string scene_dir(const std::string& scene_path) {
   const std::string dir = scene_path.empty() ? "." : std::filesystem::path(scene_path).parent_path().string();
-  l.volume = golden::load_volume(l.scene.volume, l.scene.precision.voxel_bits, dir.empty() ? "." : dir, header_only);
+  return dir.empty() ? "." : dir;
+}
+
+void load_volume(Loaded& l, const std::string& scene_path, bool header_only) {
+  l.volume = golden::load_volume(l.scene.volume, l.scene.precision.voxel_bits, scene_dir(scene_path), header_only);
   l.host = golden::program_host(l.scene, l.volume);
 }
 
@@ -130,6 +137,8 @@ Loaded load(const std::string& scene_path, bool header_only = false) {
   Loaded l;
   l.scene = scene_path.empty() ? golden::default_scene() : golden::load_scene(scene_path);
   load_volume(l, scene_path, header_only);
+  // A bad mesh is bad input (exit 2) even while the renderers ignore meshes.
+  l.meshes = golden::load_meshes(l.scene, scene_dir(scene_path));
   return l;
 }
 

@@ -106,6 +106,28 @@ TEST_F(Cli, BadInputExitsTwoNamingTheCulprit) {
   EXPECT_FALSE(fs::exists(path("bp.png")));
 }
 
+// The scene's meshes are loaded and checked by every command, and (not
+// rendered yet) leave the image as it was, bit for bit.
+TEST_F(Cli, MeshesAreCheckedAndLeaveTheImageAlone) {
+  const std::string plain(kSphere);
+  const std::string with_mesh = plain.substr(0, plain.rfind('}')) +
+                                R"(, "polygons": [{"shape": "sphere", "transform": {"translate": [8, 8, 8]}}]})";
+  ASSERT_EQ(run("render " + write("a.json", plain) + " --model fixed -q -o " + path("a.exr")).code, 0);
+  ASSERT_EQ(run("render " + write("b.json", with_mesh) + " --model fixed -q -o " + path("b.exr")).code, 0);
+  const auto ia = cube4::tb::read_image(path("a.exr")), ib = cube4::tb::read_image(path("b.exr"));
+  ASSERT_EQ(ia.rgba.size(), 64u * 48 * 4);
+  EXPECT_TRUE(ia.rgba == ib.rgba) << "a mesh changed the image";
+
+  const std::string bad = plain.substr(0, plain.rfind('}')) + R"(, "polygons": [{"file": "nowhere.obj"}]})";
+  for (const char* command : {"render ", "info "}) {
+    const CliResult r = run(command + write("c.json", bad) + (command[0] == 'r' ? " -o " + path("c.png") : ""));
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("\"polygons[0].file\" = \"nowhere.obj\" cannot be loaded"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(path("nowhere.obj")), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(path("c.png")));
+}
+
 TEST_F(Cli, TruncatedVolumeFileIsReportedWithItsName) {
   std::ofstream(path("cut.den"), std::ios::binary) << std::string(30, '\0');
   const CliResult r = run("render " + write("t.json", R"({"volume": {"file": "cut.den"}})") + " -o " + path("x.png"));

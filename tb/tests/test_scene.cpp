@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,7 @@ void expect_same(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.clock_mhz, b.clock_mhz);
   EXPECT_EQ(a.precision.voxel_bits, b.precision.voxel_bits);
   EXPECT_EQ(a.precision.alpha_bits, b.precision.alpha_bits);
+  EXPECT_EQ(a.polygons.size(), b.polygons.size());
 }
 
 std::string scene_path(const std::string& name) {
@@ -191,6 +193,26 @@ TEST(SceneExamples, DefaultJsonEqualsDefaultScene) {
   // Where brainsmall is only installed gzipped, the default scene names the .gz.
   if (d.volume.path != s.volume.path && d.volume.path == s.volume.path + ".gz") s.volume.path = d.volume.path;
   expect_same(s, d);
+}
+
+// Meshes (tb/tests/test_mesh.cpp) add to a scene and change nothing else:
+// without them, or with an empty list, every example is what it was.
+TEST(SceneExamples, EmptyPolygonsChangeNothing) {
+  for (const auto& e : fs::directory_iterator(std::string(CUBE4_SOURCE_DIR) + "/scenes")) {
+    if (e.path().extension() != ".json") continue;
+    SCOPED_TRACE(e.path().string());
+    Scene s = load_scene(e.path().string());
+    if (!s.polygons.empty()) continue;  // brain_probe.json
+    std::ifstream in(e.path());
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t brace = text.find('{');
+    ASSERT_NE(brace, std::string::npos);
+    text.insert(brace + 1, R"("polygons": [], )");
+    const Scene t = parse_scene(text, e.path().string());
+    EXPECT_TRUE(t.polygons.empty());
+    expect_same(s, t);
+  }
+  expect_same(parse(with("")), parse(with(R"("polygons": [])")));
 }
 
 TEST(SceneExamples, SphereScenes) {
