@@ -25,7 +25,7 @@
 //   1: crop compares, the three products of d       2: d = sum, saturated
 //   3: outside distance and comparisons             4: ramp (the wide product)
 //   5: cut factor and cut_alpha                     6: premultiplied colour
-//   7: blend with acc_*_i (driven in cycle 6)
+//   7: blend with acc_*_i (driven in cycle 6): cube4_compose_node, Latency 1
 // Fully pipelined, one sample per clock. Handshake: valid-only; valid_i
 // travels with the data to valid_o (acc_*_i carries no valid of its own; it
 // is ignored in cycles whose sample was not valid). Only the valid registers
@@ -129,7 +129,7 @@ module cube4_composite #(
   endfunction
 
 
-  logic [Latency-1:0] valid_q;
+  logic [Latency-2:0] valid_q;  // stages 1..6
 
   ////////////////////////////////////////////////
   // Stage 1: crop compares                     //
@@ -317,69 +317,52 @@ module cube4_composite #(
   ////////////////////////////////////////////////
   // Stage 7: blend with the accumulator        //
   ////////////////////////////////////////////////
-  // Front to back, in the accumulator domain: t = one - acc.a;
-  // c += mul_frac(t, pre_c), saturated; a += mul_frac(t, alpha) (never passes one).
-  logic [AB-1:0] transparency;
-  assign transparency = {AB{1'b1}} - acc_alpha_i;
+  // golden blend() = compose(mode, acc, sample_pixel(s)): the compositing
+  // node with the accumulator in front and the sample behind, one cycle
+  // (Latency 1: the products and the add before one register). An
+  // invisible sample is the empty pixel: over adds nothing, MIP/MinIP
+  // never take it.
+  logic [AB-1:0] back_red, back_green, back_blue, back_alpha;
+  assign back_red   = pre_visible_q ? pre_red_q   : '0;
+  assign back_green = pre_visible_q ? pre_green_q : '0;
+  assign back_blue  = pre_visible_q ? pre_blue_q  : '0;
+  assign back_alpha = pre_visible_q ? pre_alpha_q : '0;
 
-  // The four products in the accumulator domain (golden mul_frac at A + G).
-  logic [AB-1:0] add_red, add_green, add_blue, add_alpha;
-  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_red (
-    .x_i(transparency), .f_i(pre_red_q), .y_o(add_red));
-  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_green (
-    .x_i(transparency), .f_i(pre_green_q), .y_o(add_green));
-  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_blue (
-    .x_i(transparency), .f_i(pre_blue_q), .y_o(add_blue));
-  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_add_alpha (
-    .x_i(transparency), .f_i(pre_alpha_q), .y_o(add_alpha));
+  cube4_compose_node #(
+    .VoxelBits(VoxelBits), .AlphaBits(AlphaBits), .AccGuardBits(AccGuardBits), .Latency(1)
+  ) u_blend (
+    .clk_i,
+    .rst_ni,
+    .blend_mode_i,
+    .valid_i          (valid_q[Latency-2]),
+    .front_red_i      (acc_red_i),
+    .front_green_i    (acc_green_i),
+    .front_blue_i     (acc_blue_i),
+    .front_alpha_i    (acc_alpha_i),
+    .front_value_i    (acc_value_i),
+    .front_selected_i (acc_selected_i),
+    .back_red_i       (back_red),
+    .back_green_i     (back_green),
+    .back_blue_i      (back_blue),
+    .back_alpha_i     (back_alpha),
+    .back_value_i     (value_q[5*VoxelBits +: VoxelBits]),
+    .back_selected_i  (pre_visible_q),
+    .valid_o,
+    .red_o,
+    .green_o,
+    .blue_o,
+    .alpha_o,
+    .value_o,
+    .selected_o
+  );
 
-  function automatic logic [AB-1:0] add_sat(input logic [AB-1:0] acc, input logic [AB-1:0] inc);
-    logic [AB:0] sum;
-    sum     = {1'b0, acc} + {1'b0, inc};
-    add_sat = sum[AB] ? {AB{1'b1}} : sum[AB-1:0];
-  endfunction
-
-  logic [VoxelBits-1:0] sample_value;
-  logic                 sample_value_wins, take;
-  assign sample_value      = value_q[5*VoxelBits +: VoxelBits];
-  assign sample_value_wins = (blend_mode_i == cube4_pkg::BlendMip) ? (sample_value > acc_value_i)
-                                                    : (sample_value < acc_value_i);
-  assign take = !acc_selected_i || sample_value_wins;
-
-  always_ff @(posedge clk_i) begin : stage7_regs
-    // Default: the accumulator unchanged (invisible sample, or not taken).
-    red_o      <= acc_red_i;
-    green_o    <= acc_green_i;
-    blue_o     <= acc_blue_i;
-    alpha_o    <= acc_alpha_i;
-    value_o    <= acc_value_i;
-    selected_o <= acc_selected_i;
-    if (pre_visible_q) begin
-      if (blend_mode_i == cube4_pkg::BlendMip || blend_mode_i == cube4_pkg::BlendMinIp) begin
-        if (take) begin
-          red_o      <= pre_red_q;
-          green_o    <= pre_green_q;
-          blue_o     <= pre_blue_q;
-          alpha_o    <= pre_alpha_q;
-          value_o    <= sample_value;
-          selected_o <= 1'b1;
-        end
-      end else begin
-        red_o   <= add_sat(acc_red_i, add_red);
-        green_o <= add_sat(acc_green_i, add_green);
-        blue_o  <= add_sat(acc_blue_i, add_blue);
-        alpha_o <= acc_alpha_i + add_alpha;
-      end
-    end
-  end
-
+  // Stages 1..6 (the node holds the last valid register).
   always_ff @(posedge clk_i or negedge rst_ni) begin : valid_regs
     if (!rst_ni) begin
       valid_q <= '0;
     end else begin
-      valid_q <= {valid_q[Latency-2:0], valid_i};
+      valid_q <= {valid_q[Latency-3:0], valid_i};
     end
   end
-  assign valid_o = valid_q[Latency-1];
 
 endmodule

@@ -56,6 +56,8 @@ extra=(
   "cube4_composite AlphaBits=12,AccGuardBits=0"
   "cube4_composite_unit AlphaBits=12,AccGuardBits=0"
   "cube4_composite HasCutPlane=0"
+  "cube4_compose_node AlphaBits=8,AccGuardBits=0"
+  "cube4_compose_node AlphaBits=12,AccGuardBits=0"
   "cube4_shade_unit HasShading=0,HasMagnitude=0"
 )
 

@@ -12,21 +12,10 @@
 
 #include "golden/fixed.hpp"
 #include "golden/precision.hpp"
+#include "golden/units/compose.hpp"
 #include "golden/units/shade_phong.hpp"
 
 namespace cube4::golden {
-
-enum class BlendMode : uint8_t { Composite = 0, Mip = 1, MinIp = 2 };
-
-struct RayAcc {
-  uint32_t r = 0, g = 0, b = 0, a = 0;  // premultiplied colour and opacity, A bits
-  uint16_t value = 0;                   // MIP/MinIP: the selected sample value
-  bool valid = false;                   // MIP/MinIP: a sample has been selected
-  friend constexpr bool operator==(const RayAcc& x, const RayAcc& y) {
-    return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a && x.value == y.value &&
-           x.valid == y.valid;
-  }
-};
 
 struct ShadedSample {
   Rgb rgb{0, 0, 0};     // not premultiplied
@@ -34,8 +23,6 @@ struct ShadedSample {
   uint32_t value = 0;   // the interpolated sample, for MIP/MinIP
   bool visible = true;  // cropping and cut plane
 };
-
-constexpr int acc_bits(const Precision& p) { return p.alpha_bits + p.acc_guard_bits; }
 
 // A unit value (colour or α, alpha_bits) widened to the accumulator domain,
 // 1.0 -> 1.0 (bit replication).
@@ -56,32 +43,13 @@ constexpr uint32_t premultiply(uint32_t c, uint32_t alpha, const Precision& p) {
   return product < limit ? product : limit;
 }
 
-// C += (1 - α_acc)·C_s·α ; α_acc += (1 - α_acc)·α, in the accumulator
-// domain. The increment is a fraction of the remaining transparency, so
-// α_acc never passes full opacity; colour rounding can pass it by an LSB,
-// hence the saturation.
-constexpr RayAcc blend_front_to_back(const RayAcc& acc, const ShadedSample& s, const Precision& p) {
-  if (!s.visible) return acc;
-  const int a = acc_bits(p);
-  const int64_t t = max_unsigned(a) - acc.a;
-  RayAcc r = acc;
-  auto add = [&](uint32_t c_acc, uint32_t c) {
-    return static_cast<uint32_t>(sat_unsigned(c_acc + mul_frac(t, premultiply(c, s.alpha, p), a), a));
-  };
-  r.r = add(acc.r, s.rgb[0]);
-  r.g = add(acc.g, s.rgb[1]);
-  r.b = add(acc.b, s.rgb[2]);
-  r.a = static_cast<uint32_t>(acc.a + mul_frac(t, to_acc(s.alpha, p), a));
-  return r;
-}
-
-// MIP/MinIP keep the premultiplied colour of the extreme sample value; ties
-// keep the earlier (front) sample.
-constexpr RayAcc blend_extreme(const RayAcc& acc, const ShadedSample& s, bool maximum,
-                               const Precision& p) {
-  if (!s.visible) return acc;
-  const bool take = !acc.valid || (maximum ? s.value > acc.value : s.value < acc.value);
-  if (!take) return acc;
+// A sample as a pixel of the composition (golden/units/compose.hpp): its
+// premultiplied colour and α in the accumulator domain, its value selected;
+// an invisible sample (cropping, cut plane) is the empty pixel, which the
+// node leaves out in every mode (over adds mul_frac(t, 0) = 0; MIP/MinIP
+// never take a pixel with nothing selected).
+constexpr RayAcc sample_pixel(const ShadedSample& s, const Precision& p) {
+  if (!s.visible) return RayAcc{};
   RayAcc r;
   r.r = premultiply(s.rgb[0], s.alpha, p);
   r.g = premultiply(s.rgb[1], s.alpha, p);
@@ -90,6 +58,19 @@ constexpr RayAcc blend_extreme(const RayAcc& acc, const ShadedSample& s, bool ma
   r.value = static_cast<uint16_t>(s.value);
   r.valid = true;
   return r;
+}
+
+// C += (1 - α_acc)·C_s·α ; α_acc += (1 - α_acc)·α, in the accumulator
+// domain: the ray so far over the sample (compose_over).
+constexpr RayAcc blend_front_to_back(const RayAcc& acc, const ShadedSample& s, const Precision& p) {
+  return compose_over(acc, sample_pixel(s, p), p);
+}
+
+// MIP/MinIP keep the premultiplied colour of the extreme sample value; ties
+// keep the earlier (front) sample (compose_extreme).
+constexpr RayAcc blend_extreme(const RayAcc& acc, const ShadedSample& s, bool maximum,
+                               const Precision& p) {
+  return compose_extreme(acc, sample_pixel(s, p), maximum);
 }
 
 // A finished ray as a base-plane pixel: each channel scaled from the
@@ -108,12 +89,9 @@ constexpr Pixel pixel_of(const RayAcc& acc, const Precision& p) {
   return {acc_to_pixel(acc.r, p), acc_to_pixel(acc.g, p), acc_to_pixel(acc.b, p), acc_to_pixel(acc.a, p)};
 }
 
+// One sample into its ray: the composition node with the sample behind.
 constexpr RayAcc blend(BlendMode mode, const RayAcc& acc, const ShadedSample& s, const Precision& p) {
-  switch (mode) {
-    case BlendMode::Mip: return blend_extreme(acc, s, true, p);
-    case BlendMode::MinIp: return blend_extreme(acc, s, false, p);
-    default: return blend_front_to_back(acc, s, p);
-  }
+  return compose(mode, acc, sample_pixel(s, p), p);
 }
 
 }  // namespace cube4::golden

@@ -1,11 +1,11 @@
-# Compositing (`composite`): the datapath cube4_composite and the unit with its
-# ray storage and ray alignment (cube4_delay_ram, cube4_composite_unit)
-# inside cube4_composite_ring. One executable, test_rtl_composite: the
-# datapath tests (tb/rtl/test_composite.cpp) and the ring's
+# Compositing (`composite`): the datapath cube4_composite (its blend stage is
+# cube4_compose_node) and the unit with its ray storage and ray alignment
+# (cube4_delay_ram, cube4_composite_unit) inside cube4_composite_ring. One
+# executable, test_rtl_composite: the datapath tests (tb/rtl/test_composite.cpp) and the ring's
 # (tb/rtl/test_composite_ring.cpp); the default ring (p = 4, MaxDim = 256)
 # from cube4_rtl_test, the other pipeline counts and the datapath's variants
 # verilated again below.
-set(_composite_ring_sources cube4_mul_frac.sv cube4_composite.sv cube4_delay_ram.sv cube4_composite_unit.sv)
+set(_composite_ring_sources cube4_mul_frac.sv cube4_compose_node.sv cube4_composite.sv cube4_delay_ram.sv cube4_composite_unit.sv)
 
 cube4_rtl_test(test_rtl_composite
   TOPS cube4_composite_ring

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "golden/pipeline.hpp"
 
@@ -453,6 +455,158 @@ TEST(Composite, MipAndMinIpKeepTheExtremeAndTheFirstTie) {
   ShadedSample hidden = sample(4000, 7);
   hidden.visible = false;
   EXPECT_EQ(blend(BlendMode::Mip, mx, hidden, kP), mx);
+}
+
+// The compositing node (golden/units/compose.hpp) at the default widths
+// (A = 24) and VolumePro's (A = 12).
+namespace {
+RayAcc random_partial_pixel(std::mt19937& gen, const Precision& p) {
+  const uint32_t full = static_cast<uint32_t>(max_unsigned(acc_bits(p)));
+  RayAcc x;
+  x.a = gen() % (full + 1);
+  const uint32_t cmax = gen() % 4 ? x.a : full;  // premultiplied, or any colour
+  x.r = gen() % (cmax + 1);
+  x.g = gen() % (cmax + 1);
+  x.b = gen() % (cmax + 1);
+  x.value = static_cast<uint16_t>(gen() % 4096);
+  x.valid = gen() % 4 != 0;
+  return x;
+}
+bool same_colour(const RayAcc& x, const RayAcc& y) { return x.r == y.r && x.g == y.g && x.b == y.b && x.a == y.a; }
+}  // namespace
+
+TEST(Compose, OverWithAnEmptyOrOpaquePixelIsExact) {
+  for (const Precision& p : {Precision{}, kP}) {
+    const uint32_t full = static_cast<uint32_t>(max_unsigned(acc_bits(p)));
+    std::mt19937 gen(21);
+    for (int i = 0; i < 100000; ++i) {
+      const RayAcc x = random_partial_pixel(gen, p);
+      // Nothing behind: the front unchanged, value and selection included.
+      ASSERT_EQ(compose_over(x, RayAcc{}, p), x);
+      // Nothing in front: the back's colour and α (mul_frac(full, c) = c);
+      // over carries the front's value and selection.
+      ASSERT_TRUE(same_colour(compose_over(RayAcc{}, x, p), x));
+      // An opaque front hides the back.
+      RayAcc opaque = random_partial_pixel(gen, p);
+      opaque.a = full;
+      ASSERT_EQ(compose_over(opaque, x, p), opaque);
+    }
+  }
+}
+
+TEST(Compose, OverNeverPassesFullOpacityAndSaturatesColour) {
+  for (const Precision& p : {Precision{}, kP}) {
+    const uint32_t full = static_cast<uint32_t>(max_unsigned(acc_bits(p)));
+    std::mt19937 gen(22);
+    for (int i = 0; i < 100000; ++i) {
+      const RayAcc f = random_partial_pixel(gen, p), b = random_partial_pixel(gen, p);
+      const RayAcc r = compose_over(f, b, p);
+      ASSERT_GE(r.a, f.a);
+      ASSERT_LE(r.a, full);
+      ASSERT_LE(r.a - f.a, full - f.a);  // at most the front's transparency
+      for (auto [c, cf] : {std::pair{r.r, f.r}, std::pair{r.g, f.g}, std::pair{r.b, f.b}}) {
+        ASSERT_GE(c, cf);
+        ASSERT_LE(c, full);
+      }
+      ASSERT_EQ(r.value, f.value);
+      ASSERT_EQ(r.valid, f.valid);
+    }
+    // Saturation: a full front colour over a full back at half opacity.
+    const RayAcc f{full, full, 0, full / 2, 0, false}, b{full, 0, full, full, 0, false};
+    const RayAcc r = compose_over(f, b, p);
+    EXPECT_EQ(r.r, full);
+    EXPECT_EQ(r.g, full);
+    EXPECT_EQ(r.b, static_cast<uint32_t>(mul_frac(full - full / 2, full, acc_bits(p))));
+    EXPECT_EQ(r.a, full);
+  }
+  // A hand case at VolumePro's widths: t = 4095 - 1000 = 3095,
+  // mul_frac(3095, 2000, 12) = round(3095 · 2000 / 4096) = 1511 (1511.2).
+  EXPECT_EQ(compose_over(RayAcc{500, 0, 0, 1000, 0, false}, RayAcc{2000, 0, 0, 2000, 0, false}, kP),
+            (RayAcc{2011, 0, 0, 2511, 0, false}));
+}
+
+TEST(Compose, ExtremeTiesKeepTheFrontAndNothingSelectedLoses) {
+  const RayAcc f{1, 2, 3, 4, 100, true}, b{5, 6, 7, 8, 100, true};
+  for (bool maximum : {true, false}) {
+    EXPECT_EQ(compose_extreme(f, b, maximum), f);  // a tie
+    RayAcc unsel = b;
+    unsel.valid = false;
+    unsel.value = maximum ? 4095 : 0;
+    EXPECT_EQ(compose_extreme(f, unsel, maximum), f);  // the back has nothing selected
+    RayAcc none = f;
+    none.valid = false;
+    none.value = maximum ? 4095 : 0;
+    EXPECT_EQ(compose_extreme(none, b, maximum), b);  // the front has nothing selected
+    EXPECT_EQ(compose_extreme(none, unsel, maximum), none);
+  }
+  RayAcc hi = b;
+  hi.value = 101;
+  EXPECT_EQ(compose_extreme(f, hi, true), hi);
+  EXPECT_EQ(compose_extreme(f, hi, false), f);
+  EXPECT_EQ(compose_extreme(hi, f, false), f);
+  // Mode 3 of the register is over, as in the compositor.
+  EXPECT_EQ(compose(static_cast<BlendMode>(3), f, b, kP), compose_over(f, b, kP));
+}
+
+// The compositor's blend is the node with the sample behind: an invisible
+// sample is the empty pixel, which changes no ray in any mode.
+TEST(Compose, BlendOfAnInvisibleSampleLeavesTheRay) {
+  std::mt19937 gen(23);
+  for (const Precision& p : {Precision{}, kP})
+    for (BlendMode mode : {BlendMode::Composite, BlendMode::Mip, BlendMode::MinIp})
+      for (int i = 0; i < 20000; ++i) {
+        const RayAcc acc = random_partial_pixel(gen, p);
+        ShadedSample s;
+        s.rgb = {static_cast<uint32_t>(gen() % 4096), 0, 4095};
+        s.alpha = gen() % 4096;
+        s.value = gen() % 4096;
+        s.visible = false;
+        ASSERT_EQ(blend(mode, acc, s, p), acc);
+        s.visible = true;
+        ASSERT_EQ(blend(mode, acc, s, p), compose(mode, acc, sample_pixel(s, p), p));
+      }
+}
+
+TEST(Compose, UnderlayAndOverlayAreTheNodeWithALayer) {
+  std::mt19937 gen(24);
+  const Precision p;
+  const uint32_t full = static_cast<uint32_t>(max_unsigned(acc_bits(p)));
+  const RayAcc black{0, 0, 0, full, 0, false};
+  for (int i = 0; i < 10000; ++i) {
+    const RayAcc x = random_partial_pixel(gen, p);
+    // An opaque black background: the pixel's colour, full opacity.
+    const RayAcc u = underlay(BlendMode::Composite, x, black, p);
+    EXPECT_EQ(u.r, x.r);
+    EXPECT_EQ(u.g, x.g);
+    EXPECT_EQ(u.b, x.b);
+    EXPECT_EQ(u.a, full);
+    // No overlay (an empty layer): the pixel's colour.
+    EXPECT_TRUE(same_colour(overlay(BlendMode::Composite, RayAcc{}, x, p), x));
+    const RayAcc glass = random_partial_pixel(gen, p);
+    EXPECT_EQ(overlay(BlendMode::Composite, glass, x, p), compose_over(glass, x, p));
+    EXPECT_EQ(underlay(BlendMode::Mip, x, glass, p), compose_extreme(x, glass, true));
+  }
+}
+
+// Tree and chain compose the same images; MIP/MinIP select without
+// rounding, and ties keep the front in both, so there the two are equal.
+// (Over rounds differently in each: docs/accuracy.md measures how much.)
+TEST(Compose, TreeEqualsChainForMipAndMinIp) {
+  std::mt19937 gen(25);
+  const Precision p;
+  for (int n : {1, 2, 3, 4, 5, 7, 8, 16, 33, 64})
+    for (int i = 0; i < 2000; ++i) {
+      std::vector<RayAcc> px(static_cast<size_t>(n));
+      for (RayAcc& x : px) {
+        x = random_partial_pixel(gen, p);
+        x.value = static_cast<uint16_t>(gen() % 8);  // many ties
+      }
+      for (BlendMode mode : {BlendMode::Mip, BlendMode::MinIp})
+        ASSERT_EQ(compose_tree(mode, px.data(), n, p), compose_chain(mode, px.data(), n, p)) << n;
+    }
+  const RayAcc two[] = {RayAcc{1, 2, 3, 400, 0, false}, RayAcc{50, 60, 70, 800, 0, false}};
+  EXPECT_EQ(compose_tree(BlendMode::Composite, two, 2, kP), compose_over(two[0], two[1], kP));
+  EXPECT_EQ(compose_chain(BlendMode::Composite, two, 0, kP), RayAcc{});
 }
 
 TEST(RayAlign, PredecessorsAndSideEntries) {

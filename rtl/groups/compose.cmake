@@ -1,0 +1,20 @@
+# Compositing node (`compose`): cube4_compose_node, one node of the image
+# composition network (golden compose(), docs/rtl-compose.md). One
+# executable, test_rtl_compose (tb/rtl/test_compose.cpp): the default widths
+# from cube4_rtl_test, other widths and Latency 1 verilated again below
+# (test_compose.cpp holds the same values).
+set(_compose_sources cube4_mul_frac.sv)
+
+cube4_rtl_test(test_rtl_compose
+  TOPS cube4_compose_node
+  SOURCES ${_compose_sources}
+  TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_compose.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
+
+# 8-bit pixels without guard bits (bela's eight bits a channel).
+cube4_rtl_variant(test_rtl_compose cube4_compose_node Vcube4_compose_node_a8 SOURCES ${_compose_sources}
+  PARAMS VoxelBits=8 AlphaBits=8 AccGuardBits=0)
+cube4_rtl_variant(test_rtl_compose cube4_compose_node Vcube4_compose_node_a12 SOURCES ${_compose_sources}
+  PARAMS AlphaBits=12 AccGuardBits=4)
+# Latency 1: the instance inside cube4_composite.
+cube4_rtl_variant(test_rtl_compose cube4_compose_node Vcube4_compose_node_l1 SOURCES ${_compose_sources}
+  PARAMS Latency=1)
