@@ -118,10 +118,14 @@ inline void run_seeded(const Case& c, int p, std::array<Level, sysc::kUnits> lev
   const sysc::CycleCount cc = sysc::frame_cycles(simulated, p);
   // A clocked run: the stream former's last voxel beat is beat number
   // `stream` (one partial beam per clock, no gap).
-  if (!cfg.all_tlm() || cycle_level) EXPECT_EQ(res.last_beat[0], cc.stream) << "voxel beats per frame";
+  if (!cfg.all_tlm() || cycle_level) {
+    EXPECT_EQ(res.last_beat[0], cc.stream) << "voxel beats per frame";
+  }
   bool all_rtl = true;
   for (Level l : levels) all_rtl = all_rtl && l == Level::Rtl;
-  if (all_rtl) EXPECT_EQ(res.frame_cycles, cc.latency) << "RTL cycles against the cycle model";
+  if (all_rtl) {
+    EXPECT_EQ(res.frame_cycles, cc.latency) << "RTL cycles against the cycle model";
+  }
   const int B = (regs.dim[0] + p - 1) / p;
   EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices() + (simulated.gradient ? 1 : 0)) *
                            static_cast<uint64_t>(regs.dim[1] + 1) * static_cast<uint64_t>(B));

@@ -49,7 +49,9 @@ void expect_exact(const test::Setup& s, const std::string& what, bool expect_ski
   EXPECT_GT(alpha_sum(every), 0) << what;
   EXPECT_EQ(skipped.rgba, every.rgba) << what;
   const double kept = kept_fraction(s);
-  if (expect_skipping) EXPECT_LT(kept, 0.75) << what << ": the test needs empty space to skip";
+  if (expect_skipping) {
+    EXPECT_LT(kept, 0.75) << what << ": the test needs empty space to skip";
+  }
   std::printf("%s: %.1f %% of the cells kept\n", what.c_str(), 100 * kept);
 }
 

@@ -317,7 +317,9 @@ void back_to_back(std::array<Level, sysc::kUnits> levels, bool cycle_level, cons
   const sysc::CycleCount cc = sysc::frame_cycles(regs, 4);
   EXPECT_EQ(res.measured_interval, cc.stream);
   EXPECT_EQ(res.simulated_cycles, res.frame_cycles + 2 * cc.stream);
-  if (levels == kRtl) EXPECT_EQ(res.frame_cycles, cc.latency);
+  if (levels == kRtl) {
+    EXPECT_EQ(res.frame_cycles, cc.latency);
+  }
 }
 TEST(System, BackToBackFramesRtl) { back_to_back(kRtl, false); }
 // No zero pass between the frames: the address generator starts the next
