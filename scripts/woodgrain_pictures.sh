@@ -2,7 +2,8 @@
 # The concentric "wood-grain" rings on brainsmall's forehead and cheeks
 # (docs/accuracy.md, "Wood-grain rings"): the default view, zoomed 2.5× on
 # the face, rendered by the fixed-point and float models with no
-# supersampling, z supersampling 4, x/y supersampling 3 and both, and by
+# supersampling, z supersampling 4, x/y supersampling 3, both, and z 8 with
+# x/y 3, and by
 # the reference ray caster, into docs/images/woodgrain-*.png, with each
 # image's error against the reference (idiff) into the "woodgrain" section
 # of docs/accuracy.md.
@@ -34,7 +35,7 @@ err() {  # idiff's PSNR, mean and max error of $1 against $2
 echo "woodgrain_pictures: reference..." >&2
 "$cube4" render "$(scene plain 1 1)" -q --model reference --reference-step 0.125 -o "$out/woodgrain-reference.png"
 rows=()
-for cfg in "plain 1 1" "z4 4 1" "xy3 1 3" "z4-xy3 4 3"; do
+for cfg in "plain 1 1" "z4 4 1" "xy3 1 3" "z4-xy3 4 3" "z8-xy3 8 3"; do
   read -r name S xy <<<"$cfg"
   for model in fixed float; do
     echo "woodgrain_pictures: $model $name..." >&2
