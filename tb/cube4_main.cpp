@@ -407,7 +407,22 @@ int run_info(const std::string& scene, uint64_t max_memory_mib) {
       {"registers", tb::describe_registers(l.host.regs)},
       {"pipelines", l.scene.pipelines},
       {"clock_mhz", l.scene.clock_mhz},
+      {"polygons", nlohmann::json::array()},
   };
+  // The meshes as loaded and checked (not rendered yet): what a user wants
+  // to see before trusting a mesh file's units and transform.
+  for (const golden::Mesh& m : l.meshes) {
+    const auto box = golden::bounds(m);
+    j["polygons"].push_back({{"source", m.source},
+                             {"triangles", m.triangles.size()},
+                             {"vertices", m.vertices.size()},
+                             {"dropped_degenerate", m.dropped_degenerate},
+                             {"closed", golden::is_closed(m)},
+                             {"bounds", {box[0], box[1]}},
+                             {"color", m.color},
+                             {"opacity", m.opacity},
+                             {"lit", m.lit}});
+  }
   std::cout << j.dump(2) << "\n";
   return 0;
 }

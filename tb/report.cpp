@@ -43,6 +43,9 @@ nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& 
       {"base_plane", {h.regs.base_width(), h.regs.base_height()}},
       {"sample_slices", h.regs.sample_slices()},
       {"image", {s.width, s.height}},
+      {"zoom", s.view.zoom},
+      {"look_at", f.look_at},
+      {"xy_supersampling", s.xy_supersampling},
   };
   if (s.view.direction) {
     j["direction"] = *s.view.direction;

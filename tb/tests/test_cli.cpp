@@ -73,6 +73,30 @@ TEST_F(Cli, InfoPrintsFactorisationRegistersAndEffects) {
   EXPECT_TRUE(j["view"].contains("base_plane_axis"));
   EXPECT_TRUE(j["registers"].contains("dda"));
   EXPECT_EQ(j["effects"][0], "composite");
+  EXPECT_EQ(j["view"]["zoom"], 1.0);
+  EXPECT_EQ(j["view"]["look_at"], (std::vector<double>{7.5, 7.5, 7.5}));
+  EXPECT_EQ(j["view"]["xy_supersampling"], 1);
+  EXPECT_TRUE(j["polygons"].empty());
+}
+
+// The meshes as loaded: what they are, how many triangles, where.
+TEST_F(Cli, InfoListsTheMeshes) {
+  const std::string cmd = std::string(CUBE4_BINARY) + " info " + CUBE4_SOURCE_DIR + "/scenes/brain_probe.json > " +
+                          path("info.json");
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  nlohmann::json j;
+  std::ifstream(path("info.json")) >> j;
+  ASSERT_EQ(j["polygons"].size(), 2u);
+  EXPECT_NE(j["polygons"][0]["source"].get<std::string>().find("probe.obj"), std::string::npos);
+  EXPECT_TRUE(j["polygons"][0]["closed"]);
+  EXPECT_GT(j["polygons"][0]["triangles"].get<int>(), 0);
+  const nlohmann::json& sphere = j["polygons"][1];
+  EXPECT_EQ(sphere["source"], "sphere");
+  EXPECT_EQ(sphere["triangles"], 2 * 24 * (12 - 1));  // docs/scene.md: 2·segments·(rings − 1)
+  EXPECT_EQ(sphere["opacity"], 0.4);
+  EXPECT_EQ(sphere["lit"], false);
+  EXPECT_NEAR(sphere["bounds"][0][0].get<double>(), 64 - 6, 1e-9);
+  EXPECT_NEAR(sphere["bounds"][1][2].get<double>(), 42 + 6, 1e-9);
 }
 
 TEST_F(Cli, BadInputExitsTwoNamingTheCulprit) {
