@@ -76,10 +76,11 @@ constexpr RayAcc compose_over(const RayAcc& front, const RayAcc& back, const Pre
 
 // MIP (maximum) or MinIP: the pixel of the extreme selected value; ties and
 // a back pixel with nothing selected keep the front.
+constexpr bool extreme_takes_back(const RayAcc& front, bool back_valid, uint16_t back_value, bool maximum) {
+  return back_valid && (!front.valid || (maximum ? back_value > front.value : back_value < front.value));
+}
 constexpr RayAcc compose_extreme(const RayAcc& front, const RayAcc& back, bool maximum) {
-  const bool take =
-      back.valid && (!front.valid || (maximum ? back.value > front.value : back.value < front.value));
-  return take ? back : front;
+  return extreme_takes_back(front, back.valid, back.value, maximum) ? back : front;
 }
 
 constexpr RayAcc compose(BlendMode mode, const RayAcc& front, const RayAcc& back, const Precision& p) {

@@ -70,7 +70,9 @@ constexpr RayAcc blend_front_to_back(const RayAcc& acc, const ShadedSample& s, c
 // keep the earlier (front) sample (compose_extreme).
 constexpr RayAcc blend_extreme(const RayAcc& acc, const ShadedSample& s, bool maximum,
                                const Precision& p) {
-  return compose_extreme(acc, sample_pixel(s, p), maximum);
+  // compose_extreme(acc, sample_pixel(s, p), maximum), deciding first: most
+  // samples are not taken, and their premultiplied colour is not needed.
+  return extreme_takes_back(acc, s.visible, static_cast<uint16_t>(s.value), maximum) ? sample_pixel(s, p) : acc;
 }
 
 // A finished ray as a base-plane pixel: each channel scaled from the
@@ -91,7 +93,11 @@ constexpr Pixel pixel_of(const RayAcc& acc, const Precision& p) {
 
 // One sample into its ray: the composition node with the sample behind.
 constexpr RayAcc blend(BlendMode mode, const RayAcc& acc, const ShadedSample& s, const Precision& p) {
-  return compose(mode, acc, sample_pixel(s, p), p);
+  switch (mode) {  // compose(mode, acc, sample_pixel(s, p), p)
+    case BlendMode::Mip: return blend_extreme(acc, s, true, p);
+    case BlendMode::MinIp: return blend_extreme(acc, s, false, p);
+    default: return blend_front_to_back(acc, s, p);
+  }
 }
 
 }  // namespace cube4::golden
