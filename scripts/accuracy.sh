@@ -7,6 +7,7 @@
 #   scripts/accuracy.sh [frames]     (default 10)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+. "$here/scripts/idiff_figures.sh"
 "$here/scripts/setup.sh" >/dev/null
 frames=${1:-10}
 cube4=$here/build/tb/cube4
@@ -28,11 +29,7 @@ for scene in default sphere; do
     for model in fixed float; do
       echo "accuracy: $scene $model S=$S..." >&2
       "$cube4" render "$tmp/$scene-$S.json" -q --model $model -o "$tmp/$scene-$model-$S.exr"
-      # idiff exits non-zero when the images differ; only its figures matter here.
-      cmp=$(idiff -a "$tmp/$scene-$model-$S.exr" "$tmp/$scene-ref.exr" 2>&1 || true)
-      psnr=$(sed -n 's/.*Peak SNR = \([0-9.inf]*\).*/\1/p' <<<"$cmp" | head -1)
-      mean=$(sed -n 's/.*Mean error = \([0-9.e+-]*\).*/\1/p' <<<"$cmp" | head -1)
-      max=$(sed -n 's/.*Max error  = \([0-9.e+-]*\).*/\1/p' <<<"$cmp" | head -1)
+      read -r psnr mean max <<<"$(idiff_figures "$tmp/$scene-$model-$S.exr" "$tmp/$scene-ref.exr")"
       ms=$("${pin[@]}" "$bench" "$tmp/$scene-$S.json" --model $model --frames "$frames" --warmup 1 |
            python3 -c "import json,sys; print('%.2f' % json.load(sys.stdin)['ms']['median'])")
       echo "$scene $model $S $ms $psnr $mean $max" >> "$results"

@@ -9,6 +9,7 @@
 #   scripts/accuracy_xy.sh [repeats]     (default 3)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+. "$here/scripts/idiff_figures.sh"
 "$here/scripts/setup.sh" >/dev/null
 repeats=${1:-3}
 cube4=$here/build/tb/cube4
@@ -28,11 +29,7 @@ for scene in default sphere; do
     "$cube4" render "$tmp/$scene-$n.json" -q --model fixed --repeat "$repeats" -o "$tmp/$scene-$n.exr" \
       --report "$tmp/$scene-$n-fixed.json"
     "$cube4" render "$tmp/$scene-$n.json" -q --model tlm -o "$tmp/$scene-$n-tlm.exr" --report "$tmp/$scene-$n-tlm.json"
-    # idiff exits non-zero when the images differ; only its figures matter here.
-    cmp=$(idiff -a "$tmp/$scene-$n.exr" "$tmp/$scene-ref.exr" 2>&1 || true)
-    psnr=$(sed -n 's/.*Peak SNR = \([0-9.inf]*\).*/\1/p' <<<"$cmp" | head -1)
-    mean=$(sed -n 's/.*Mean error = \([0-9.e+-]*\).*/\1/p' <<<"$cmp" | head -1)
-    max=$(sed -n 's/.*Max error  = \([0-9.e+-]*\).*/\1/p' <<<"$cmp" | head -1)
+    read -r psnr mean max <<<"$(idiff_figures "$tmp/$scene-$n.exr" "$tmp/$scene-ref.exr")"
     python3 - "$tmp/$scene-$n-fixed.json" "$tmp/$scene-$n-tlm.json" "$scene $n $psnr $mean $max" >> "$results" <<'PY'
 import json, sys
 fixed, tlm = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))

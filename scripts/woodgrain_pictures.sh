@@ -10,6 +10,7 @@
 #   scripts/woodgrain_pictures.sh
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+. "$here/scripts/idiff_figures.sh"
 "$here/scripts/setup.sh" >/dev/null
 cube4=$here/build/tb/cube4
 out=$here/docs/images
@@ -28,9 +29,10 @@ json.dump(s, open(sys.argv[4], "w"))
 PY
   echo "$tmp/$1.json"
 }
-err() {  # idiff's PSNR, mean and max error of $1 against $2
-  { idiff -a "$1" "$2" 2>/dev/null || true; } |
-    awk '/Peak SNR/ {p=$4} /Mean error/ {m=$4} /Max error/ {x=$4} END {printf "%s | %s | %s", p, m, x}'
+err() {  # "PSNR | mean | max" of $1 against $2
+  local psnr mean max
+  read -r psnr mean max <<<"$(idiff_figures "$1" "$2")"
+  echo "$psnr | $mean | $max"
 }
 echo "woodgrain_pictures: reference..." >&2
 "$cube4" render "$(scene plain 1 1)" -q --model reference --reference-step 0.125 -o "$out/woodgrain-reference.png"

@@ -238,6 +238,32 @@ inline const SampleFrame& sample_frame(const std::string& name, const std::array
   });
 }
 
+// Four frames of different sizes, permutations and S, for streams of
+// frames back to back without a reset.
+inline std::vector<const SampleFrame*> back_to_back_frames(bool gradient) {
+  return {&sample_frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 21, gradient),
+          &sample_frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 22, gradient),
+          &sample_frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 1, 23, gradient),
+          &sample_frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24, gradient)};
+}
+
+// Frames whose slices fill the storage of the small rings to the last entry
+// (ny * ceil(nx/p) = SliceDepth, for p = 2, 5 and 1) and whose beams fill
+// the beam delay (ceil(nx/p) = BeamDepth); a frame that does not is a
+// failure of the test's own set-up.
+struct FullStorageFrames {
+  const SampleFrame *p2, *p5, *p1;
+};
+inline FullStorageFrames full_storage_frames(bool gradient) {
+  const FullStorageFrames f{&sample_frame("+z tilted", {16, 16, 3}, {0.2, 0.3, 1}, {0, 1, 0}, 2, 31, gradient),
+                            &sample_frame("-z tilted", {15, 12, 3}, {0.3, -0.2, -1}, {0, 1, 0}, 3, 32, gradient),
+                            &sample_frame("+z tilted", {24, 24, 2}, {0.45, 0.2, 1}, {0, 1, 0}, 2, 33, gradient)};
+  EXPECT_EQ((f.p2->nx + 1) / 2 * f.p2->ny, kRingP2.slice_depth());
+  EXPECT_EQ((f.p5->nx + 4) / 5 * f.p5->ny, kRingP5.slice_depth());
+  EXPECT_EQ(f.p1->nx * f.p1->ny, kRingP1.slice_depth());
+  return f;
+}
+
 // ===========================================================================
 // The voxel stream: what the system's stream former sends the interpolation
 // ring, frame after frame (pass order, flags and weights from FramePlan),

@@ -459,11 +459,7 @@ TEST(RtlGradientRing, P5MatchesGoldenGradients) {
 // direct, with and without stalls, every p.
 TEST(RtlGradientRing, BackToBackFrames) {
   Timer t("back-to-back frames");
-  const SampleFrame& a = frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 21);
-  const SampleFrame& b = frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 22);
-  const SampleFrame& c = frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 1, 23);
-  const SampleFrame& d = frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24);
-  const std::vector<const SampleFrame*> frames = {&a, &b, &c, &d};
+  const std::vector<const SampleFrame*> frames = back_to_back_frames(/*gradient=*/true);
   for (int mode = 0; mode < 4; ++mode) {
     StreamOptions opt;
     opt.chain = mode < 2;
@@ -481,12 +477,9 @@ TEST(RtlGradientRing, BackToBackFrames) {
 // tiny volumes (one beam, one partial beam, one slice).
 TEST(RtlGradientRing, FullStorageAndTinyVolumes) {
   Timer t("full storage, tiny volumes");
-  const SampleFrame& f2 = frame("+z tilted", {16, 16, 3}, {0.2, 0.3, 1}, {0, 1, 0}, 2, 31);
-  ASSERT_EQ((f2.nx + 1) / 2 * f2.ny, kRingP2.slice_depth());
-  const SampleFrame& f5 = frame("-z tilted", {15, 12, 3}, {0.3, -0.2, -1}, {0, 1, 0}, 3, 32);
-  ASSERT_EQ((f5.nx + 4) / 5 * f5.ny, kRingP5.slice_depth());
-  const SampleFrame& f1 = frame("+z tilted", {24, 24, 2}, {0.45, 0.2, 1}, {0, 1, 0}, 2, 33);
-  ASSERT_EQ(f1.nx * f1.ny, kRingP1.slice_depth());
+  const FullStorageFrames full = full_storage_frames(/*gradient=*/true);
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  const SampleFrame &f2 = *full.p2, &f5 = *full.p5, &f1 = *full.p1;
   for (int mode = 0; mode < 3; ++mode) {
     StreamOptions opt;
     opt.chain = mode < 2;

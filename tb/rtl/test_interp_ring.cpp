@@ -261,11 +261,7 @@ TEST(RtlInterpRing, P5MatchesGoldenSamples) { ring_matrix<Vcube4_interp_ring_p5>
 // every pass's zero beam), with stalls.
 TEST(RtlInterpRing, BackToBackFrames) {
   Timer t("back-to-back frames");
-  const SampleFrame& a = frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 21);
-  const SampleFrame& b = frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 22);
-  const SampleFrame& c = frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 1, 23);
-  const SampleFrame& d = frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24);
-  const std::vector<const SampleFrame*> frames = {&a, &b, &c, &d};
+  const std::vector<const SampleFrame*> frames = back_to_back_frames(/*gradient=*/false);
   for (double stall : {0.0, 0.25}) {
     VoxelStreamOptions opt;
     opt.stall = stall;
@@ -280,12 +276,9 @@ TEST(RtlInterpRing, BackToBackFrames) {
 // SliceDepth) and beams that fill the beam delay (ceil(nx/p) = BeamDepth).
 TEST(RtlInterpRing, FullStorage) {
   Timer t("full storage");
-  const SampleFrame& f2 = frame("+z tilted", {16, 16, 3}, {0.2, 0.3, 1}, {0, 1, 0}, 2, 31);
-  ASSERT_EQ((f2.nx + 1) / 2 * f2.ny, kRingP2.slice_depth());
-  const SampleFrame& f5 = frame("-z tilted", {15, 12, 3}, {0.3, -0.2, -1}, {0, 1, 0}, 3, 32);
-  ASSERT_EQ((f5.nx + 4) / 5 * f5.ny, kRingP5.slice_depth());
-  const SampleFrame& f1 = frame("+z tilted", {24, 24, 2}, {0.45, 0.2, 1}, {0, 1, 0}, 2, 33);
-  ASSERT_EQ(f1.nx * f1.ny, kRingP1.slice_depth());
+  const FullStorageFrames full = full_storage_frames(/*gradient=*/false);
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  const SampleFrame &f2 = *full.p2, &f5 = *full.p5, &f1 = *full.p1;
   for (double stall : {0.0, 0.3}) {
     VoxelStreamOptions opt;
     opt.stall = stall;
