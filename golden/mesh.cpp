@@ -7,10 +7,19 @@
 #include <assimp/scene.h>
 #include <nlohmann/json.hpp>
 
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 #include <utility>
@@ -266,8 +275,30 @@ Mesh make_shape(const MeshSpec& spec) {
   return m;
 }
 
-Mesh read_mesh_file(const std::string& path) {
-  require_regular_file(path, "the mesh");
+namespace {
+// assimp 5.2's PLY reader never returns on a header that lacks its
+// end_header line (it seeks and reads on at the end of the file; found by
+// tb/fuzz/fuzz_mesh). assimp picks the PLY reader by the "ply" magic
+// whatever the file's extension, so every file that starts with it must
+// show the line within the first 64 KiB (real headers are a few hundred
+// bytes) before assimp sees it.
+void check_ply_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(64 * 1024, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  if (head.rfind("ply", 0) != 0) return;
+  for (size_t at = head.find("end_header"); at != std::string::npos; at = head.find("end_header", at + 1)) {
+    const size_t end = at + 10;
+    const bool line_start = at > 0 && head[at - 1] == '\n';
+    const bool line_end = end < head.size() && (head[end] == '\n' || head[end] == '\r');
+    if (line_start && line_end) return;
+  }
+  throw InputError(path + ": a PLY header without its end_header line in the first 64 KiB");
+}
+
+// The file through assimp, in this process.
+Mesh read_with_assimp(const std::string& path) {
   Assimp::Importer importer;
   // Triangulate: polygons become triangles (points and lines stay, and are
   // skipped). JoinIdenticalVertices: shared corners become one vertex. Neither
@@ -291,6 +322,131 @@ Mesh read_mesh_file(const std::string& path) {
     throw InputError(path + ": only degenerate triangles (all " + std::to_string(m.dropped_degenerate) +
                      " have zero area)");
   return m;
+}
+
+// assimp 5.2 aborts on some malformed files (an assertion in its
+// post-processing, found by tb/fuzz/fuzz_mesh) and may not return on
+// others, so it reads in a child process: a crash or a hang there is an
+// InputError here, never the end of cube4. The child sends the mesh, or its
+// InputError's message, through a pipe.
+class Pipe {
+ public:
+  explicit Pipe(int fd) : fd_(fd) {}
+  ~Pipe() { ::close(fd_); }
+  bool put(const void* data, size_t n) {
+    for (const char* p = static_cast<const char*>(data); n > 0;) {
+      const ssize_t w = ::write(fd_, p, n);
+      if (w <= 0) return false;
+      p += w;
+      n -= static_cast<size_t>(w);
+    }
+    return true;
+  }
+  // Everything until end of file, or false once `deadline` has passed.
+  bool take_all(std::string& out, std::chrono::steady_clock::time_point deadline) {
+    char buf[1 << 16];
+    for (;;) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      if (left.count() <= 0) return false;
+      pollfd pfd{fd_, POLLIN, 0};
+      const int r = ::poll(&pfd, 1, static_cast<int>(std::min<int64_t>(left.count(), 1000)));
+      if (r < 0 && errno != EINTR) return false;
+      if (r <= 0) continue;
+      const ssize_t n = ::read(fd_, buf, sizeof buf);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return true;
+      out.append(buf, static_cast<size_t>(n));
+    }
+  }
+
+ private:
+  int fd_;
+};
+
+template <class T>
+bool put_vector(Pipe& p, const std::vector<T>& v) {
+  const uint64_t n = v.size();
+  return p.put(&n, sizeof n) && p.put(v.data(), n * sizeof(T));
+}
+template <class T>
+bool get_vector(const std::string& in, size_t& at, std::vector<T>& v) {
+  uint64_t n = 0;
+  if (in.size() - at < sizeof n) return false;
+  std::memcpy(&n, in.data() + at, sizeof n);
+  at += sizeof n;
+  if (n > (in.size() - at) / sizeof(T)) return false;
+  v.resize(static_cast<size_t>(n));
+  std::memcpy(v.data(), in.data() + at, static_cast<size_t>(n) * sizeof(T));
+  at += static_cast<size_t>(n) * sizeof(T);
+  return true;
+}
+
+Mesh read_in_child(const std::string& path, int seconds) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw InputError(path + ": cannot start the mesh reader (pipe: " + std::strerror(errno) + ")");
+  std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw InputError(path + ": cannot start the mesh reader (fork: " + std::strerror(errno) + ")");
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    Pipe out(fds[1]);
+    bool ok = true;
+    try {
+      const Mesh m = read_with_assimp(path);
+      const char tag = 'M';
+      const uint64_t dropped = m.dropped_degenerate;
+      ok = out.put(&tag, 1) && out.put(&dropped, sizeof dropped) && put_vector(out, m.vertices) &&
+           put_vector(out, m.triangles);
+    } catch (const InputError& e) {
+      const std::string msg = e.what();
+      const char tag = 'E';
+      ok = out.put(&tag, 1) && out.put(msg.data(), msg.size());
+    } catch (...) {
+      ok = false;
+    }
+    ::_exit(ok ? 0 : 1);  // no destructors, no atexit handlers of the parent's state
+  }
+  ::close(fds[1]);
+  std::string in;
+  bool finished;
+  {
+    Pipe from(fds[0]);
+    finished = from.take_all(in, std::chrono::steady_clock::now() + std::chrono::seconds(seconds));
+  }
+  if (!finished) ::kill(pid, SIGKILL);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!finished)
+    throw InputError(path + ": assimp did not finish reading it in " + std::to_string(seconds) +
+                     " s (a malformed file?)");
+  if (WIFSIGNALED(status))
+    throw InputError(path + ": assimp crashed reading it (signal " + std::to_string(WTERMSIG(status)) +
+                     "): a malformed or unsupported file");
+  if (!in.empty() && in[0] == 'E') throw InputError(in.substr(1));
+  Mesh m;
+  m.source = path;
+  size_t at = 1;
+  uint64_t dropped = 0;
+  const bool complete = !in.empty() && in[0] == 'M' && in.size() >= 1 + sizeof dropped &&
+                        (std::memcpy(&dropped, in.data() + 1, sizeof dropped), at += sizeof dropped, true) &&
+                        get_vector(in, at, m.vertices) && get_vector(in, at, m.triangles) && at == in.size();
+  if (!complete || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw InputError(path + ": the mesh reader failed (exit status " + std::to_string(status) + ")");
+  m.dropped_degenerate = static_cast<size_t>(dropped);
+  return m;
+}
+
+}  // namespace
+
+Mesh read_mesh_file(const std::string& path, int seconds) {
+  require_regular_file(path, "the mesh");
+  check_ply_header(path);
+  return read_in_child(path, seconds);
 }
 
 Mesh load_mesh(const MeshSpec& spec, const std::string& scene_file, const std::string& scene_dir) {

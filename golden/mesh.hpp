@@ -34,7 +34,10 @@ Mesh make_shape(const MeshSpec& spec);
 // Reads the file's triangles through assimp, in file coordinates (assimp
 // reads them in single precision), and drops the degenerate ones.
 // Throws InputError "<path>: <fault>".
-Mesh read_mesh_file(const std::string& path);
+// assimp reads in a child process (fork): a crash or a read that takes
+// longer than `seconds` there is an InputError naming the file, here.
+constexpr int kMeshReadSeconds = 300;  // far beyond any real file's read
+Mesh read_mesh_file(const std::string& path, int seconds = kMeshReadSeconds);
 
 // Loads or generates the mesh, transforms it, drops degenerate triangles and
 // checks what is left. Errors are InputErrors naming the scene file, the key

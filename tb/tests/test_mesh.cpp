@@ -585,6 +585,26 @@ TEST(MeshErrors, UnreadableFilesCarryAssimpsMessage) {
                     {"assimp cannot read it", "ply"});
 }
 
+// A PLY header without end_header made assimp 5.2 read forever (found by
+// fuzz_mesh): it is refused before assimp sees it, under any extension.
+TEST(MeshErrors, PlyHeaderWithoutEndHeaderIsRefusedNotHung) {
+  const std::string truncated =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty _header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  expect_file_error("hang.ply", truncated, {"a PLY header without its end_header line"});
+  expect_file_error("hang.obj", truncated, {"a PLY header without its end_header line"});
+  expect_file_error("split.ply", "ply\nformat ascii 1.0\nelement vertex 3\nxend_header\n",
+                    {"a PLY header without its end_header line"});
+}
+
+// A PLY file that makes assimp 5.2 abort in its triangulation (found by
+// fuzz_mesh): the reader runs in a child process, so cube4 reports it.
+TEST(MeshErrors, ACrashInAssimpIsAnErrorNotTheEnd) {
+  expect_file_error("crash.ply",
+                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nprsperty float y\nproperty float z\n"
+                    "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0ist uchar int vertex_i\n",
+                    {"assimp crashed reading it (signal 6)", "a malformed or unsupported file"});
+}
+
 TEST(MeshErrors, NoTriangles) {
   expect_file_error("lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2\nl 2 3\n", {"no triangles (3 vertices and 2 points or lines)"});
   expect_file_error("empty.stl", "solid t\nendsolid t\n", {"no triangles"});
