@@ -35,7 +35,10 @@ Mesh make_shape(const MeshSpec& spec);
 // reads them in single precision), and drops the degenerate ones.
 // Throws InputError "<path>: <fault>".
 // assimp reads in a child process (fork): a crash or a read that takes
-// longer than `seconds` there is an InputError naming the file, here.
+// longer than `seconds` there is an InputError naming the file, here. A
+// program of several threads should load its meshes before it starts the
+// others (as cube4 does): the child must not inherit a lock another thread
+// holds.
 constexpr int kMeshReadSeconds = 300;  // far beyond any real file's read
 Mesh read_mesh_file(const std::string& path, int seconds = kMeshReadSeconds);
 
