@@ -11,6 +11,7 @@
 #include "golden/units/composite_crop.hpp"
 #include "golden/units/shade_cube_map.hpp"
 #include "golden/units/composite_cut_plane.hpp"
+#include "golden/units/composite_window.hpp"
 #include "golden/units/dda.hpp"
 #include "golden/units/gradient.hpp"
 #include "golden/units/shade_magnitude.hpp"
@@ -102,10 +103,12 @@ inline ShadedSample shade_classified(const Registers& r, uint32_t centre, const 
   return out;
 }
 
-// Cropping and the cut plane of the shaded sample at (x, y) of slice c.k:
-// the compositing unit's first steps (rtl/cube4_composite.sv).
+// Cropping, the block window and the cut plane of the shaded sample at
+// (x, y) of slice c.k: the compositing unit's first steps
+// (rtl/cube4_composite.sv).
 inline ShadedSample crop_and_cut(const Registers& r, const SliceControl& c, int x, int y, ShadedSample s) {
   if (r.crop_enabled) s.visible = crop_visible(x, y, c.z_voxel, r.crop);
+  if (r.window_enabled && !window_inside(x, y, c.z_voxel, r.window)) s.visible = false;
   if (r.cut_enabled) {
     const int w = r.p.weight_bits;
     const int64_t d = cut_distance(r.cut, (int64_t{x} << w) + c.wx, (int64_t{y} << w) + c.wy,

@@ -11,6 +11,7 @@
 #include "golden/units/composite.hpp"
 #include "golden/units/composite_crop.hpp"
 #include "golden/units/composite_cut_plane.hpp"
+#include "golden/units/composite_window.hpp"
 #include "golden/units/dda.hpp"
 #include "golden/units/shade_phong.hpp"
 #include "golden/units/shade_reflection.hpp"
@@ -41,6 +42,9 @@ struct Registers {
   CropRegs crop;
   bool cut_enabled = false;
   CutRegs cut;
+  // Set only for a block of a partitioned volume (golden/blocks.hpp).
+  bool window_enabled = false;
+  WindowRegs window;
 
   int sample_slices() const { return dim[2] * supersampling; }
   SliceOffset x_offset(int k) const {

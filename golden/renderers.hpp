@@ -28,6 +28,11 @@ struct BasePlane {
   int bits = 12;                 // channel width (alpha_bits)
   std::vector<uint16_t> rgba;    // premultiplied
   double shift_x = 0, shift_y = 0;
+  // Each ray's accumulator, row by row, when asked for (FixedOptions::
+  // accumulators; the system model's pixel memory keeps them too): the
+  // partial image a block of a partitioned volume hands to the composition
+  // network, which composes in the accumulator domain (golden/blocks.hpp).
+  std::vector<RayAcc> acc;
   ImageF to_float() const;
 };
 
@@ -66,6 +71,8 @@ struct FixedOptions {
   // for many frames) or building them for the frame.
   bool skip_empty = true;
   const BlockRanges* ranges = nullptr;
+  // Keep every ray's accumulator in BasePlane::acc.
+  bool accumulators = false;
 };
 
 BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);

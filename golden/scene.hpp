@@ -138,6 +138,9 @@ struct Scene {
   Cropping cropping;
   CutPlane cut;
   int pipelines = 4;
+  // Sub-cubes (golden/blocks.hpp): blocks along object x, y, z, each
+  // rendered by a machine of its own, merged by the composition network.
+  std::array<int, 3> blocks{1, 1, 1};
   double clock_mhz = 125;
   Precision precision;
   std::vector<MeshSpec> polygons;   // docs/scene.md, "polygons"; not rendered yet

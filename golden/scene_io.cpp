@@ -820,6 +820,7 @@ Scene parse_scene(const std::string& json_text, const std::string& file_name) {
   if (auto n = r.get("cropping")) read_cropping(*n, s.cropping);
   if (auto n = r.get("cut_plane")) read_cut_plane(*n, s.cut);
   if (auto n = r.get("pipelines")) s.pipelines = n->int_in(1, 256);
+  if (auto n = r.get("blocks")) s.blocks = n->int3(1, 4096);
   if (auto n = r.get("clock_mhz")) {
     s.clock_mhz = n->number();
     if (s.clock_mhz <= 0 || s.clock_mhz > 10000) n->fail("is out of range (0, 10000]");

@@ -146,7 +146,9 @@ class SliceCompositor {
  private:
   void leave(const SliceControl& c, int x, int y) {
     const int u = x - c.ix + ix_last_, v = y - c.iy + iy_last_;
-    write_pixel(bp_, u, v, pixel_of(rays_[static_cast<size_t>(v) * width_ + u], r_.p));
+    const RayAcc& ray = rays_[static_cast<size_t>(v) * width_ + u];
+    write_pixel(bp_, u, v, pixel_of(ray, r_.p));
+    if (!bp_.acc.empty()) bp_.acc[static_cast<size_t>(v) * width_ + u] = ray;
   }
   const Registers& r_;
   BasePlane& bp_;

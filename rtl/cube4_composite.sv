@@ -1,8 +1,10 @@
 // cube4_composite: the compositing unit's datapath (VolumePro §3.6, §4.3):
-// cropping, the cut plane and the blend of one shaded sample into its ray's
-// accumulator. Bit-exact with the composition in golden shade_sample()
-// (golden/pipeline.hpp) and golden blend() (golden/units/composite.hpp):
+// cropping, the block window, the cut plane and the blend of one shaded
+// sample into its ray's accumulator. Bit-exact with the composition in
+// golden shade_sample() (golden/pipeline.hpp) and golden blend()
+// (golden/units/composite.hpp):
 //   visible = crop_enabled ? crop_visible(x, y, z, crop) : 1
+//   visible &= !window_enabled || window_inside(x, y, z, window)
 //   if cut_enabled:
 //     d       = cut_distance(cut, (x << W) + wx, (y << W) + wy, (z << W) + wz)
 //     f       = cut_factor(d, cut)
@@ -22,7 +24,8 @@
 // appears one cycle later, so the accumulator -> result loop has a latency
 // of 1 cycle (what bounds back-to-back samples of one ray), while the
 // sample -> result latency is Latency = 7 cycles:
-//   1: crop compares, the three products of d       2: d = sum, saturated
+//   1: crop and window compares, the three products of d
+//                                                   2: d = sum, saturated
 //   3: outside distance and comparisons             4: ramp (the wide product)
 //   5: cut factor and cut_alpha                     6: premultiplied colour
 //   7: blend with acc_*_i (driven in cycle 6): cube4_compose_node, Latency 1
@@ -33,7 +36,7 @@
 // only while no sample is in flight.
 //
 // Register widths (golden holds them in int32/int64; the RTL domain):
-//   x, y, z, crop slabs: unsigned PosBits; wx, wy, wz: WeightBits;
+//   x, y, z, crop slabs, window bounds: unsigned PosBits; wx, wy, wz: WeightBits;
 //   cut a, b, c: signed CutCoefBits (host: |a| <= 2^10);
 //   dmin, dmax: signed CutBits; falloff: unsigned CutBits;
 //   inv_falloff: unsigned AlphaBits + CutInvShift (host: <= (2^A-1) * 2^24).
@@ -72,6 +75,15 @@ module cube4_composite #(
   input  logic [PosBits-1:0]                   crop_z_lo_i,
   input  logic [PosBits-1:0]                   crop_z_hi_i,
   input  logic [7:0]                           crop_mask_i,
+  // Frame registers: the block window (WindowRegs; golden/blocks.hpp): the
+  // samples of a partitioned volume's block that the block composites.
+  input  logic                                 window_enabled_i,
+  input  logic [PosBits-1:0]                   window_x_lo_i,
+  input  logic [PosBits-1:0]                   window_x_hi_i,
+  input  logic [PosBits-1:0]                   window_y_lo_i,
+  input  logic [PosBits-1:0]                   window_y_hi_i,
+  input  logic [PosBits-1:0]                   window_z_lo_i,
+  input  logic [PosBits-1:0]                   window_z_hi_i,
   // Frame registers: cut plane (CutRegs).
   input  logic                                 cut_enabled_i,
   input  logic signed [CutCoefBits-1:0]        cut_a_i,
@@ -140,6 +152,13 @@ module cube4_composite #(
   assign in_z = (crop_z_lo_i <= z_i) && (z_i <= crop_z_hi_i);
   assign crop_visible = !crop_enabled_i || crop_mask_i[{in_z, in_y, in_x}];
 
+  // The block window: its own six compares, ANDed after the crop table
+  // (which a window cannot be folded into: golden composite_window.hpp).
+  logic in_window;
+  assign in_window = (window_x_lo_i <= x_i) && (x_i <= window_x_hi_i) &&
+                     (window_y_lo_i <= y_i) && (y_i <= window_y_hi_i) &&
+                     (window_z_lo_i <= z_i) && (z_i <= window_z_hi_i);
+
   logic [3:0]                 visible1_q;  // crop visibility, stages 1..4
   // Colour (stages 1..5), alpha (1..4) and value (1..6) delay lines,
   // stage k at [(k-1)*Width +: Width].
@@ -148,7 +167,7 @@ module cube4_composite #(
   logic [6*VoxelBits-1:0]     value_q;
 
   always_ff @(posedge clk_i) begin : stage1_regs
-    visible1_q[0] <= crop_visible;
+    visible1_q[0] <= crop_visible && (!window_enabled_i || in_window);
     rgb_q[0 +: 3*A]           <= {red_i, green_i, blue_i};
     alpha_q[0 +: A]           <= alpha_i;
     value_q[0 +: VoxelBits]   <= value_i;

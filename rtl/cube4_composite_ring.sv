@@ -10,7 +10,9 @@
 // slice tags, position) is common and fans out to every pipeline, where it
 // travels with the data; x_i is the x of pipeline 0 (j*p), pipeline k's is
 // x_i + k. Each pipeline has its own sample inputs and its own pixel port
-// (all pipelines run in lock step). Stream format, latency (pixel 7 cycles
+// (all pipelines run in lock step), with the finished ray both rounded to
+// a base-plane pixel and as its accumulator (a partial image for the
+// composition network). Stream format, latency (pixel 7 cycles
 // after its sample), storage order and preconditions: see
 // cube4_composite_unit and docs/rtl-composite.md. nx not a multiple of p:
 // the stream pads the last partial beam with samples of any value (columns
@@ -56,6 +58,13 @@ module cube4_composite_ring #(
   input  logic [PosBits-1:0]               crop_z_lo_i,
   input  logic [PosBits-1:0]               crop_z_hi_i,
   input  logic [7:0]                       crop_mask_i,
+  input  logic                             window_enabled_i,
+  input  logic [PosBits-1:0]               window_x_lo_i,
+  input  logic [PosBits-1:0]               window_x_hi_i,
+  input  logic [PosBits-1:0]               window_y_lo_i,
+  input  logic [PosBits-1:0]               window_y_hi_i,
+  input  logic [PosBits-1:0]               window_z_lo_i,
+  input  logic [PosBits-1:0]               window_z_hi_i,
   input  logic                             cut_enabled_i,
   input  logic signed [CutCoefBits-1:0]    cut_a_i,
   input  logic signed [CutCoefBits-1:0]    cut_b_i,
@@ -101,10 +110,18 @@ module cube4_composite_ring #(
   output logic [NumPipes*AlphaBits-1:0]    pixel_red_o,
   output logic [NumPipes*AlphaBits-1:0]    pixel_green_o,
   output logic [NumPipes*AlphaBits-1:0]    pixel_blue_o,
-  output logic [NumPipes*AlphaBits-1:0]    pixel_alpha_o
+  output logic [NumPipes*AlphaBits-1:0]    pixel_alpha_o,
+  // The same rays' accumulators (golden RayAcc): partial images.
+  output logic [NumPipes*(AlphaBits+AccGuardBits)-1:0] pixel_acc_red_o,
+  output logic [NumPipes*(AlphaBits+AccGuardBits)-1:0] pixel_acc_green_o,
+  output logic [NumPipes*(AlphaBits+AccGuardBits)-1:0] pixel_acc_blue_o,
+  output logic [NumPipes*(AlphaBits+AccGuardBits)-1:0] pixel_acc_alpha_o,
+  output logic [NumPipes*VoxelBits-1:0]    pixel_value_o,
+  output logic [NumPipes-1:0]              pixel_selected_o
 );
 
   localparam int unsigned A        = AlphaBits;
+  localparam int unsigned AB       = AlphaBits + AccGuardBits;
   localparam int unsigned LinkBits = 4 * (AlphaBits + AccGuardBits) + VoxelBits + 1;
 
   // Links as a packed vector (yosys 0.23: no unpacked wire arrays).
@@ -140,6 +157,13 @@ module cube4_composite_ring #(
       .crop_z_lo_i      (crop_z_lo_i),
       .crop_z_hi_i      (crop_z_hi_i),
       .crop_mask_i      (crop_mask_i),
+      .window_enabled_i (window_enabled_i),
+      .window_x_lo_i    (window_x_lo_i),
+      .window_x_hi_i    (window_x_hi_i),
+      .window_y_lo_i    (window_y_lo_i),
+      .window_y_hi_i    (window_y_hi_i),
+      .window_z_lo_i    (window_z_lo_i),
+      .window_z_hi_i    (window_z_hi_i),
       .cut_enabled_i    (cut_enabled_i),
       .cut_a_i          (cut_a_i),
       .cut_b_i          (cut_b_i),
@@ -184,7 +208,13 @@ module cube4_composite_ring #(
       .pixel_red_o      (pixel_red_o[k*A +: A]),
       .pixel_green_o    (pixel_green_o[k*A +: A]),
       .pixel_blue_o     (pixel_blue_o[k*A +: A]),
-      .pixel_alpha_o    (pixel_alpha_o[k*A +: A])
+      .pixel_alpha_o    (pixel_alpha_o[k*A +: A]),
+      .pixel_acc_red_o  (pixel_acc_red_o[k*AB +: AB]),
+      .pixel_acc_green_o(pixel_acc_green_o[k*AB +: AB]),
+      .pixel_acc_blue_o (pixel_acc_blue_o[k*AB +: AB]),
+      .pixel_acc_alpha_o(pixel_acc_alpha_o[k*AB +: AB]),
+      .pixel_value_o    (pixel_value_o[k*VoxelBits +: VoxelBits]),
+      .pixel_selected_o (pixel_selected_o[k])
     );
   end
 

@@ -61,8 +61,14 @@
 //                                 frames without a gap
 //   red_i, green_i, blue_i, alpha_i, value_i: the shaded sample before
 //                                 cropping and the cut plane (not premultiplied)
-// The frame registers of cube4_composite (blend mode, crop, cut) may change
+// The frame registers of cube4_composite (blend mode, crop, window, cut) may change
 // only while no sample is in flight (Latency cycles after the last input).
+//
+// The pixel port carries each finished ray twice: rounded to AlphaBits
+// (pixel_red_o .. pixel_alpha_o, golden pixel_of(), the base plane) and as
+// its accumulator (pixel_acc_*_o, pixel_value_o, pixel_selected_o: golden
+// RayAcc), the partial image a block of a partitioned volume hands to the
+// composition network (golden/blocks.hpp), which composes before rounding.
 //
 // Latency: a sample's pixel (if its ray ends there) appears on pixel_*_o
 // Latency = 7 cycles after it enters (cube4_composite's latency); the ray
@@ -113,6 +119,13 @@ module cube4_composite_unit #(
   input  logic [PosBits-1:0]               crop_z_lo_i,
   input  logic [PosBits-1:0]               crop_z_hi_i,
   input  logic [7:0]                       crop_mask_i,
+  input  logic                             window_enabled_i,
+  input  logic [PosBits-1:0]               window_x_lo_i,
+  input  logic [PosBits-1:0]               window_x_hi_i,
+  input  logic [PosBits-1:0]               window_y_lo_i,
+  input  logic [PosBits-1:0]               window_y_hi_i,
+  input  logic [PosBits-1:0]               window_z_lo_i,
+  input  logic [PosBits-1:0]               window_z_hi_i,
   input  logic                             cut_enabled_i,
   input  logic signed [CutCoefBits-1:0]    cut_a_i,
   input  logic signed [CutCoefBits-1:0]    cut_b_i,
@@ -162,7 +175,13 @@ module cube4_composite_unit #(
   output logic [AlphaBits-1:0]             pixel_red_o,
   output logic [AlphaBits-1:0]             pixel_green_o,
   output logic [AlphaBits-1:0]             pixel_blue_o,
-  output logic [AlphaBits-1:0]             pixel_alpha_o
+  output logic [AlphaBits-1:0]             pixel_alpha_o,
+  output logic [AlphaBits+AccGuardBits-1:0] pixel_acc_red_o,
+  output logic [AlphaBits+AccGuardBits-1:0] pixel_acc_green_o,
+  output logic [AlphaBits+AccGuardBits-1:0] pixel_acc_blue_o,
+  output logic [AlphaBits+AccGuardBits-1:0] pixel_acc_alpha_o,
+  output logic [VoxelBits-1:0]             pixel_value_o,
+  output logic                             pixel_selected_o
 );
 
   localparam int unsigned A              = AlphaBits;
@@ -247,6 +266,13 @@ module cube4_composite_unit #(
     .crop_z_lo_i      (crop_z_lo_i),
     .crop_z_hi_i      (crop_z_hi_i),
     .crop_mask_i      (crop_mask_i),
+    .window_enabled_i (window_enabled_i),
+    .window_x_lo_i    (window_x_lo_i),
+    .window_x_hi_i    (window_x_hi_i),
+    .window_y_lo_i    (window_y_lo_i),
+    .window_y_hi_i    (window_y_hi_i),
+    .window_z_lo_i    (window_z_lo_i),
+    .window_z_hi_i    (window_z_hi_i),
     .cut_enabled_i    (cut_enabled_i),
     .cut_a_i          (cut_a_i),
     .cut_b_i          (cut_b_i),
@@ -389,15 +415,11 @@ module cube4_composite_unit #(
 
   // -------------------------------------------------------------------------
   // Pixel port: the finished rays from the compositing datapath, scaled
-  // from the accumulator domain to AlphaBits (golden acc_to_pixel():
-  // (v - (v >> A) + half) >> G, full -> full, so it needs no saturation).
-  // v - (v >> A) + half stays below 2^AB, and its top AB - G bits below 2^A.
-  localparam logic [AB-1:0] PixelHalf = (G > 0) ? (AB'(1) << (G - 1)) : '0;
-  function automatic logic [A-1:0] to_pixel(input logic [AB-1:0] v);
-    logic [AB-1:0] scaled;
-    scaled   = v - (v >> A) + PixelHalf;
-    to_pixel = A'(scaled >> G);
-  endfunction
+  // from the accumulator domain to AlphaBits, and as they are.
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_red   (.acc_i(res_red),   .pixel_o(pixel_red_o));
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_green (.acc_i(res_green), .pixel_o(pixel_green_o));
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_blue  (.acc_i(res_blue),  .pixel_o(pixel_blue_o));
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_alpha (.acc_i(res_alpha), .pixel_o(pixel_alpha_o));
 
   logic               exit_o;
   logic [PosBits-1:0] u_o, v_o;
@@ -406,9 +428,11 @@ module cube4_composite_unit #(
   assign pixel_valid_o = result_valid && exit_o;
   assign pixel_u_o     = u_o;
   assign pixel_v_o     = v_o;
-  assign pixel_red_o   = to_pixel(res_red);
-  assign pixel_green_o = to_pixel(res_green);
-  assign pixel_blue_o  = to_pixel(res_blue);
-  assign pixel_alpha_o = to_pixel(res_alpha);
+  assign pixel_acc_red_o   = res_red;
+  assign pixel_acc_green_o = res_green;
+  assign pixel_acc_blue_o  = res_blue;
+  assign pixel_acc_alpha_o = res_alpha;
+  assign pixel_value_o     = res_value;
+  assign pixel_selected_o  = res_selected;
 
 endmodule

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "golden/blocks.hpp"
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
 #include "golden/input_file.hpp"
@@ -21,11 +22,13 @@
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "tb/block_jobs.hpp"
 #include "tb/image_io.hpp"
 #include "tb/output_files.hpp"
 #include "tb/progress.hpp"
 #include "tb/regress.hpp"
 #include "tb/report.hpp"
+#include "systemc/core/partitioned.hpp"
 #include "systemc/core/system.hpp"
 #include "systemc/host/host_program.hpp"
 #include "systemc/host/register_map.hpp"
@@ -54,7 +57,29 @@ struct RenderArgs {
   uint64_t max_memory_mib = 0;  // 0: golden::kDefaultMemoryLimit
   std::optional<uint32_t> seed;        // default: CUBE4_SEED, else 1
   int threads = 0;              // golden renders (fixed, and --check's): 0 = one per core
+  std::string blocks;           // --blocks AxBxC (default: the scene's "blocks")
+  std::string plan;             // --plan PLAN.json: the scene and blocks of a plan (cube4 plan)
+  int block = -1;               // --block I: render only block I of the plan ...
+  std::string partial;          // ... into this partial image file
 };
+
+// Blocks along object x, y, z: --blocks AxBxC, else the scene's "blocks".
+std::array<int, 3> block_counts(const RenderArgs& a, const golden::Scene& scene) {
+  if (a.blocks.empty()) return scene.blocks;
+  std::array<int, 3> c{};
+  char x1 = 0, x2 = 0, rest = 0;
+  if (std::sscanf(a.blocks.c_str(), "%d%c%d%c%d%c", &c[0], &x1, &c[1], &x2, &c[2], &rest) != 5 || x1 != 'x' ||
+      x2 != 'x')
+    throw InputError("--blocks " + a.blocks + ": give blocks along x, y and z as AxBxC, for example 2x2x1");
+  for (int v : c)
+    if (v < 1 || v > golden::kMaxBlocks)
+      throw InputError("--blocks " + a.blocks + ": each count must lie in 1.." + std::to_string(golden::kMaxBlocks));
+  return c;
+}
+bool partitioned(const std::array<int, 3>& c) { return c[0] * c[1] * c[2] > 1; }
+std::string blocks_what(const RenderArgs& a, const golden::Scene& scene) {
+  return a.blocks.empty() ? (scene.file.empty() ? "the default scene" : scene.file) + ": blocks" : "--blocks " + a.blocks;
+}
 
 // The RTL's random-reset seed: --seed, else the environment's CUBE4_SEED
 // (what the RTL unit tests read), else 1.
@@ -79,18 +104,31 @@ std::array<sysc::Level, sysc::kUnits> parse_levels(const std::string& model) {
   std::string name;
   int count = 0;
   while (std::getline(list, name, ',')) {
-    bool found = false;
+    bool found = name == "compose";  // the composition network's (network_level())
     for (int u = 0; u < sysc::kUnits; ++u)
       if (name == sysc::unit_name(static_cast<sysc::Unit>(u))) {
         l[static_cast<size_t>(u)] = sysc::Level::Rtl;
         found = true;
       }
     if (!found)
-      throw InputError("--model " + model + ": unknown unit '" + name + "' (units: interp, gradient, shade, composite, addr)");
+      throw InputError("--model " + model + ": unknown unit '" + name +
+                       "' (units: interp, gradient, shade, composite, addr, and compose: the composition network of --blocks)");
     ++count;
   }
   if (count == 0) throw InputError("--model " + model + ": name at least one unit after 'mixed:'");
   return l;
+}
+
+// The composition network of a partitioned render runs at RTL with
+// --model rtl or mixed:...,compose,...; else at TLM.
+sysc::Level network_level(const std::string& model) {
+  if (model == "rtl") return sysc::Level::Rtl;
+  if (model.rfind("mixed:", 0) != 0) return sysc::Level::Tlm;
+  std::stringstream list(model.substr(6));
+  std::string name;
+  while (std::getline(list, name, ','))
+    if (name == "compose") return sysc::Level::Rtl;
+  return sysc::Level::Tlm;
 }
 
 // First pixel where two base planes differ, as text (empty if equal).
@@ -148,7 +186,8 @@ nlohmann::json effects_json(const golden::EffectSet& e) { return e.names(); }
 // What a render holds besides the loaded volume, estimated before it starts
 // so that an 8192x8192 image or a large volume through the system model is
 // refused by name instead of ending in bad_alloc.
-void check_render_memory(const Loaded& l, const std::string& model, int golden_threads) {
+void check_render_memory(const Loaded& l, const std::string& model, int golden_threads,
+                         const golden::BlockPlan* plan = nullptr) {
   const double voxels = static_cast<double>(l.volume.size());
   const double base = static_cast<double>(l.host.regs.base_width()) * l.host.regs.base_height();
   const double slice = static_cast<double>(l.host.regs.dim[0]) * l.host.regs.dim[1];
@@ -161,8 +200,19 @@ void check_render_memory(const Loaded& l, const std::string& model, int golden_t
   // slices of 4-byte samples and voxels.
   const bool system = is_system_model(model);
   const bool fixed = model == "fixed" || system;
-  const double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20 +
-                       (fixed ? base * sizeof(golden::RayAcc) * (system ? 2 : 1) + golden_threads * 8 * 4 * slice : 0);
+  double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20 +
+                 (fixed ? base * sizeof(golden::RayAcc) * (system ? 2 : 1) + golden_threads * 8 * 4 * slice : 0);
+  // Partitioned: every block's partial image (pixels and accumulators) is
+  // kept for the network, and one block's volume is copied at a time.
+  if (plan)
+    for (const golden::Block& b : plan->blocks) {
+      const double part = static_cast<double>(b.base_width()) * b.base_height();
+      bytes += part * (8 + sizeof(golden::RayAcc)) * (system ? 2 : 1);
+    }
+  if (plan && !plan->blocks.empty()) {
+    const auto& d = plan->blocks.front().object_dim;
+    bytes += static_cast<double>(d[0]) * d[1] * d[2] * 2 * (system ? 2 : 1);
+  }
   golden::check_memory(l.scene.file.empty() ? std::string("the default scene") : l.scene.file,
                        "the " + model + " render", bytes,
                        golden::dims_text(l.volume.dim[0], l.volume.dim[1], l.volume.dim[2]) + " voxels, " +
@@ -172,18 +222,27 @@ void check_render_memory(const Loaded& l, const std::string& model, int golden_t
 // The built system's limits, from the registers of the volume's header
 // (before any voxel is loaded): the host interface's volume window, then
 // what sysc::check_system_limits() holds.
-void check_system_limits(const Loaded& l, const sysc::SystemConfig& cfg) {
-  for (int i = 0; i < 3; ++i)
-    if (l.volume.dim[i] > sysc::regmap::kMaxDimLimit)
-      throw InputError(l.volume.source + ": volume " +
-                       golden::dims_text(l.volume.dim[0], l.volume.dim[1], l.volume.dim[2]) +
-                       " has more than the host interface's " + std::to_string(sysc::regmap::kMaxDimLimit) +
-                       " voxels per axis (its volume window, docs/registers.md); render it with --model fixed");
-  try {
-    sysc::check_system_limits(l.host.regs, cfg);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(e.what());
-  }
+// With a block plan, each block's machine is held to them instead of the
+// whole volume's: a volume beyond one machine renders as blocks.
+void check_system_limits(const Loaded& l, const sysc::SystemConfig& cfg, const golden::BlockPlan* plan) {
+  // `who`: "" for the whole volume, else the block.
+  auto one = [&](const std::array<int, 3>& dim, const golden::Registers& regs, const std::string& who) {
+    for (int i = 0; i < 3; ++i)
+      if (dim[i] > sysc::regmap::kMaxDimLimit)
+        throw InputError(l.volume.source + ": " + (who.empty() ? "volume " : who + ", stored voxels ") +
+                         golden::dims_text(dim[0], dim[1], dim[2]) + ", has more than the host interface's " +
+                         std::to_string(sysc::regmap::kMaxDimLimit) +
+                         " voxels per axis (its volume window, docs/registers.md); render it with --model fixed, " +
+                         "or in more blocks (--blocks AxBxC)");
+    try {
+      sysc::check_system_limits(regs, cfg);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(who.empty() ? std::string(e.what()) + "; or render the volume in blocks (--blocks AxBxC)"
+                                   : l.volume.source + ": " + who + ": " + e.what() + "; use more blocks");
+    }
+  };
+  if (!plan) return one(l.volume.dim, l.host.regs, "");
+  for (const golden::Block& b : plan->blocks) one(b.object_dim, b.regs, "block " + std::to_string(b.index));
 }
 
 // The FST files the RTL units write (systemc/rtl/: one per unit, the
@@ -194,8 +253,100 @@ void apply_memory_limit(uint64_t mib) {
   if (mib > 0) golden::set_memory_limit(mib << 20);
 }
 
-int run_render(const RenderArgs& a) {
-  apply_memory_limit(a.max_memory_mib);
+// cube4 render --plan P --block I --partial F: one block of a plan, by the
+// chosen model, into a partial image file (tb/block_jobs.hpp).
+int render_plan_block(const RenderArgs& a, const tb::PlanFile& pf, const Loaded& l, const std::array<int, 3>& counts,
+                      const std::string& what, sysc::SystemConfig cfg, bool system, tb::OutputSet& outputs,
+                      const std::string& partial_temp, const std::string& report_temp,
+                      tb::ProgressPrinter& progress) {
+  if (l.scene.xy_supersampling != 1)
+    throw InputError(pf.path + ": a plan renders one frame, but the scene asks for xy_supersampling " +
+                     std::to_string(l.scene.xy_supersampling));
+  const golden::BlockPlan plan = golden::plan_blocks(l.host.regs, l.volume.dim, counts, what);
+  const std::string id = tb::plan_id(plan, l.volume);
+  if (id != pf.id)
+    throw InputError(pf.path + ": plan_id " + pf.id + ", but its scene and volume give " + id +
+                     " now: the scene, the volume or cube4 changed since the plan was made; make the plan again");
+  const golden::Block& b = plan.blocks[static_cast<size_t>(a.block)];
+  const golden::Volume bv = golden::block_volume(l.volume, b);
+  auto cb = [&](double f) { progress(f); };
+  const auto t0 = std::chrono::steady_clock::now();
+  golden::BasePlane part;
+  std::optional<sysc::SystemResult> sys;
+  std::string check_failure;
+  double bus_seconds = 0;
+  if (system) {
+    cfg.accumulators = true;
+    try {
+      sys = sysc::render_through_host(b.regs, bv, cfg, cb, &bus_seconds);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    } catch (const sysc::HostError& e) {
+      throw InputError(e.what());
+    }
+    part = sys->plane;
+    if (cfg.check) {
+      golden::FixedOptions opt;
+      opt.threads = a.threads;
+      const std::string diff = sysc::partial_difference(golden::render_block_fixed(bv, b, opt), part);
+      if (!diff.empty()) check_failure = "block " + std::to_string(a.block) + ": " + diff;
+      else if (sys->mismatch) check_failure = "first unit output that differs: " + sys->mismatch->describe();
+    }
+  } else {
+    golden::FixedOptions opt;
+    opt.threads = a.threads;
+    opt.progress = cb;
+    part = golden::render_block_fixed(bv, b, opt);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  tb::write_partial(partial_temp, part, l.host.regs.p, id, a.block, static_cast<int>(plan.blocks.size()), a.model);
+  if (!a.report.empty()) {
+    nlohmann::json r = {{"model", a.model},
+                        {"plan", a.plan},
+                        {"plan_id", id},
+                        {"scene", a.scene.empty() ? "(default)" : a.scene},
+                        {"block", tb::describe_blocks(plan)["per_block"][static_cast<size_t>(a.block)]},
+                        {"partial", a.partial},
+                        {"wall_seconds", seconds}};
+    if (sys) {
+      r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
+      r["system"]["host_bus_ms"] = bus_seconds * 1e3;
+    }
+    tb::write_json(report_temp, r, a.report);
+  }
+  outputs.commit();
+  if (!a.quiet)
+    std::fprintf(stderr, "cube4: block %d of %zu (%s model) in %.3f s -> %s\n", a.block, plan.blocks.size(),
+                 a.model.c_str(), seconds, a.partial.c_str());
+  if (!check_failure.empty()) {
+    std::fprintf(stderr, "cube4: check FAILED against the golden model: %s\n", check_failure.c_str());
+    return 3;
+  }
+  return 0;
+}
+
+int run_render(const RenderArgs& args) {
+  apply_memory_limit(args.max_memory_mib);
+  RenderArgs a = args;
+  // One block of a plan (cube4 plan): its scene and cut come from the plan.
+  std::optional<tb::PlanFile> plan_file;
+  if (!a.plan.empty()) {
+    if (!a.scene.empty()) throw InputError("--plan: the plan names the scene; give no scene file as well");
+    if (!a.blocks.empty()) throw InputError("--plan: the plan gives the blocks; give no --blocks as well");
+    if (a.block < 0 || a.partial.empty())
+      throw InputError("--plan: give the block to render and its partial image file: --block I --partial F.cpart");
+    plan_file = tb::read_plan(a.plan);
+    a.scene = plan_file->scene;
+    a.blocks = std::to_string(plan_file->counts[0]) + "x" + std::to_string(plan_file->counts[1]) + "x" +
+               std::to_string(plan_file->counts[2]);
+    if (a.block >= plan_file->blocks)
+      throw InputError("--block " + std::to_string(a.block) + ": the plan " + a.plan + " has blocks 0.." +
+                       std::to_string(plan_file->blocks - 1));
+  } else if (a.block >= 0 || !a.partial.empty()) {
+    throw InputError("--block and --partial render one block of a plan: give --plan PLAN.json (cube4 plan)");
+  }
+  if (plan_file && (a.model == "float" || a.model == "reference"))
+    throw InputError("--plan: the " + a.model + " model renders in one pass and has no blocks");
   // Outputs are checked before the (possibly long) render, so a typo costs nothing.
   for (const std::string* p : {&a.output, &a.baseplane}) {
     if (p->empty()) continue;
@@ -221,7 +372,8 @@ int run_render(const RenderArgs& a) {
   if (system) parse_levels(a.model);  // a wrong unit name costs no load
   // Every output is checked, and its temporary made, before any work.
   tb::OutputSet outputs;
-  const std::string output_temp = outputs.add(a.output, "--output");
+  const std::string partial_temp = plan_file ? outputs.add(a.partial, "--partial") : "";
+  const std::string output_temp = plan_file ? "" : outputs.add(a.output, "--output");
   const std::string baseplane_temp = a.baseplane.empty() ? "" : outputs.add(a.baseplane, "--baseplane");
   const std::string report_temp = a.report.empty() ? "" : outputs.add(a.report, "--report");
   const std::string trace_temp = a.trace.empty() ? "" : outputs.add_trace(a.trace, kTraceUnits);
@@ -230,15 +382,34 @@ int run_render(const RenderArgs& a) {
   if (l.scene.volume.kind == "den" || l.scene.volume.kind == "raw" || l.scene.volume.kind == "nifti")
     outputs.check_not_output(l.volume.source, "the volume");
   const int golden_threads = a.threads > 0 ? a.threads : golden::default_threads();
-  check_render_memory(l, a.model, golden_threads);
+  // Sub-cubes: the plan from the volume's header already, so that its
+  // limits, and each block's, cost no load. The float and reference
+  // renderers have no machines to partition: they render in one pass.
+  const std::array<int, 3> counts = block_counts(a, l.scene);
+  const bool blocked = partitioned(counts) && (system || a.model == "fixed");
+  const std::string what_blocks = blocks_what(a, l.scene);
+  std::optional<golden::BlockPlan> header_plan;
+  if (blocked) {
+    header_plan = golden::plan_blocks(l.host.regs, l.volume.dim, counts, what_blocks);
+    if (a.frames > 1)
+      throw InputError("--frames: a partitioned render (" + what_blocks +
+                       ") does not stream frames; its report gives the steady-state interval of machines and network");
+    if (!a.trace.empty())
+      throw InputError("--trace: a partitioned render (" + what_blocks + ") runs one machine per block; trace a "
+                       "volume of one block's size instead");
+  }
+  check_render_memory(l, a.model, golden_threads, header_plan ? &*header_plan : nullptr);
   sysc::SystemConfig cfg;
+  sysc::NetworkConfig net;
   std::optional<sysc::SystemResult> sys;
+  std::optional<sysc::PartitionedResult> part;
   double bus_seconds = 0;  // host-bus time of programming the frame and reading it back
   std::string check_failure;
   if (system) {
     cfg.p = a.pipes > 0 ? a.pipes : l.scene.pipelines;
     cfg.levels = parse_levels(a.model);
-    cfg.check = a.check < 0 ? !cfg.all_tlm() : a.check == 1;
+    net.level = network_level(a.model);
+    cfg.check = a.check < 0 ? !cfg.all_tlm() || (blocked && net.level == sysc::Level::Rtl) : a.check == 1;
     cfg.simulate_unneeded = a.simulate_all;
     cfg.frames = a.frames;
     cfg.seed = rtl_seed(a);
@@ -251,11 +422,15 @@ int run_render(const RenderArgs& a) {
         cfg.trace.last = static_cast<uint64_t>(a.trace_window[1]);
       }
     }
-    check_system_limits(l, cfg);
+    net.cycle_level = !cfg.all_tlm();  // clocked with the machines, or loosely timed with them
+    net.seed = cfg.seed;
+    check_system_limits(l, cfg, header_plan ? &*header_plan : nullptr);
   }
   load_volume(l, a.scene, false);
   tb::ProgressPrinter progress("render " + a.model, !a.quiet);
   auto cb = [&](double f) { progress(f); };
+  if (plan_file) return render_plan_block(a, *plan_file, l, counts, what_blocks, cfg, system, outputs, partial_temp,
+                                          report_temp, progress);
   golden::RenderStats stats;
   golden::ImageF image;
   std::optional<uint64_t> hash;
@@ -291,6 +466,35 @@ int run_render(const RenderArgs& a) {
     };
     for (size_t i = 0; i < sub_scenes.size(); ++i) {
       const golden::HostProgram& host = sub_hosts[i];
+      if (blocked) {
+        const golden::BlockPlan plan = golden::plan_blocks(host.regs, l.volume.dim, counts, what_blocks);
+        golden::BasePlane bp;
+        if (system) {
+          try {
+            part = sysc::render_partitioned(plan, l.volume, cfg, net, cb);
+          } catch (const std::invalid_argument& e) {
+            throw InputError(e.what());
+          } catch (const sysc::HostError& e) {
+            throw InputError(e.what());
+          }
+          bp = part->network.plane;
+          samples += part->samples;
+          bus_seconds += part->bus_seconds;
+          if (last && cfg.check && check_failure.empty() && part->mismatch)
+            check_failure = sub_frame_name(i) + *part->mismatch;
+        } else {
+          golden::RenderStats frame_stats;
+          golden::FixedOptions opt;
+          opt.stats = &frame_stats;
+          opt.progress = cb;
+          opt.threads = a.threads;
+          bp = golden::render_blocks_fixed(l.volume, plan, opt);
+          samples += frame_stats.samples;
+        }
+        frames.push_back(golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, host.view));
+        keep_plane(bp, i);
+        continue;
+      }
       if (system) {
         try {
           sys = sysc::render_through_host(host.regs, l.volume, cfg, cb, &bus_seconds);
@@ -370,7 +574,17 @@ int run_render(const RenderArgs& a) {
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
     if (a.model == "fixed") r["threads"] = a.threads > 0 ? a.threads : golden::default_threads();
-    if (sys) {
+    if (header_plan) {
+      r["blocks"] = tb::describe_blocks(*header_plan);
+    } else if (partitioned(counts)) {
+      r["blocks"] = "not applicable: the " + a.model + " model renders in one pass";
+    }
+    if (part) {
+      r["system"] = tb::describe_partitioned(*part, cfg, l.scene.clock_mhz, seconds, check_failure);
+      r["system"]["host_bus_ms"] = bus_seconds * 1e3;
+      r["system"]["image_fps_steady_state"] =
+          r["system"]["fps_steady_state"].get<double>() / static_cast<double>(sub_scenes.size());
+    } else if (sys) {
       r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
       r["system"]["host_bus_ms"] = bus_seconds * 1e3;
       // The cycle figures are one frame's; an image of x/y supersampling is
@@ -392,7 +606,121 @@ int run_render(const RenderArgs& a) {
     std::fprintf(stderr, "cube4: check FAILED against the golden model: %s\n", check_failure.c_str());
     return 3;
   }
+  if (part && !a.quiet) tb::print_partitioned_summary(*part, cfg, l.scene.clock_mhz);
   if (sys && !a.quiet) tb::print_system_summary(*sys, cfg, l.scene.clock_mhz);
+  return 0;
+}
+
+struct PlanArgs {
+  std::string scene, blocks, output = "plan.json";
+  uint64_t max_memory_mib = 0;
+};
+
+// cube4 plan: the block plan of a scene, for jobs run one block each.
+int run_plan(const PlanArgs& a) {
+  apply_memory_limit(a.max_memory_mib);
+  tb::OutputSet outputs;
+  const std::string temp = outputs.add(a.output, "--output");
+  if (!a.scene.empty()) outputs.check_not_output(a.scene, "the scene");
+  const Loaded l = load(a.scene);
+  if (l.scene.xy_supersampling != 1)
+    throw InputError((a.scene.empty() ? std::string("the default scene") : a.scene) +
+                     ": a plan renders one frame, but the scene asks for xy_supersampling " +
+                     std::to_string(l.scene.xy_supersampling));
+  RenderArgs ra;
+  ra.blocks = a.blocks;
+  const std::array<int, 3> counts = block_counts(ra, l.scene);
+  const golden::BlockPlan plan = golden::plan_blocks(l.host.regs, l.volume.dim, counts, blocks_what(ra, l.scene));
+  const std::string scene = a.scene.empty() ? "" : std::filesystem::absolute(a.scene).string();
+  tb::write_json(temp, tb::plan_json(plan, scene, tb::plan_id(plan, l.volume)), a.output);
+  outputs.commit();
+  std::printf("%zu\n", plan.blocks.size());  // the job count, for scripts
+  return 0;
+}
+
+struct ComposeArgs {
+  std::string plan;
+  std::vector<std::string> partials;
+  std::string output = "cube4.png", baseplane, report, model = "tlm";
+  int check = -1;  // -1: on at RTL
+  bool quiet = false;
+  std::optional<uint32_t> seed;
+  uint64_t max_memory_mib = 0;
+};
+
+// cube4 compose: the partial images of a plan through the composition
+// network, then the warp: the image `cube4 render --blocks` makes.
+int run_compose(const ComposeArgs& a) {
+  apply_memory_limit(a.max_memory_mib);
+  if (a.model != "tlm" && a.model != "rtl")
+    throw InputError("--model " + a.model + ": the composition network runs at tlm or rtl");
+  tb::OutputSet outputs;
+  const std::string output_temp = outputs.add(a.output, "--output");
+  const std::string baseplane_temp = a.baseplane.empty() ? "" : outputs.add(a.baseplane, "--baseplane");
+  const std::string report_temp = a.report.empty() ? "" : outputs.add(a.report, "--report");
+  const tb::PlanFile pf = tb::read_plan(a.plan);
+  for (const std::string& f : a.partials) outputs.check_not_output(f, "a partial image");
+  const Loaded l = load(pf.scene);
+  RenderArgs ra;
+  ra.blocks = std::to_string(pf.counts[0]) + "x" + std::to_string(pf.counts[1]) + "x" + std::to_string(pf.counts[2]);
+  const golden::BlockPlan plan = golden::plan_blocks(l.host.regs, l.volume.dim, pf.counts, pf.path + ": counts");
+  const std::string id = tb::plan_id(plan, l.volume);
+  if (id != pf.id)
+    throw InputError(pf.path + ": plan_id " + pf.id + ", but its scene and volume give " + id +
+                     " now: the scene, the volume or cube4 changed since the plan was made; make the plan again");
+  const std::vector<tb::Partial> parts = tb::order_partials(plan, id, a.partials);
+  std::vector<const golden::BasePlane*> ptrs;
+  for (const tb::Partial& p : parts) ptrs.push_back(&p.plane);
+  sysc::NetworkConfig net;
+  net.level = a.model == "rtl" ? sysc::Level::Rtl : sysc::Level::Tlm;
+  net.cycle_level = net.level == sysc::Level::Rtl;
+  net.check = a.check < 0 ? net.level == sysc::Level::Rtl : a.check == 1;
+  RenderArgs seeded;
+  seeded.seed = a.seed;
+  net.seed = rtl_seed(seeded);
+  tb::ProgressPrinter progress("compose " + a.model, !a.quiet);
+  sysc::NetworkResult res;
+  try {
+    res = sysc::run_network(plan, ptrs, net, [&](double f) { progress(f); });
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  const golden::BasePlane& bp = res.plane;
+  tb::write_image(output_temp, golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, l.host.view), a.output);
+  if (!a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp, a.baseplane);
+  const uint64_t hash = tb::fnv1a64(bp.rgba.data(), bp.rgba.size() * sizeof(uint16_t));
+  if (!a.report.empty()) {
+    const double hz = l.scene.clock_mhz * 1e6;
+    nlohmann::json r = {{"model", a.model},
+                        {"plan", a.plan},
+                        {"plan_id", id},
+                        {"scene", pf.scene.empty() ? "(default)" : pf.scene},
+                        {"blocks", tb::describe_blocks(plan)},
+                        {"network",
+                         {{"level", sysc::level_name(res.level)},
+                          {"nodes", res.nodes},
+                          {"depth", res.depth},
+                          {"cycles", res.cycles},
+                          {"cycles_steady_state_interval", res.stream_cycles},
+                          {"images_per_second_steady_state", hz / static_cast<double>(res.stream_cycles)},
+                          {"wall_seconds", res.wall_seconds},
+                          {"seed", net.seed},
+                          {"check", net.check ? (res.mismatch ? *res.mismatch : std::string("passed: bit-exact"))
+                                              : std::string("off")}}},
+                        {"output", a.output},
+                        {"baseplane_hash_fnv1a64", tb::hex64(hash)}};
+    if (!a.baseplane.empty()) r["baseplane"] = a.baseplane;
+    tb::write_json(report_temp, r, a.report);
+  }
+  outputs.commit();
+  if (!a.quiet)
+    std::fprintf(stderr, "cube4: %zu partial images through %d nodes (depth %d, %s) in %llu cycles -> %s\n",
+                 parts.size(), res.nodes, res.depth, sysc::level_name(res.level),
+                 static_cast<unsigned long long>(res.cycles), a.output.c_str());
+  if (res.mismatch) {
+    std::fprintf(stderr, "cube4: check FAILED against the golden model: %s\n", res.mismatch->c_str());
+    return 3;
+  }
   return 0;
 }
 
@@ -463,6 +791,12 @@ int main(int argc, char** argv) {
                      "fixed model and --check: threads, each rendering a band of rays (default 0: one per core; "
                      "the image is the same for any number)")
       ->check(CLI::Range(0, 1024));
+  render->add_option("--blocks", ra.blocks,
+                     "AxBxC: render the volume as blocks along x, y, z, each by a machine of its own, merged by the "
+                     "composition network (fixed and system models; default: the scene's \"blocks\", 1x1x1)");
+  render->add_option("--plan", ra.plan, "with --block and --partial: render one block of a plan (cube4 plan)");
+  render->add_option("--block", ra.block, "the plan's block to render (0 .. blocks-1)")->check(CLI::Range(0, golden::kMaxBlocks - 1));
+  render->add_option("--partial", ra.partial, "the block's partial image file (.cpart) for cube4 compose");
   render->add_option("--seed", ra.seed, "system model: Verilator random-reset seed of the RTL units (default: CUBE4_SEED, else 1)");
   const std::string memory_help = "refuse volumes and renders estimated to need more than MiB of memory (default " +
                                   std::to_string(golden::kDefaultMemoryLimit >> 20) + ")";
@@ -472,6 +806,28 @@ int main(int argc, char** argv) {
   CLI::App* info = app.add_subcommand("info", "print the view factorisation, register summary and effect set");
   info->add_option("scene", info_scene, "scene JSON file (default: the default scene)");
   info->add_option("--max-memory", info_max_memory, memory_help)->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
+  PlanArgs pa;
+  CLI::App* plan = app.add_subcommand("plan", "cut a scene's volume into blocks for jobs of one block each: a plan file");
+  plan->add_option("scene", pa.scene, "scene JSON file (default: the default scene)");
+  plan->add_option("--blocks", pa.blocks, "AxBxC: blocks along x, y, z (default: the scene's \"blocks\")");
+  plan->add_option("-o,--output", pa.output, "the plan file")->capture_default_str();
+  plan->add_option("--max-memory", pa.max_memory_mib, memory_help)->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
+  ComposeArgs ca;
+  CLI::App* compose = app.add_subcommand(
+      "compose", "merge a plan's partial images through the composition network into the image");
+  compose->add_option("plan", ca.plan, "the plan file (cube4 plan)")->required();
+  compose->add_option("partials", ca.partials, "every block's partial image (cube4 render --plan --block --partial)")
+      ->required();
+  compose->add_option("-o,--output", ca.output, "final image, .png or .exr")->capture_default_str();
+  compose->add_option("--baseplane", ca.baseplane, "also write the composed base plane (.png: 16-bit)");
+  compose->add_option("--report", ca.report, "write a JSON report");
+  compose->add_option("--model", ca.model, "the network's level: tlm (loosely timed) or rtl (verilated nodes)")
+      ->capture_default_str();
+  compose->add_flag_callback("--check", [&ca] { ca.check = 1; }, "compare with golden (default: on at rtl; exit 3)");
+  compose->add_flag_callback("--no-check", [&ca] { ca.check = 0; }, "no comparison with golden");
+  compose->add_option("--seed", ca.seed, "Verilator random-reset seed (default: CUBE4_SEED, else 1)");
+  compose->add_flag("-q,--quiet", ca.quiet, "no progress or summary on stderr");
+  compose->add_option("--max-memory", ca.max_memory_mib, memory_help)->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
   tb::RegressArgs rg;
   CLI::App* regress = app.add_subcommand(
       "regress", "render scenes at several model levels with --check, in parallel; JUnit XML and a summary");
@@ -485,8 +841,11 @@ int main(int argc, char** argv) {
   regress->add_option("--summary", rg.summary, "Markdown summary output");
   regress->add_flag("-q,--quiet", rg.quiet, "no progress on stderr");
   const std::string cmd = argc > 1 ? argv[1] : "";
-  if (argc > 1 && argv[1][0] != '-' && cmd != "render" && cmd != "info" && cmd != "regress") {
-    std::fprintf(stderr, "cube4: error: unknown command '%s' (commands: render, info, regress; see --help)\n", argv[1]);
+  if (argc > 1 && argv[1][0] != '-' && cmd != "render" && cmd != "info" && cmd != "regress" && cmd != "plan" &&
+      cmd != "compose") {
+    std::fprintf(stderr,
+                 "cube4: error: unknown command '%s' (commands: render, info, regress, plan, compose; see --help)\n",
+                 argv[1]);
     return 2;
   }
   try {
@@ -498,6 +857,8 @@ int main(int argc, char** argv) {
   try {
     if (*render) return run_render(ra);
     if (*regress) return tb::run_regress(rg, std::filesystem::canonical("/proc/self/exe").string());
+    if (*plan) return run_plan(pa);
+    if (*compose) return run_compose(ca);
     return run_info(info_scene, info_max_memory);
   } catch (const InputError& e) {
     std::fprintf(stderr, "cube4: error: %s\n", e.what());

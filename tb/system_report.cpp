@@ -57,4 +57,63 @@ void print_system_summary(const sysc::SystemResult& r, const sysc::SystemConfig&
     std::fprintf(stderr, "cube4: RTL random reset seed %u (--seed or CUBE4_SEED to change)\n", cfg.seed);
 }
 
+nlohmann::json describe_blocks(const golden::BlockPlan& plan) {
+  nlohmann::json blocks = nlohmann::json::array();
+  for (const golden::Block& b : plan.blocks)
+    blocks.push_back({{"index", b.index},
+                      {"cell_permuted", b.cell},
+                      {"core_permuted", {b.core_lo, b.core_hi}},
+                      {"stored_permuted", {b.store_lo, b.store_hi}},
+                      {"stored_object", {{"origin", b.object_lo}, {"size", b.object_dim}}},
+                      {"base_plane", {b.base_width(), b.base_height()}},
+                      {"base_plane_origin", {b.u0, b.v0}}});
+  return {{"counts", plan.counts},
+          {"machines", plan.blocks.size()},
+          {"order", "front to back: permuted block z, then y, then x"},
+          {"per_block", blocks}};
+}
+
+nlohmann::json describe_partitioned(const sysc::PartitionedResult& r, const sysc::SystemConfig& cfg,
+                                    double clock_mhz, double wall_seconds, const std::string& check_failure) {
+  const double hz = clock_mhz * 1e6;
+  nlohmann::json machines = nlohmann::json::array();
+  for (const sysc::SystemResult& b : r.blocks)
+    machines.push_back(describe_system(b, cfg, clock_mhz, b.wall_seconds, ""));
+  const sysc::NetworkResult& n = r.network;
+  return {
+      {"machines", r.blocks.size()},
+      {"pipelines_per_machine", cfg.p},
+      {"cycles_per_frame", r.frame_cycles},
+      {"cycles_steady_state_interval", r.stream_cycles},
+      {"fps_first_frame", hz / static_cast<double>(r.frame_cycles)},
+      {"fps_steady_state", hz / static_cast<double>(r.stream_cycles)},
+      {"samples_per_cycle", static_cast<double>(r.samples) / static_cast<double>(r.stream_cycles)},
+      {"network",
+       {{"level", sysc::level_name(n.level)},
+        {"nodes", n.nodes},
+        {"depth", n.depth},
+        {"cycles", n.cycles},
+        {"cycles_steady_state_interval", n.stream_cycles},
+        {"timing", n.clocked ? "simulated clock cycles" : "cycle model (loosely timed, no clock simulated)"},
+        {"wall_seconds", n.wall_seconds}}},
+      {"wall_seconds", wall_seconds},
+      {"seed", cfg.seed},
+      {"check", cfg.check ? (check_failure.empty()
+                                 ? "passed: every block's partial image and unit streams, and the network's image, bit-exact"
+                                 : check_failure)
+                          : "off"},
+      {"per_machine", machines},
+  };
+}
+
+void print_partitioned_summary(const sysc::PartitionedResult& r, const sysc::SystemConfig& cfg, double clock_mhz) {
+  std::fprintf(stderr,
+               "cube4: %zu machines of p=%d, network of %d nodes (depth %d, %s): %llu cycles/frame (%llu steady), "
+               "%.1f fps at %.0f MHz%s\n",
+               r.blocks.size(), cfg.p, r.network.nodes, r.network.depth, sysc::level_name(r.network.level),
+               static_cast<unsigned long long>(r.frame_cycles), static_cast<unsigned long long>(r.stream_cycles),
+               clock_mhz * 1e6 / static_cast<double>(r.stream_cycles), clock_mhz,
+               cfg.check ? "; check passed (bit-exact)" : "");
+}
+
 }  // namespace cube4::tb

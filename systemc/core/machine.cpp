@@ -108,7 +108,11 @@ SystemResult render_through_host(const golden::Registers& r, const golden::Volum
   }
   if (!h.machine->last()) throw std::logic_error("host interface: START ran no frame");
   SystemResult res = *h.machine->last();
-  res.plane = read_base_plane_over_tlm(target, r, delay);
+  golden::BasePlane read = read_base_plane_over_tlm(target, r, delay);
+  // The accumulators stay the pixel memory's: the composition network reads
+  // them there, not over the host bus.
+  read.acc = std::move(res.plane.acc);
+  res.plane = std::move(read);
   if (bus_seconds) *bus_seconds = delay.to_seconds();
   return res;
 }

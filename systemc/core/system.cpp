@@ -8,6 +8,7 @@
 #include <sstream>
 #include <systemc>
 
+#include "systemc/core/clocked_tops.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/link.hpp"
 #include "systemc/core/pixel_memory.hpp"
@@ -142,9 +143,13 @@ SC_MODULE(CycleTop) {
     shaded.reset();
   }
 
+  // Between frames (while the composition network runs on the same
+  // clock) no frame is plugged in.
+  void stop() { u = nullptr; }
+
   template <class F>
   void guarded(F&& f) {
-    if (u->done || error) return;
+    if (!u || u->done || error) return;
     try {
       f();
     } catch (...) {
@@ -184,12 +189,24 @@ void run_plain(FrameUnits& u) {
   }
 }
 
-CycleTop& cycle_top() {
-  static CycleTop* top = new CycleTop("cube4");  // lives as long as the SystemC kernel
-  return *top;
+// Both clocked tops, built together (clocked_tops.hpp); they live as long
+// as the SystemC kernel.
+struct ClockedTops {
+  CycleTop* cycle;
+  sc_core::sc_module* network;
+};
+ClockedTops& clocked_tops() {
+  static ClockedTops tops = [] {
+    auto* top = new CycleTop("cube4");
+    return ClockedTops{top, build_network_top(top->clk)};
+  }();
+  return tops;
 }
+CycleTop& cycle_top() { return *clocked_tops().cycle; }
 
 }  // namespace
+
+sc_core::sc_module& network_top() { return *clocked_tops().network; }
 
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
@@ -266,6 +283,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       res.skipped.push_back("cut-plane logic");
   }
   not_needed(r.crop_enabled, Unit::Composite, "cropping logic");
+  not_needed(r.window_enabled, Unit::Composite, "block-window logic (a partitioned volume's)");
   const CycleCount cc = frame_cycles(*rs, cfg.p);
   res.stream_cycles = cc.stream;
   res.samples = static_cast<uint64_t>(plan.nx) * plan.ny * plan.K;
@@ -274,22 +292,19 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   if (cfg.check) checker = std::make_unique<StreamChecker>(plan, vol);
 
   if (cfg.all_tlm() && !cfg.cycle_level) {
-    res.plane = run_tlm_frame(plan, vol, progress);
+    res.plane = run_tlm_frame(plan, vol, progress, cfg.accumulators);
     res.frame_cycles = cc.latency;
     for (int pass = 0; pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
 #ifdef CUBE4_HAVE_RTL
-    rtl::ScopedVerilatedContext ctx;
-    if (!cfg.trace.file.empty()) ctx->traceEverOn(true);
-    ctx->randReset(2);
-    ctx->randSeed(static_cast<int>(cfg.seed & 0x7FFFFFFF));
+    rtl::ScopedVerilatedContext ctx(cfg.seed, !cfg.trace.file.empty());
     VerilatedContext* rtl_ctx = ctx.get();
 #else
     VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit
 #endif
     VoxelMemory mem(vol, cfg.p);
-    PixelMemory pixels(r);
+    PixelMemory pixels(r, cfg.accumulators);
     FrameUnits u;
     u.frames = cfg.frames;
     bool rtl[kUnits];
@@ -317,6 +332,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       CycleTop& top = cycle_top();
       top.start(u);
       sc_core::sc_start();
+      top.stop();
       if (top.error) std::rethrow_exception(top.error);
     } else {
       run_plain(u);

@@ -41,6 +41,10 @@ struct SystemConfig {
   // reset starts from values drawn from this seed (the RTL is verilated with
   // --x-initial unique), so runs with two seeds are two X-states.
   uint32_t seed = 1;
+  // Keep every ray's accumulator in pixel memory beside its pixel (the
+  // result plane's acc): a block of a partitioned volume, whose partial
+  // image the composition network reads (golden/blocks.hpp).
+  bool accumulators = false;
   bool all_tlm() const {
     for (Level l : levels)
       if (l != Level::Tlm) return false;

@@ -85,7 +85,7 @@ struct Section {
 constexpr Section kSections[] = {
     {Block::Control, "Control and status"}, {Block::Identification, "Identification, read-only"},
     {Block::Precision, "Precision, read-only"}, {Block::View, "View and DDA"}, {Block::Mode, "Mode"},
-    {Block::Cropping, "Cropping"}, {Block::CutPlane, "Cut plane"}, {Block::Shading, "Shading"},
+    {Block::Cropping, "Cropping"}, {Block::Window, "Block window"}, {Block::CutPlane, "Cut plane"}, {Block::Shading, "Shading"},
     {Block::Volume, "Volume"},
 };
 

@@ -40,7 +40,7 @@ struct RegisterValues {
   std::array<int, 3> vol_dim{0, 0, 0};
 };
 
-enum class Block { Control, Identification, Precision, View, Mode, Cropping, CutPlane, Shading, Volume };
+enum class Block { Control, Identification, Precision, View, Mode, Cropping, Window, CutPlane, Shading, Volume };
 enum class Access { R, W, RW };
 // Symmetric: ±(2^(width-1)-1), as golden saturates.
 enum class Sign { Unsigned, Signed, Symmetric };
@@ -100,7 +100,8 @@ constexpr int kModeBlendShift = 8;            // bits 9:8, golden::BlendMode 0..
 constexpr uint32_t kModeBlendMask = 3u << kModeBlendShift;
 constexpr uint32_t kModeCrop = 1u << 12;
 constexpr uint32_t kModeCut = 1u << 13;
-constexpr uint32_t kModeMask = 0x7F | kModeBlendMask | kModeCrop | kModeCut;
+constexpr uint32_t kModeWindow = 1u << 14;
+constexpr uint32_t kModeMask = 0x7F | kModeBlendMask | kModeCrop | kModeCut | kModeWindow;
 
 constexpr uint32_t kCutKeepInside = 1u << 0;
 
@@ -116,6 +117,7 @@ constexpr uint32_t mode_word(const golden::Registers& r) {
   if (r.gm_specular) m |= kModeGmSpecular;
   if (r.crop_enabled) m |= kModeCrop;
   if (r.cut_enabled) m |= kModeCut;
+  if (r.window_enabled) m |= kModeWindow;
   return m;
 }
 constexpr void set_mode(golden::Registers& r, uint64_t v) {
@@ -129,6 +131,7 @@ constexpr void set_mode(golden::Registers& r, uint64_t v) {
   r.blend = static_cast<golden::BlendMode>((v & kModeBlendMask) >> kModeBlendShift);
   r.crop_enabled = v & kModeCrop;
   r.cut_enabled = v & kModeCut;
+  r.window_enabled = v & kModeWindow;
 }
 
 constexpr size_t class_entries(const golden::Precision& p) { return size_t{1} << p.voxel_bits; }
@@ -223,15 +226,15 @@ inline constexpr Register kListed[] = {
      "— (FramePlan slice control)", ""},
 
     // ---- Mode.
-    {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(14), Sign::Unsigned, Rule::Mode,
-     "gradient … cut_enabled",
+    {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(15), Sign::Unsigned, Rule::Mode,
+     "gradient … window_enabled",
      [](const RegisterValues& v, const HardwareParams&) { return uint64_t{mode_word(v.regs)}; },
      [](RegisterValues& v, uint64_t w) { set_mode(v.regs, w); },
      "cube4_shade_unit magnitude_i … gm_specular_i, cube4_composite_ring blend_mode_i, crop_enabled_i, "
-     "cut_enabled_i",
+     "cut_enabled_i, window_enabled_i",
      "bit 0 `gradient`, 1 `magnitude`, 2 `shading`, 3 `specular`, 4 `gm_opacity`, 5 `gm_diffuse`, "
      "6 `gm_specular`, bits 9:8 `blend` (0 composite, 1 MIP, 2 MinIP; 3 is out of range), "
-     "bit 12 `crop_enabled`, bit 13 `cut_enabled`"},
+     "bit 12 `crop_enabled`, bit 13 `cut_enabled`, bit 14 `window_enabled` (a block of a partitioned volume)"},
 
     // ---- Cropping.
     {"CROP_X_LO", 0x180, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
@@ -250,6 +253,21 @@ inline constexpr Register kListed[] = {
     {"CROP_MASK", 0x198, Block::Cropping, Access::RW, 1, bits(8), Sign::Unsigned, Rule::Width,
      CUBE4_REG_FIELD(crop.mask), "cube4_composite_ring.crop_mask_i",
      "visible iff bit (inX \\| inY<<1 \\| inZ<<2)"},
+
+    // ---- Block window (golden/blocks.hpp): what a block machine composites.
+    {"WINDOW_X_LO", 0x1A0, Block::Window, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(window.range[0][0]), "cube4_composite_ring.window_x_lo_i",
+     "inclusive range, permuted voxel coordinates of the block"},
+    {"WINDOW_X_HI", 0x1A4, Block::Window, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(window.range[0][1]), "cube4_composite_ring.window_x_hi_i", ""},
+    {"WINDOW_Y_LO", 0x1A8, Block::Window, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(window.range[1][0]), "cube4_composite_ring.window_y_lo_i", ""},
+    {"WINDOW_Y_HI", 0x1AC, Block::Window, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(window.range[1][1]), "cube4_composite_ring.window_y_hi_i", ""},
+    {"WINDOW_Z_LO", 0x1B0, Block::Window, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(window.range[2][0]), "cube4_composite_ring.window_z_lo_i", "voxel slices"},
+    {"WINDOW_Z_HI", 0x1B4, Block::Window, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_FIELD(window.range[2][1]), "cube4_composite_ring.window_z_hi_i", ""},
 
     // ---- Cut plane.
     {"CUT_A", 0x1C0, Block::CutPlane, Access::RW, 1, bits(golden::kCutCoefBits), Sign::Signed, Rule::Width,

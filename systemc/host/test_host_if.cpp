@@ -253,6 +253,7 @@ void expect_registers_equal(const golden::Registers& a, const golden::Registers&
   EXPECT_FIELD(gm_opacity); EXPECT_FIELD(gm_diffuse); EXPECT_FIELD(gm_specular);
   EXPECT_EQ(static_cast<int>(a.blend), static_cast<int>(b.blend)) << where << ": field blend";
   EXPECT_FIELD(crop_enabled); EXPECT_FIELD(crop.slab); EXPECT_FIELD(crop.mask);
+  EXPECT_FIELD(window_enabled); EXPECT_FIELD(window.range);
   EXPECT_FIELD(cut_enabled); EXPECT_FIELD(cut.a); EXPECT_FIELD(cut.b); EXPECT_FIELD(cut.c);
   EXPECT_FIELD(cut.dmin); EXPECT_FIELD(cut.dmax); EXPECT_FIELD(cut.falloff); EXPECT_FIELD(cut.inv_falloff);
   EXPECT_FIELD(cut.keep_inside);
@@ -352,6 +353,9 @@ golden::Registers random_registers(const golden::Precision& p, std::mt19937_64& 
   };
   for (auto& s : r.crop.slab) s = {static_cast<int32_t>(in_field("CROP_X_LO")), static_cast<int32_t>(in_field("CROP_X_HI"))};
   r.crop.mask = static_cast<uint8_t>(rng());
+  r.window_enabled = coin();
+  for (auto& s : r.window.range)
+    s = {static_cast<int32_t>(in_field("WINDOW_X_LO")), static_cast<int32_t>(in_field("WINDOW_X_HI"))};
   r.cut_enabled = coin();
   r.cut = {static_cast<int32_t>(in_field("CUT_A")), static_cast<int32_t>(in_field("CUT_B")),
            static_cast<int32_t>(in_field("CUT_C")), in_field("CUT_DMIN"), in_field("CUT_DMAX"),

@@ -49,6 +49,7 @@ class RtlComposite final : public CompositeIf {
                     static_cast<uint16_t>(get_bits(m.pixel_green_o, k * a, a)),
                     static_cast<uint16_t>(get_bits(m.pixel_blue_o, k * a, a)),
                     static_cast<uint16_t>(get_bits(m.pixel_alpha_o, k * a, a)));
+      if (pixels_.keeps_accumulators()) pixels_.write_acc(u, w, rtl::composite_pixel_acc(m, k, plan_.r.p));
     }
     m_.rise();
     out.frame_done = drain_ > 0 && --drain_ == 0;

@@ -7,11 +7,14 @@
 
 #include "systemc/rtl/rtl_model.hpp"  // before the models: see its sc_time_stamp note
 
+#include "Vsys_compose_node.h"
+#include "Vsys_compose_out.h"
 #include "Vsys_shade_lean.h"
 #include "Vsys_shade_unit.h"
 #include "Vsys_shade_unit_cube4_pkg.h"
 #include "rtl_variant_headers.inc"
 #include "systemc/rtl/rtl_addr.hpp"
+#include "systemc/rtl/rtl_compose.hpp"
 #include "systemc/rtl/rtl_composite.hpp"
 #include "systemc/rtl/rtl_gradient.hpp"
 #include "systemc/rtl/rtl_interp.hpp"
@@ -111,6 +114,26 @@ std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemo
 #undef CUBE4_RTL_P
     default: unavailable(plan.p);
   }
+}
+
+// The network's units exist at the default widths (what the machines'
+// partial images have at RTL too).
+void require_default_compose_widths(const golden::Precision& p) {
+  if (const golden::PrecisionField* f = golden::first_difference(p, golden::Precision{}, true))
+    throw std::invalid_argument(std::string("precision: ") + f->key + " = " + std::to_string(p.*f->member) +
+                                ", but the composition network's RTL is verilated with the default widths; "
+                                "compose at TLM");
+}
+
+std::unique_ptr<ComposeNodeIf> make_rtl_compose_node(golden::BlendMode mode, const golden::Precision& p,
+                                                     VerilatedContext& ctx, const TraceWindow& trace, size_t index) {
+  require_default_compose_widths(p);
+  return std::make_unique<RtlComposeNode<Vsys_compose_node>>(mode, p, ctx, trace, "node" + std::to_string(index));
+}
+
+std::unique_ptr<ComposeOutIf> make_rtl_compose_out(const golden::Precision& p, VerilatedContext& ctx) {
+  require_default_compose_widths(p);
+  return std::make_unique<RtlComposeOut<Vsys_compose_out>>(ctx);
 }
 
 }  // namespace cube4::sysc

@@ -9,6 +9,8 @@
 #include "systemc/core/pixel_memory.hpp"
 #include "systemc/core/unit_if.hpp"
 
+#include "golden/units/compose.hpp"
+
 class VerilatedContext;
 
 namespace cube4::sysc {
@@ -36,5 +38,13 @@ std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext&
 // (HasCutPlane = 0): that logic is not simulated.
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
                                                 const TraceWindow& trace, bool full = false);
+
+// The composition network's units (systemc/core/compose_network.hpp),
+// verilated once at the default widths; `index` names the node.
+struct ComposeNodeIf;
+struct ComposeOutIf;
+std::unique_ptr<ComposeNodeIf> make_rtl_compose_node(golden::BlendMode mode, const golden::Precision& p,
+                                                     VerilatedContext& ctx, const TraceWindow& trace, size_t index);
+std::unique_ptr<ComposeOutIf> make_rtl_compose_out(const golden::Precision& p, VerilatedContext& ctx);
 
 }  // namespace cube4::sysc

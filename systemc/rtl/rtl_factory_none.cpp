@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "systemc/rtl/rtl_factory.hpp"
+#include "systemc/core/compose_network.hpp"
 
 namespace cube4::sysc {
 
@@ -25,5 +26,11 @@ std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, 
                                                 bool) {
   unavailable();
 }
+
+std::unique_ptr<ComposeNodeIf> make_rtl_compose_node(golden::BlendMode, const golden::Precision&, VerilatedContext&,
+                                                     const TraceWindow&, size_t) {
+  unavailable();
+}
+std::unique_ptr<ComposeOutIf> make_rtl_compose_out(const golden::Precision&, VerilatedContext&) { unavailable(); }
 
 }  // namespace cube4::sysc

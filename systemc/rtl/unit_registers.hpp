@@ -14,7 +14,7 @@
 
 namespace cube4::rtl {
 
-// The compositing unit's registers: blend mode, cropping and cut plane.
+// The compositing unit's registers: blend mode, cropping, block window and cut plane.
 template <class M>
 void drive_composite_registers(M& m, const golden::Registers& r) {
   const golden::Precision& p = r.p;
@@ -28,6 +28,13 @@ void drive_composite_registers(M& m, const golden::Registers& r) {
   put(m.crop_z_lo_i, golden::kPositionBits, r.crop.slab[2][0]);
   put(m.crop_z_hi_i, golden::kPositionBits, r.crop.slab[2][1]);
   put(m.crop_mask_i, 8, r.crop.mask);
+  m.window_enabled_i = r.window_enabled;
+  put(m.window_x_lo_i, golden::kPositionBits, r.window.range[0][0]);
+  put(m.window_x_hi_i, golden::kPositionBits, r.window.range[0][1]);
+  put(m.window_y_lo_i, golden::kPositionBits, r.window.range[1][0]);
+  put(m.window_y_hi_i, golden::kPositionBits, r.window.range[1][1]);
+  put(m.window_z_lo_i, golden::kPositionBits, r.window.range[2][0]);
+  put(m.window_z_hi_i, golden::kPositionBits, r.window.range[2][1]);
   m.cut_enabled_i = r.cut_enabled;
   put(m.cut_a_i, golden::kCutCoefBits, r.cut.a);
   put(m.cut_b_i, golden::kCutCoefBits, r.cut.b);

@@ -112,4 +112,19 @@ void drive_composite_stream(M& m, const CompositeControl& c, const sysc::ShadedB
   }
 }
 
+// Pipeline k's finished ray on the compositing ring's pixel port as its
+// accumulator (golden RayAcc): the partial image of a block.
+template <class M>
+golden::RayAcc composite_pixel_acc(const M& m, int k, const golden::Precision& pr) {
+  const int ab = golden::acc_bits(pr), v = pr.voxel_bits;
+  golden::RayAcc acc;
+  acc.r = static_cast<uint32_t>(get_bits(m.pixel_acc_red_o, k * ab, ab));
+  acc.g = static_cast<uint32_t>(get_bits(m.pixel_acc_green_o, k * ab, ab));
+  acc.b = static_cast<uint32_t>(get_bits(m.pixel_acc_blue_o, k * ab, ab));
+  acc.a = static_cast<uint32_t>(get_bits(m.pixel_acc_alpha_o, k * ab, ab));
+  acc.value = static_cast<uint16_t>(get_bits(m.pixel_value_o, k * v, v));
+  acc.valid = get_bits(m.pixel_selected_o, k, 1) != 0;
+  return acc;
+}
+
 }  // namespace cube4::rtl

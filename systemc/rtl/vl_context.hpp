@@ -9,6 +9,8 @@
 #pragma once
 #include <verilated.h>
 
+#include <cstdint>
+
 namespace cube4::rtl {
 
 class ScopedVerilatedContext {
@@ -17,6 +19,15 @@ class ScopedVerilatedContext {
   ~ScopedVerilatedContext() { Verilated::threadContextp(before_); }
   ScopedVerilatedContext(const ScopedVerilatedContext&) = delete;
   ScopedVerilatedContext& operator=(const ScopedVerilatedContext&) = delete;
+
+  // A context for one simulated run: Verilator's random reset from `seed`
+  // (every register and memory the RTL does not reset starts from values
+  // drawn from it), tracing allowed when asked.
+  ScopedVerilatedContext(uint32_t seed, bool trace) : ScopedVerilatedContext() {
+    if (trace) ctx_.traceEverOn(true);
+    ctx_.randReset(2);
+    ctx_.randSeed(static_cast<int>(seed & 0x7FFFFFFF));
+  }
 
   VerilatedContext& operator*() { return ctx_; }
   VerilatedContext* operator->() { return &ctx_; }

@@ -13,8 +13,11 @@
 namespace cube4::sysc {
 
 inline golden::BasePlane run_tlm_frame(const FramePlan& plan, const golden::Volume& vol,
-                                       const golden::Progress& progress) {
-  return golden::render_fixed(vol, plan.r, nullptr, progress);
+                                       const golden::Progress& progress, bool accumulators = false) {
+  golden::FixedOptions opt;
+  opt.progress = progress;
+  opt.accumulators = accumulators;
+  return golden::render_fixed(vol, plan.r, opt);
 }
 
 }  // namespace cube4::sysc

@@ -154,9 +154,15 @@ struct RingFrame {
 
   void load(const std::string& json, const char* file, std::string frame_name) {
     const golden::Scene scene = golden::parse_scene(json, file);
-    vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, ".");
-    regs = golden::program_host(scene, vol).regs;
+    golden::Volume v = golden::load_volume(scene.volume, scene.precision.voxel_bits, ".");
+    const golden::Registers r = golden::program_host(scene, v).regs;
     name = std::move(frame_name);
+    use(std::move(v), r);
+  }
+  // Another volume and registers for the frame (a block of a partition).
+  void use(golden::Volume v, const golden::Registers& r) {
+    vol = std::move(v);
+    regs = r;
     nx = regs.dim[0];
     ny = regs.dim[1];
     nz = regs.dim[2];

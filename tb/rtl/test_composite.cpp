@@ -1,15 +1,14 @@
 // RTL equivalence tests of the compositor datapath, cube4_composite:
-// cropping, cut plane and blend, against the composition golden
-// shade_sample() (golden/pipeline.hpp) and blend() (golden/units/composite.hpp)
-// make of crop_visible, cut_distance, cut_factor, cut_alpha,
-// visible &= factor != 0, and blend.
+// cropping, block window, cut plane and blend, against golden
+// crop_and_cut() (golden/pipeline.hpp) and blend()
+// (golden/units/composite.hpp).
 //
 // Driven cycle by cycle, back to back and with random valid gaps (junk data
 // in the gaps); the predecessor accumulator of a sample is driven
 // kAccDelay cycles after the sample, as the unit's contract says, and junk
 // in the other cycles. Every output is compared with the golden result of
 // the input that entered kLatency cycles earlier (rtl_check.hpp). Frame
-// registers (mode, crop, cut) change only after the pipeline has drained.
+// registers (mode, crop, window, cut) change only after the pipeline has drained.
 //
 // CUBE4_RTL_VECTORS overrides the random vector count (default 1,000,000).
 #include <gtest/gtest.h>
@@ -99,6 +98,8 @@ struct Config {
   g::CropRegs crop;
   bool cut_enabled = false;
   g::CutRegs cut;
+  bool window_enabled = false;
+  g::WindowRegs window;
 };
 
 struct CompIn {
@@ -144,7 +145,14 @@ struct CompIn {
             {"cut_dmax", k.dmax},
             {"cut_falloff", k.falloff},
             {"cut_inv_falloff", static_cast<int64_t>(k.inv_falloff)},
-            {"cut_keep_inside", k.keep_inside}};
+            {"cut_keep_inside", k.keep_inside},
+            {"window_enabled", cfg.window_enabled},
+            {"window_x_lo", cfg.window.range[0][0]},
+            {"window_x_hi", cfg.window.range[0][1]},
+            {"window_y_lo", cfg.window.range[1][0]},
+            {"window_y_hi", cfg.window.range[1][1]},
+            {"window_z_lo", cfg.window.range[2][0]},
+            {"window_z_hi", cfg.window.range[2][1]}};
   }
 };
 
@@ -157,19 +165,31 @@ struct AccOut {
   }
 };
 
-// The golden composition, exactly as golden shade_sample() and blend() do it.
+// The frame registers as golden holds them.
+g::Registers registers_of(const Config& c, const g::Precision& p) {
+  g::Registers r;
+  r.p = p;
+  r.blend = c.mode;
+  r.crop_enabled = c.crop_enabled;
+  r.crop = c.crop;
+  r.cut_enabled = c.cut_enabled;
+  r.cut = c.cut;
+  r.window_enabled = c.window_enabled;
+  r.window = c.window;
+  return r;
+}
+
+// The golden composition: golden crop_and_cut() (cropping, block window,
+// cut plane) of the sample at its position, then blend().
 g::RayAcc golden_composite(const CompIn& in, const g::Precision& p) {
+  g::SliceControl sc;
+  sc.z_voxel = in.z;
+  sc.wx = in.wx;
+  sc.wy = in.wy;
+  sc.wz = in.wz;
   g::ShadedSample s = in.s;
   s.visible = true;
-  if (in.cfg.crop_enabled) s.visible = g::crop_visible(in.x, in.y, in.z, in.cfg.crop);
-  if (in.cfg.cut_enabled) {
-    const int w = p.weight_bits;
-    const int64_t d = g::cut_distance(in.cfg.cut, (int64_t{in.x} << w) + in.wx, (int64_t{in.y} << w) + in.wy,
-                                      (int64_t{in.z} << w) + in.wz, p);
-    const uint32_t f = g::cut_factor(d, in.cfg.cut, p);
-    s.alpha = g::cut_alpha(s.alpha, f, p);
-    if (f == 0) s.visible = false;
-  }
+  s = g::crop_and_cut(registers_of(in.cfg, p), sc, in.x, in.y, s);
   return g::blend(in.cfg.mode, in.acc, s, p);
 }
 
@@ -207,6 +227,13 @@ class CompositeBench {
     put(m->cut_falloff_i, c.cut.falloff, w.p.cut_bits);
     put(m->cut_inv_falloff_i, static_cast<int64_t>(c.cut.inv_falloff), w.inv_bits());
     m->cut_keep_inside_i = c.cut.keep_inside;
+    m->window_enabled_i = c.window_enabled;
+    put(m->window_x_lo_i, c.window.range[0][0], w.pos_bits);
+    put(m->window_x_hi_i, c.window.range[0][1], w.pos_bits);
+    put(m->window_y_lo_i, c.window.range[1][0], w.pos_bits);
+    put(m->window_y_hi_i, c.window.range[1][1], w.pos_bits);
+    put(m->window_z_lo_i, c.window.range[2][0], w.pos_bits);
+    put(m->window_z_hi_i, c.window.range[2][1], w.pos_bits);
   }
 
   void step(bool valid, CompIn in) {
@@ -272,10 +299,11 @@ class CompositeBench {
 
   // What the checked samples exercised (from golden values only).
   struct Coverage {
-    uint64_t crop_hidden = 0, crop_shown = 0, d_saturated = 0, cut_full = 0, cut_zero = 0, cut_ramp = 0,
+    uint64_t crop_hidden = 0, crop_shown = 0, window_hidden = 0, window_shown = 0, d_saturated = 0, cut_full = 0, cut_zero = 0, cut_ramp = 0,
              extreme_taken = 0, extreme_kept = 0, extreme_tie = 0, ftb_saturated = 0, ftb_opaque = 0;
     std::string str() const {
       return "crop hidden/shown " + std::to_string(crop_hidden) + "/" + std::to_string(crop_shown) +
+             ", window hidden/shown " + std::to_string(window_hidden) + "/" + std::to_string(window_shown) +
              ", cut factor one/zero/ramp " + std::to_string(cut_full) + "/" + std::to_string(cut_zero) + "/" +
              std::to_string(cut_ramp) + ", d saturated " + std::to_string(d_saturated) +
              ", MIP/MinIP taken/kept/ties " + std::to_string(extreme_taken) + "/" + std::to_string(extreme_kept) +
@@ -305,6 +333,7 @@ class CompositeBench {
     const g::Precision& p = w.p;
     Coverage& c = coverage;
     if (in.cfg.crop_enabled) ++(g::crop_visible(in.x, in.y, in.z, in.cfg.crop) ? c.crop_shown : c.crop_hidden);
+    if (in.cfg.window_enabled) ++(g::window_inside(in.x, in.y, in.z, in.cfg.window) ? c.window_shown : c.window_hidden);
     if (in.cfg.cut_enabled) {
       const int wb = p.weight_bits;
       const int64_t d = g::cut_distance(in.cfg.cut, (int64_t{in.x} << wb) + in.wx, (int64_t{in.y} << wb) + in.wy,
@@ -387,24 +416,25 @@ int64_t log_uniform(Random& rnd, int max_bits) {
 
 const uint8_t kMasks[] = {0x80, 0xFE, 0xE8, 0x7F, 0x01, 0x00, 0xFF, 0x17};
 
+// An inclusive range of positions, for crop slabs and window bounds.
+std::array<int32_t, 2> random_slab(Random& rnd, const Widths& w, int64_t pos_max) {
+  if (rnd.chance(0.1)) return {1, 0};  // empty (the host's encoding of a slab outside the volume)
+  if (rnd.chance(0.1)) return {0, static_cast<int32_t>(w.pos_max())};
+  int32_t lo = static_cast<int32_t>(rnd.range(0, pos_max)), hi = static_cast<int32_t>(rnd.range(0, pos_max));
+  if (lo > hi) std::swap(lo, hi);
+  return {lo, hi};
+}
+
 Config random_config(Random& rnd, const Widths& w, int64_t pos_max) {
   const g::Precision& p = w.p;
   Config c;
   c.mode_bits = static_cast<uint8_t>(rnd.range(0, 3));
   c.mode = static_cast<g::BlendMode>(c.mode_bits);
   c.crop_enabled = rnd.chance(0.5);
-  for (auto& s : c.crop.slab) {
-    if (rnd.chance(0.1)) {
-      s = {1, 0};  // empty (the host's encoding of a slab outside the volume)
-    } else if (rnd.chance(0.1)) {
-      s = {0, static_cast<int32_t>(w.pos_max())};
-    } else {
-      int32_t lo = static_cast<int32_t>(rnd.range(0, pos_max)), hi = static_cast<int32_t>(rnd.range(0, pos_max));
-      if (lo > hi) std::swap(lo, hi);
-      s = {lo, hi};
-    }
-  }
+  for (auto& s : c.crop.slab) s = random_slab(rnd, w, pos_max);
   c.crop.mask = rnd.chance(0.5) ? kMasks[rnd.range(0, 7)] : static_cast<uint8_t>(rnd.bits(8));
+  c.window_enabled = rnd.chance(0.4);
+  for (auto& s : c.window.range) s = random_slab(rnd, w, pos_max);
   c.cut_enabled = rnd.chance(0.6);
   const int64_t cmax = (int64_t{1} << (w.cut_coef_bits - 1)) - 1;
   if (rnd.chance(0.5)) {  // a host-like unit normal, 2^10 scale
@@ -462,9 +492,30 @@ void composite_random(const Widths& w, const std::string& name, long n) {
   EXPECT_TRUE(b.result());
   EXPECT_GE(b.vectors, static_cast<uint64_t>(n));
   const auto& c = b.coverage;
-  for (uint64_t k : {c.crop_hidden, c.crop_shown, c.d_saturated, c.cut_full, c.cut_zero, c.cut_ramp, c.extreme_taken,
+  for (uint64_t k : {c.crop_hidden, c.crop_shown, c.window_hidden, c.window_shown, c.d_saturated, c.cut_full, c.cut_zero, c.cut_ramp, c.extreme_taken,
                      c.extreme_kept, c.extreme_tie, c.ftb_saturated, c.ftb_opaque})
     EXPECT_GT(k, 0u) << "random stimulus missed a case: " << c.str();
+}
+
+// Samples at every combination of positions one before, on and one after
+// each bound of the three inclusive ranges (crop slabs or a window).
+template <class M>
+void sweep_bounds(CompositeBench<M>& b, Random& rnd, const Widths& w,
+                  const std::array<std::array<int32_t, 2>, 3>& ranges) {
+  std::array<std::vector<int32_t>, 3> pos;
+  for (int i = 0; i < 3; ++i)
+    for (int64_t v : {int64_t{ranges[i][0]} - 1, int64_t{ranges[i][0]}, int64_t{ranges[i][0]} + 1,
+                      int64_t{ranges[i][1]} - 1, int64_t{ranges[i][1]}, int64_t{ranges[i][1]} + 1})
+      if (v >= 0 && v <= w.pos_max()) pos[i].push_back(static_cast<int32_t>(v));
+  for (int32_t x : pos[0])
+    for (int32_t y : pos[1])
+      for (int32_t z : pos[2]) {
+        CompIn in = random_sample(rnd, w, 63);
+        in.x = x;
+        in.y = y;
+        in.z = z;
+        b.step(!rnd.chance(0.1), in);
+      }
 }
 
 template <class M>
@@ -489,23 +540,40 @@ void composite_crop_boundaries(const Widths& w, const std::string& name) {
       c.mode_bits = static_cast<uint8_t>(rnd.range(0, 2));
       c.mode = static_cast<g::BlendMode>(c.mode_bits);
       b.configure(c);
-      std::array<std::vector<int32_t>, 3> pos;
-      for (int i = 0; i < 3; ++i)
-        for (int64_t v : {int64_t{slabs[i][0]} - 1, int64_t{slabs[i][0]}, int64_t{slabs[i][0]} + 1,
-                          int64_t{slabs[i][1]} - 1, int64_t{slabs[i][1]}, int64_t{slabs[i][1]} + 1})
-          if (v >= 0 && v <= w.pos_max()) pos[i].push_back(static_cast<int32_t>(v));
-      for (int32_t x : pos[0])
-        for (int32_t y : pos[1])
-          for (int32_t z : pos[2]) {
-            CompIn in = random_sample(rnd, w, 63);
-            in.x = x;
-            in.y = y;
-            in.z = z;
-            b.step(!rnd.chance(0.1), in);
-          }
+      sweep_bounds(b, rnd, w, slabs);
     }
   }
   EXPECT_TRUE(b.result());
+}
+
+// The block window's bounds on every axis, alone and with cropping: each
+// position one before, on and one after each bound, and the empty window.
+template <class M>
+void composite_window_boundaries(const Widths& w, const std::string& name) {
+  CompositeBench<M> b(w, name);
+  Random rnd(706);
+  const int32_t top = static_cast<int32_t>(w.pos_max());
+  const std::vector<std::array<std::array<int32_t, 2>, 3>> windows = {
+      {{{1, 9}, {4, 4}, {0, 20}}},
+      {{{0, top}, {2, 6}, {top, top}}},
+      {{{1, 0}, {0, 5}, {3, 8}}},  // empty along x: nothing composites
+  };
+  for (const auto& win : windows)
+    for (bool crop : {false, true}) {
+      Config c;
+      c.window_enabled = true;
+      c.window.range = win;
+      c.crop_enabled = crop;
+      c.crop.slab = {{{0, 5}, {0, top}, {3, 30}}};
+      c.crop.mask = 0xFE;  // union: visible in any slab
+      c.mode_bits = static_cast<uint8_t>(rnd.range(0, 2));
+      c.mode = static_cast<g::BlendMode>(c.mode_bits);
+      b.configure(c);
+      sweep_bounds(b, rnd, w, win);
+    }
+  EXPECT_TRUE(b.result());
+  EXPECT_GT(b.coverage.window_hidden, 0u);
+  EXPECT_GT(b.coverage.window_shown, 0u);
 }
 
 template <class M>
@@ -689,6 +757,10 @@ TEST(RtlComposite, CropSlabBoundariesForEveryMaskBit) {
   composite_crop_boundaries<Vcube4_composite>(kW, "cube4_composite");
 }
 
+TEST(RtlComposite, BlockWindowBoundaries) {
+  composite_window_boundaries<Vcube4_composite>(kW, "cube4_composite");
+}
+
 TEST(RtlComposite, CutPlaneBoundaries) { composite_cut_boundaries<Vcube4_composite>(kW, "cube4_composite"); }
 
 TEST(RtlComposite, MipMinIpTiesAndAlphaExtremes) {
@@ -724,6 +796,7 @@ TEST(RtlComposite, OtherWidths) {
   const std::string name = "cube4_composite (narrow widths)";
   composite_random<Vcube4_composite_narrow>(w, name, 300000);
   composite_crop_boundaries<Vcube4_composite_narrow>(w, name);
+  composite_window_boundaries<Vcube4_composite_narrow>(w, name);
   composite_cut_boundaries<Vcube4_composite_narrow>(w, name);
   composite_ties_and_extremes<Vcube4_composite_narrow>(w, name);
   composite_host<Vcube4_composite_narrow>(w, name, kNarrowPrecisionJson);

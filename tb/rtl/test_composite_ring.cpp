@@ -37,6 +37,7 @@
 #include "golden/pipeline.hpp"
 #include "golden/renderers.hpp"
 #include "tb/rtl/ring_bench.hpp"
+#include "golden/blocks.hpp"
 #include "systemc/rtl/unit_registers.hpp"
 #include "systemc/rtl/unit_streams.hpp"
 #include "tb/rtl/rtl_check.hpp"
@@ -64,7 +65,7 @@ struct Sample {
 };
 
 struct Frame : RingFrame {
-  g::BasePlane golden;  // render_fixed(), with cropping and cut plane
+  g::BasePlane golden;  // render_fixed(), with cropping, cut plane and accumulators
   int last_ix = 0, last_iy = 0;
   std::vector<g::SliceControl> ctrl;  // per sample slice
   std::vector<Sample> samples;        // [(k * ny + y) * nx + x], before cropping and cut plane
@@ -121,8 +122,10 @@ struct VolumeSpec {
   int seed;
 };
 
+// block >= 0: that block of the volume cut 2x2x2 (golden/blocks.hpp): its
+// volume and its registers, with the block window.
 const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const std::array<double, 3>& up, int S,
-                   const Effects& fx, const std::string& view_name) {
+                   const Effects& fx, const std::string& view_name, int block = -1) {
   std::ostringstream js;
   js << R"({"volume": {"synthetic": ")" << vs.kind << R"(", "size": [)" << vs.size[0] << ", " << vs.size[1] << ", "
      << vs.size[2] << "]";
@@ -130,22 +133,32 @@ const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const
   js << R"(}, "view": {"direction": )" << vec_json(dir) << R"(, "up": )" << vec_json(up) << R"(, "ray_offset": [0.3, 0.6]})"
      << R"(, "supersampling": )" << S << ", " << kTransfer << ", " << fx.json << "}";
   const std::string json = js.str();
-  return cached_frame<Frame>(json, [&](Frame& fr) {
+  return cached_frame<Frame>(json + " block " + std::to_string(block), [&](Frame& fr) {
     Frame* f = &fr;
     std::ostringstream n;
     n << fx.name << ", " << vs.kind << " " << vs.size[0] << "x" << vs.size[1] << "x" << vs.size[2] << ", view "
       << view_name << ", S=" << S;
+    if (block >= 0) n << ", block " << block << " of 2x2x2";
     f->load(json, "test_composite_ring.json", n.str());
+    if (block >= 0) {
+      const g::BlockPlan plan = g::plan_blocks(f->regs, f->vol.dim, {2, 2, 2}, "test blocks");
+      const g::Block& b = plan.blocks.at(static_cast<size_t>(block));
+      f->use(g::block_volume(f->vol, b), b.regs);
+      EXPECT_TRUE(f->regs.window_enabled) << f->name;
+    }
     const g::Registers& r = f->regs;
     const g::Volume& vol = f->vol;
     f->last_ix = r.x_offset(f->K - 1).integer;
     f->last_iy = r.y_offset(f->K - 1).integer;
     for (int k = 0; k < f->K; ++k) f->ctrl.push_back(g::slice_control(r, k));
     // The golden base plane, and the samples the compositor receives.
-    f->golden = g::render_fixed(vol, r);
+    g::FixedOptions with_acc;
+    with_acc.accumulators = true;
+    f->golden = g::render_fixed(vol, r, with_acc);
     g::Registers open = r;
     open.crop_enabled = false;
     open.cut_enabled = false;
+    open.window_enabled = false;
     f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, Sample{});
     Collect probe(*f);
     const g::BasePlane unclipped = g::render_fixed(vol, open, nullptr, {}, &probe);
@@ -187,7 +200,8 @@ struct Config {
   bool operator==(const Config& o) const {
     const g::CutRegs &c = r.cut, &d = o.r.cut;
     return r.blend == o.r.blend && r.crop_enabled == o.r.crop_enabled && r.crop.slab == o.r.crop.slab &&
-           r.crop.mask == o.r.crop.mask && r.cut_enabled == o.r.cut_enabled && c.a == d.a && c.b == d.b &&
+           r.crop.mask == o.r.crop.mask && r.window_enabled == o.r.window_enabled &&
+           r.window.range == o.r.window.range && r.cut_enabled == o.r.cut_enabled && c.a == d.a && c.b == d.b &&
            c.c == d.c && c.dmin == d.dmin && c.dmax == d.dmax && c.falloff == d.falloff &&
            c.inv_falloff == d.inv_falloff && c.keep_inside == d.keep_inside;
   }
@@ -432,6 +446,17 @@ RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const S
           << " y=" << e->y << "), " << where.str();
         fail(o.str());
       }
+      // The same ray's accumulator: the partial image of a block.
+      const g::RayAcc acc = composite_pixel_acc(m, q, kDefaults);
+      const g::RayAcc& want = f.golden.acc[pix];
+      if (!(acc == want)) {
+        std::ostringstream o;
+        o << "first mismatching accumulator of pixel (u=" << u << ", v=" << v << "): expected (r, g, b, a, value, "
+          << "selected) = (" << want.r << ", " << want.g << ", " << want.b << ", " << want.a << ", " << want.value
+          << ", " << want.valid << "), got (" << acc.r << ", " << acc.g << ", " << acc.b << ", " << acc.a << ", "
+          << acc.value << ", " << acc.valid << ") at " << where.str();
+        fail(o.str());
+      }
     }
     cube4::rtl::rise(m);
   }
@@ -549,6 +574,30 @@ void all_rings_check(const std::vector<const Frame*>& frames, const StreamOption
   check_ring<Vcube4_composite_ring_p2>(kRingP2, frames, opt, salt + 2);
   check_ring<Vcube4_composite_ring>(kRingP4, frames, opt, salt + 4);
   check_ring<Vcube4_composite_ring_p5>(kRingP5, frames, opt, salt + 5);
+}
+
+// Blocks of a partitioned volume (golden/blocks.hpp): the window keeps the
+// border's samples out of the rays, and the pixel ports carry every ray's
+// accumulator (the partial image) as well as its pixel. Blocks from the
+// front, the middle and the back of the plan (each with a border, so with
+// a window: the last block of an unshaded frame has none), from four base
+// planes,
+// shaded, MIP and with cropping and the cut plane; back to back too.
+TEST(RtlCompositeRing, BlocksOfAPartitionedVolume) {
+  Timer t("blocks of a partitioned volume");
+  const VolumeSpec cube{"noise", {16, 16, 16}, 41};
+  const Frame& a = frame(cube, {0.35, -0.3, 1}, {0, 1, 0}, 1, kEffects[0], "+z tilted", 0);
+  const Frame& b = frame(cube, {-1, -0.2, 0.35}, {0, 1, 0}, 2, kEffects[1], "-x tilted", 5);
+  const Frame& c = frame(cube, {-0.4, -1, -0.3}, {0, 0, 1}, 1, kEffects[5], "-y tilted", 6);
+  const Frame& d = frame(cube, {0.3, 0.45, -1}, {0, 1, 0}, 1, kEffects[3], "-z tilted", 7);
+  for (const Frame* f : {&a, &b, &c, &d}) {
+    EXPECT_GT(f->clipped_pixels, 0) << f->name << ": the window changes no pixel";
+    StreamOptions opt;
+    opt.stall = 0.2;
+    all_rings_check({f}, opt, 7100);
+    if (::testing::Test::HasFailure()) return;
+  }
+  all_rings_check({&a, &b, &c, &d}, StreamOptions{}, 7200);
 }
 
 // Frames back to back without a reset: with the same compositor registers

@@ -279,3 +279,71 @@ TEST_F(Cli, XySupersamplingRendersCheckedFramesAndBlendsThem) {
     }
   }
 }
+
+// Sub-cubes (--blocks, or the scene's "blocks"): the partitioned image is
+// the same at every level (fixed, tlm, rtl, the network alone at RTL) and
+// differs from the one pass image only by the merges' rounding; MIP's is
+// the one pass image. The report says how the volume was cut and what
+// the machines and the network cost.
+TEST_F(Cli, BlocksRenderTheSameImageAtEveryLevel) {
+  const std::string plain = write("p.json", kSphere);
+  std::string with_key = kSphere;
+  with_key.insert(with_key.rfind('}'), R"(, "blocks": [2, 1, 2])");
+  const std::string scene = write("s.json", with_key);
+  auto render = [&](const std::string& s, const std::string& args) {
+    const std::string rep = path("r.json");
+    const CliResult r = run("render " + s + " " + args + " -q -o " + path("o.png") + " --report " + rep);
+    EXPECT_EQ(r.code, 0) << args << "\n" << r.err;
+    nlohmann::json j;
+    std::ifstream(rep) >> j;
+    return j;
+  };
+  const nlohmann::json one = render(plain, "--model fixed");
+  const nlohmann::json fixed = render(scene, "--model fixed");
+  EXPECT_EQ(fixed["blocks"]["machines"], 4);
+  EXPECT_EQ(fixed["blocks"]["counts"], nlohmann::json::array({2, 1, 2}));
+  EXPECT_EQ(render(plain, "--model fixed --blocks 2x1x2")["baseplane_hash_fnv1a64"], fixed["baseplane_hash_fnv1a64"]);
+  EXPECT_EQ(render(scene, "--model fixed --blocks 1x1x1")["baseplane_hash_fnv1a64"], one["baseplane_hash_fnv1a64"]);
+  std::vector<std::string> models = {"tlm"};
+  if (CUBE4_TEST_RTL) models.insert(models.end(), {"rtl", "mixed:compose"});
+  for (const std::string& model : models) {
+    const nlohmann::json j = render(scene, "--model " + model);
+    EXPECT_EQ(j["baseplane_hash_fnv1a64"], fixed["baseplane_hash_fnv1a64"]) << model;
+    const nlohmann::json& s = j["system"];
+    EXPECT_EQ(s["machines"], 4) << model;
+    EXPECT_EQ(s["network"]["nodes"], 3) << model;
+    EXPECT_EQ(s["network"]["depth"], 2) << model;
+    EXPECT_EQ(s["network"]["level"], model == "tlm" ? "tlm" : "rtl") << model;
+    EXPECT_EQ(s["per_machine"].size(), 4u) << model;
+    EXPECT_GT(s["cycles_per_frame"].get<uint64_t>(), s["network"]["cycles"].get<uint64_t>()) << model;
+    if (model != "tlm") {
+      EXPECT_EQ(s["check"].get<std::string>().rfind("passed", 0), 0u) << model << ": " << s["check"];
+    }
+  }
+  // The float and reference renderers have no machines: one pass, said so.
+  EXPECT_NE(render(scene, "--model float")["blocks"].get<std::string>().find("one pass"), std::string::npos);
+  std::string mip = kSphere;
+  mip.insert(mip.rfind('}'), R"(, "blend": "mip", "shading": false)");
+  const std::string mip_scene = write("m.json", mip);
+  EXPECT_EQ(render(mip_scene, "--model tlm --blocks 3x2x1")["baseplane_hash_fnv1a64"],
+            render(mip_scene, "--model fixed")["baseplane_hash_fnv1a64"]);
+}
+
+TEST_F(Cli, BlocksThatDoNotDivideSensiblyExitTwo) {
+  const std::string scene = write("s.json", kSphere);
+  const CliResult thin = run("render " + scene + " --blocks 1x5x1 -q -o " + path("o.png"));
+  EXPECT_EQ(thin.code, 2);
+  EXPECT_NE(thin.err.find("--blocks 1x5x1: y 5 blocks of a volume 16 voxels long"), std::string::npos) << thin.err;
+  EXPECT_NE(thin.err.find("at most 4 blocks along y"), std::string::npos) << thin.err;
+  for (const char* bad : {"2x2", "2x2x0", "axbxc", "2x2x2x2", "-1x1x1"}) {
+    const CliResult r = run("render " + scene + " --blocks " + bad + " -q -o " + path("o.png"));
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find(std::string("--blocks ") + bad), std::string::npos) << r.err;
+  }
+  std::string key = kSphere;
+  key.insert(key.rfind('}'), R"(, "blocks": [1, 1, 9])");
+  const CliResult k = run("render " + write("k.json", key) + " -q -o " + path("o.png"));
+  EXPECT_EQ(k.code, 2);
+  EXPECT_NE(k.err.find("k.json: blocks: z 9 blocks"), std::string::npos) << k.err;
+  EXPECT_FALSE(fs::exists(path("o.png")));
+}
