@@ -176,15 +176,24 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       Rgb q{};
       for (int i = 0; i < 3; ++i) q[static_cast<size_t>(i)] = static_cast<uint32_t>(quantise_unit(rgb[i], p.alpha_bits));
       const Pixel px = polygon_pixel(q, alpha, p);
+      Vec3 uvd[3];
+      for (int i = 0; i < 3; ++i) uvd[i] = frame.to_base(f.to_permuted(m.vertices[t[static_cast<size_t>(i)]]));
+      // Wholly beside the base plane: no pixel, whatever its range.
+      bool beside = false;
+      for (int axis = 0; axis < 2; ++axis) {
+        const double size = axis == 0 ? W : H;
+        beside = beside || std::max({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) < 0 ||
+                 std::min({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) > size - 1;
+      }
+      if (beside) continue;
       BaseVertex<int64_t> corner[3];
       for (int i = 0; i < 3; ++i) {
-        const Vec3 uvd = frame.to_base(f.to_permuted(m.vertices[t[static_cast<size_t>(i)]]));
-        for (double x : uvd)
+        for (double x : uvd[i])
           if (!(std::fabs(x) <= kRange))
             throw InputError(scene_name(s) + ": \"" + m.key + "\" has a vertex at base-plane (u, v, depth) = (" +
-                             fmt(uvd[0]) + ", " + fmt(uvd[1]) + ", " + fmt(uvd[2]) +
+                             fmt(uvd[i][0]) + ", " + fmt(uvd[i][1]) + ", " + fmt(uvd[i][2]) +
                              "), beyond the rasteriser's range of ±2^30 pixels and sample slices");
-        corner[i] = {snap(uvd[0], kSubpixelBits), snap(uvd[1], kSubpixelBits), snap(uvd[2], kZFracBits)};
+        corner[i] = {snap(uvd[i][0], kSubpixelBits), snap(uvd[i][1], kSubpixelBits), snap(uvd[i][2], kZFracBits)};
       }
       scan_triangle<int64_t>(corner[0], corner[1], corner[2], int64_t{1} << kSubpixelBits, W, H,
                              [&](int u, int v, int64_t depth) {

@@ -54,7 +54,7 @@ HostProgram program_host(const Scene& s, const Volume& vol, const std::vector<Me
 // program_host above, with these meshes). Each scene pipeline's slab
 // lines are its own (lanes = s.pipelines). Throws InputError for a vertex
 // beyond the rasteriser's range (±2^30 pixels or sample slices from the
-// base plane's origin).
+// base plane's origin) of a triangle that reaches the base plane.
 PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes, const HostProgram& h);
 
 // Snapped vertex positions: 1/2^kSubpixelBits of a pixel, depth in units of

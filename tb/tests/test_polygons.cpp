@@ -573,6 +573,20 @@ TEST(Polygons, SkippingAndThreadsStayExact) {
   }
 }
 
+TEST(Polygons, FarVerticesAreSkippedBesideTheBasePlaneAndRefusedOnIt) {
+  const std::string far = plane(2, {1e12, 0, 0}, 4, "[1, 1, 1]", 1);
+  EXPECT_EQ(hybrid(constant_scene(8, direction(2, 1), far)).frame.counts.opaque, 0u);
+  const std::string across = R"({"shape": "box", "size": [1e10, 2, 2], "transform": {"translate": [3.5, 3.5, 3.5]}})";
+  try {
+    hybrid(constant_scene(8, direction(2, 1), far + ", " + across));
+    FAIL() << "no error";
+  } catch (const golden::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("test.json: \"polygons[1]\" has a vertex at base-plane (u, v, depth) = (-5e+09"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Polygons, MaximumIntensityProjectionIsRefused) {
   try {
     hybrid(constant_scene(8, direction(2, 1), plane(2, {3.5, 3.5, 3.5}, 10, "[1, 1, 1]", 1), R"(, "blend": "mip")"));
