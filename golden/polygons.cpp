@@ -178,12 +178,13 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       const Pixel px = polygon_pixel(q, alpha, p);
       Vec3 uvd[3];
       for (int i = 0; i < 3; ++i) uvd[i] = frame.to_base(f.to_permuted(m.vertices[t[static_cast<size_t>(i)]]));
-      // Wholly beside the base plane: no pixel, whatever its range.
+      // A pixel or more beside the base plane: no pixel centre, snapped or
+      // not, whatever the vertices' range.
       bool beside = false;
       for (int axis = 0; axis < 2; ++axis) {
         const double size = axis == 0 ? W : H;
-        beside = beside || std::max({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) < 0 ||
-                 std::min({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) > size - 1;
+        beside = beside || std::max({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) < -1 ||
+                 std::min({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) > size;
       }
       if (beside) continue;
       BaseVertex<int64_t> corner[3];
