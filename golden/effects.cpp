@@ -34,6 +34,7 @@ EffectSet effects_of(const Scene& s) {
   e.cropping = s.cropping.enabled;
   e.cut_plane = s.cut.enabled;
   e.supersampling = s.supersampling > 1;
+  e.polygons = !s.polygons.empty();
   return e;
 }
 
@@ -42,7 +43,7 @@ std::vector<std::string> EffectSet::names() const {
   const std::pair<bool, const char*> flags[] = {
       {gradient, "gradient"},   {magnitude, "magnitude"}, {shading, "shading"},
       {specular, "specular"},   {cropping, "cropping"},   {cut_plane, "cut_plane"},
-      {supersampling, "supersampling"},
+      {supersampling, "supersampling"}, {polygons, "polygons"},
   };
   for (const auto& [on, name] : flags)
     if (on) out.push_back(name);

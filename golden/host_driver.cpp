@@ -13,11 +13,11 @@
 #include "golden/units/shade_cube_map.hpp"
 
 namespace cube4::golden {
-namespace {
-
 int64_t quantise_unit(double v, int bits) {
   return sat_unsigned(std::llround(std::clamp(v, 0.0, 1.0) * max_unsigned(bits)), bits);
 }
+
+namespace {
 
 // Reflectance-map entries saturate at the map's width by design (bright
 // lights clip); clamping before rounding keeps that true for any intensity,

@@ -25,6 +25,10 @@ HostProgram program_host(const Scene& s, const Volume& vol);
 // as an ordinary frame.
 std::vector<Scene> xy_subframes(const Scene& s);
 
+// A unit value in [0, 1] (clamped) as a bits-wide integer, rounded to
+// nearest: 1 is 2^bits - 1. How every table, colour and opacity is made.
+int64_t quantise_unit(double v, int bits);
+
 // Pieces of program_host, exposed for tests and for the RTL testbenches.
 std::vector<ClassEntry> build_classification(const Scene& s, double step_ratio);
 std::vector<uint16_t> build_gm_lut(const Scene& s);

@@ -480,6 +480,7 @@ Mesh load_mesh(const MeshSpec& spec, const std::string& scene_file, const std::s
   if (m.triangles.empty())
     fail_key(scene_file, spec.key + ".transform",
              " makes every triangle of " + what_value + " degenerate (zero area)");
+  m.key = spec.key;
   m.color = spec.color;
   m.opacity = spec.opacity;
   m.lit = spec.lit;

@@ -3,7 +3,8 @@
 // A MeshSpec (golden/scene.hpp) is what the scene says, parsed by scene_io;
 // load_mesh turns it into a Mesh: read from a file through assimp (OBJ, PLY, STL, ...) or
 // generated (box, sphere, cylinder, needle, plane), then transformed.
-// The renderers do not draw meshes yet.
+// The renderers draw them: the host rasteriser (golden/polygons.hpp) for the
+// fixed renderer, the float and reference renderers themselves.
 #pragma once
 #include <array>
 #include <cstddef>
@@ -16,6 +17,7 @@
 namespace cube4::golden {
 
 struct Mesh {
+  std::string key;                             // the scene's "polygons[i]", for messages
   std::string source;                          // resolved file path, or "box", "sphere", ...
   std::vector<Vec3> vertices;                  // volume coordinates
   std::vector<std::array<uint32_t, 3>> triangles;  // indices into vertices, counter-clockwise seen from outside
@@ -52,7 +54,7 @@ std::vector<Mesh> load_meshes(const Scene& scene, const std::string& scene_dir);
 // p' = T · p for one point.
 Vec3 apply(const MeshTransform& t, const Vec3& p);
 
-// Geometry used by tests and, later, the renderers.
+// Geometry used by tests and reports.
 double surface_area(const Mesh& m);
 double enclosed_volume(const Mesh& m);   // signed, by the divergence theorem; > 0 when wound outwards
 bool is_closed(const Mesh& m);           // every edge in exactly two triangles, in opposite directions

@@ -46,6 +46,11 @@ struct Registers {
   bool window_enabled = false;
   WindowRegs window;
 
+  // Cube-5 polygons (golden/polygons.hpp): base-plane pixels added before
+  // (lo) and after (hi) the volume's footprint in u and v, so that polygons
+  // beside the volume have rays too. Zero without polygons.
+  std::array<int, 2> margin_lo{0, 0}, margin_hi{0, 0};
+
   int sample_slices() const { return dim[2] * supersampling; }
   SliceOffset x_offset(int k) const {
     return dda_split(dda_position(x_start, x_step, k), p.dda_frac_bits, p.weight_bits);
@@ -54,8 +59,12 @@ struct Registers {
     return dda_split(dda_position(y_start, y_step, k), p.dda_frac_bits, p.weight_bits);
   }
   // Base plane: one pixel per ray; rays enter through the front or a side face.
-  int base_width() const { return dim[0] + x_offset(sample_slices() - 1).integer; }
-  int base_height() const { return dim[1] + y_offset(sample_slices() - 1).integer; }
+  // The sample (x, y) of slice k lies on the ray of pixel
+  // (x - ix_k + base_origin_x(), y - iy_k + base_origin_y()).
+  int base_origin_x() const { return margin_lo[0] + x_offset(sample_slices() - 1).integer; }
+  int base_origin_y() const { return margin_lo[1] + y_offset(sample_slices() - 1).integer; }
+  int base_width() const { return base_origin_x() + dim[0] + margin_hi[0]; }
+  int base_height() const { return base_origin_y() + dim[1] + margin_hi[1]; }
 };
 
 }  // namespace cube4::golden

@@ -37,7 +37,7 @@ class Band {
  public:
   Band(const Frame& f, int v0, int v1)
       : f_(f), r_(f.r), nx_(r_.dim[0]), ny_(r_.dim[1]), K_(r_.sample_slices()), reach_(r_.gradient ? 1 : 0),
-        iy_last_(r_.y_offset(K_ - 1).integer), v0_(v0), v1_(v1), vox_lo_(nx_, ny_, 1), vox_hi_(nx_, ny_, 1),
+        iy_last_(r_.base_origin_y()), v0_(v0), v1_(v1), vox_lo_(nx_, ny_, 1), vox_hi_(nx_, ny_, 1),
         interp_(nx_, ny_, r_.p.weight_bits), spans_(static_cast<size_t>(ny_)) {}
 
   void run(const Progress* progress) {
@@ -149,7 +149,7 @@ class Band {
 // interpolation and the samples that may change their ray.
 std::vector<int> band_edges(const Registers& r, const SkipMap& skip, int bands) {
   const int height = r.base_height(), K = r.sample_slices(), ny = r.dim[1];
-  const int iy_last = r.y_offset(K - 1).integer;
+  const int iy_last = r.base_origin_y();
   std::vector<double> work(static_cast<size_t>(height), 0.0);
   for (int k = 0; k < K; ++k) {
     const int iy = r.y_offset(k).integer, z = z_voxel_slice(k, r.supersampling);
@@ -183,7 +183,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions
     ranges = opt.ranges ? opt.ranges : &own;
   }
   const SkipMap skip(r, ranges);
-  SliceCompositor compositor(r, bp);
+  SliceCompositor compositor(r, bp, opt.polygons);
   // Up to 10-bit gradients a table of the cube-map divisions (1 MB at most)
   // is cheaper than dividing per sample.
   std::unique_ptr<FacePositionTable> faces;

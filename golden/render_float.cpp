@@ -4,10 +4,14 @@
 // of through tables. The difference to render_fixed is the price of the widths.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <vector>
 
 #include "golden/fixed.hpp"
 #include "golden/permuted_volume.hpp"
+#include "golden/polygons.hpp"
+#include "golden/rasterise.hpp"
 #include "golden/renderers.hpp"
 #include "golden/shading_model.hpp"
 #include "golden/units/composite_ray_align.hpp"
@@ -78,12 +82,90 @@ double realigned(const PlaneF& s, int x, int y, double ddx, double ddy) {
   return a + wy * (b - a);
 }
 
-struct AccF { double r = 0, g = 0, b = 0, a = 0, value = 0; bool valid = false; };
+struct AccF {
+  double r = 0, g = 0, b = 0, a = 0, value = 0;
+  bool valid = false;
+  // acc over a layer of colour c and opacity alpha behind it.
+  void over(const Vec3& c, double alpha) {
+    const double t = (1 - a) * alpha;
+    r += t * c[0]; g += t * c[1]; b += t * c[2]; a += t;
+  }
+};
+
+// The polygons of the frame in real arithmetic: the golden rasteriser's
+// scan conversion in doubles (no snapping, exact depth), and per
+// base-plane pixel the ray's translucent fragments in depth order and its
+// nearest opaque one. Compositing them with the samples in depth order is
+// what the fixed renderer's front, slab and back images arrange.
+class PolygonsF {
+ public:
+  PolygonsF(const Scene& s, const std::vector<Mesh>& meshes, const ViewFactorisation& f, const BaseFrame& frame,
+            int width, int height)
+      : hits_(static_cast<size_t>(width) * height), next_(hits_.size(), 0), done_(hits_.size(), false),
+        z_(hits_.size(), std::numeric_limits<double>::infinity()), opaque_(hits_.size()) {
+    const Lighting L = lighting_of(s, f);
+    for (const Mesh& m : meshes) {
+      if (!(m.opacity > 0)) continue;
+      for (const auto& t : m.triangles) {
+        const Vec3 rgb = polygon_color(s, L, f, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], m.color, m.lit);
+        BaseVertex<double> c[3];
+        for (int i = 0; i < 3; ++i) {
+          const Vec3 b = frame.to_base(f.to_permuted(m.vertices[t[static_cast<size_t>(i)]]));
+          c[i] = {b[0], b[1], b[2]};
+        }
+        scan_triangle<double>(c[0], c[1], c[2], 1.0, width, height, [&](int u, int v, double d) {
+          const size_t i = static_cast<size_t>(v) * width + u;
+          if (m.opacity < 1) {
+            hits_[i].push_back({d, rgb, m.opacity});
+          } else if (d < z_[i]) {
+            z_[i] = d;
+            opaque_[i] = rgb;
+          }
+        });
+      }
+    }
+    for (size_t i = 0; i < hits_.size(); ++i) {
+      auto& h = hits_[i];
+      h.erase(std::remove_if(h.begin(), h.end(), [&](const Hit& x) { return x.d >= z_[i]; }), h.end());
+      std::stable_sort(h.begin(), h.end(), [](const Hit& x, const Hit& y) { return x.d < y.d; });
+    }
+  }
+  // Before sample slice k of pixel i's ray: its fragments at depths up to
+  // k; true if the sample lies in front of the opaque surface.
+  bool before_sample(size_t i, int k, AccF& acc) {
+    const auto& h = hits_[i];
+    while (next_[i] < h.size() && h[next_[i]].d <= k) over(acc, h[next_[i]++]);
+    return k < z_[i];
+  }
+  // The ray leaves: the rest of its fragments, then the opaque surface.
+  AccF leave(size_t i, AccF acc) {
+    const auto& h = hits_[i];
+    while (next_[i] < h.size()) over(acc, h[next_[i]++]);
+    if (z_[i] < std::numeric_limits<double>::infinity()) acc.over(opaque_[i], 1.0);
+    done_[i] = true;
+    return acc;
+  }
+  bool done(size_t i) const { return done_[i]; }
+
+ private:
+  struct Hit {
+    double d;
+    Vec3 rgb;
+    double alpha;
+  };
+  static void over(AccF& acc, const Hit& h) { acc.over(h.rgb, h.alpha); }
+  std::vector<std::vector<Hit>> hits_;
+  std::vector<size_t> next_;
+  std::vector<bool> done_;
+  std::vector<double> z_;
+  std::vector<Vec3> opaque_;
+};
 
 }  // namespace
 
 BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f, RenderStats* stats,
-                        const Progress& progress) {
+                        const Progress& progress, const std::vector<Mesh>& meshes) {
+  check_polygon_scene(s, meshes);
   const int nx = f.pdim[0], ny = f.pdim[1];
   const int S = s.supersampling, K = f.pdim[2] * S;
   FloatView fv{vol, f, K, S, s.view.ray_offset[0], s.view.ray_offset[1], f.shear_x / S, f.shear_y / S};
@@ -97,14 +179,24 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
   const CropRegs crop = permute_cropping(s.cropping, f);
   const PermutedCutPlane cut = permute_cut_plane_real(s.cut, f);
 
-  const int ix_last = fv.x_offset(K - 1).integer, iy_last = fv.y_offset(K - 1).integer;
+  // Sample (x, y) of slice k is on the ray of pixel (x - ix_k + origin_x, y - iy_k + origin_y).
+  BaseFrame frame{fv.ox0, fv.stepx, fv.oy0, fv.stepy, fv.x_offset(K - 1).integer, fv.y_offset(K - 1).integer, S};
+  Margins margins;
+  if (!meshes.empty()) margins = polygon_margins(meshes, f, frame, nx + frame.origin_x, ny + frame.origin_y);
+  frame.origin_x += margins.lo[0];
+  frame.origin_y += margins.lo[1];
+  const int ix_last = frame.origin_x, iy_last = frame.origin_y;
   BasePlaneF out;
-  out.image.width = nx + ix_last;
-  out.image.height = ny + iy_last;
+  out.image.width = nx + ix_last + margins.hi[0];
+  out.image.height = ny + iy_last + margins.hi[1];
   out.image.rgba.assign(static_cast<size_t>(out.image.width) * out.image.height * 4, 0.0f);
   out.shift_x = ix_last - fv.ox0;
   out.shift_y = iy_last - fv.oy0;
-  auto write = [&](int u, int v, const AccF& a) {
+  std::optional<PolygonsF> poly;
+  if (!meshes.empty()) poly.emplace(s, meshes, f, frame, out.image.width, out.image.height);
+  auto index = [&](int u, int v) { return static_cast<size_t>(v) * out.image.width + u; };
+  auto write = [&](int u, int v, const AccF& ray) {
+    const AccF a = poly ? poly->leave(index(u, v), ray) : ray;
     float* px = out.image.pixel(u, v);
     px[0] = static_cast<float>(a.r); px[1] = static_cast<float>(a.g);
     px[2] = static_cast<float>(a.b); px[3] = static_cast<float>(a.a);
@@ -162,6 +254,8 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
         }
         const Predecessor pred = ray_predecessor(x, y, dx, dy);
         AccF acc = pred.exists ? prev[static_cast<size_t>(pred.y) * nx + pred.x] : AccF{};
+        if (poly && !poly->before_sample(index(x - ox.integer + ix_last, y - oy.integer + iy_last), k, acc))
+          visible = false;
         if (visible) {
           if (s.blend == Blend::Composite) {
             const double t = (1 - acc.a) * alpha;
@@ -191,6 +285,11 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
   for (int y = 0; y < ny; ++y)
     for (int x = 0; x < nx; ++x)
       write(x - lx.integer + ix_last, y - ly.integer + iy_last, prev[static_cast<size_t>(y) * nx + x]);
+  // Rays that met no sample: their polygons alone.
+  if (poly)
+    for (int v = 0; v < out.image.height; ++v)
+      for (int u = 0; u < out.image.width; ++u)
+        if (!poly->done(index(u, v))) write(u, v, AccF{});
   if (stats) {
     stats->samples = static_cast<uint64_t>(nx) * ny * K;
     stats->slices = K;

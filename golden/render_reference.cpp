@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <vector>
 
 #include "golden/fixed.hpp"
+#include "golden/polygons.hpp"
 #include "golden/renderers.hpp"
 #include "golden/shading_model.hpp"
 
@@ -39,6 +42,88 @@ bool object_crop_visible(const Cropping& c, const Vec3& p) {
     if (c.slab[i][0] <= q && q <= c.slab[i][1]) index |= 1 << i;
   }
   return (c.mask >> index) & 1;
+}
+
+// Möller–Trumbore: the t at which o + t·d meets triangle (a, b, c), edges
+// and corners included, or nothing (a ray in the triangle's plane misses
+// it). No tie rule: a ray exactly through an edge meets both triangles that
+// share it, which the views measured never do (docs/accuracy.md).
+std::optional<double> intersect(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c) {
+  auto sub = [](const Vec3& x, const Vec3& y) { return Vec3{x[0] - y[0], x[1] - y[1], x[2] - y[2]}; };
+  auto cross = [](const Vec3& x, const Vec3& y) {
+    return Vec3{x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]};
+  };
+  auto dot = [](const Vec3& x, const Vec3& y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  const Vec3 e1 = sub(b, a), e2 = sub(c, a), q = cross(d, e2);
+  const double det = dot(e1, q);
+  if (det == 0) return std::nullopt;
+  const Vec3 s = sub(o, a);
+  const double u = dot(s, q) / det;
+  if (u < 0 || u > 1) return std::nullopt;
+  const Vec3 r = cross(s, e1);
+  const double v = dot(d, r) / det;
+  if (v < 0 || u + v > 1) return std::nullopt;
+  return dot(e2, r) / det;
+}
+
+struct Hit {
+  double t;
+  Vec3 rgb;
+  double alpha;
+};
+
+// Every polygon hit of every image pixel's ray, in depth order, and the
+// nearest opaque one (t = infinity: none); translucent hits at or behind
+// it are hidden and left out.
+struct PolygonHits {
+  std::vector<std::vector<Hit>> translucent;
+  std::vector<Hit> opaque;
+};
+
+PolygonHits polygon_hits(const Scene& s, const std::vector<Mesh>& meshes, const ViewFactorisation& f, const Vec3& d,
+                         int width, int height) {
+  const size_t n = static_cast<size_t>(width) * height;
+  PolygonHits h{std::vector<std::vector<Hit>>(n), std::vector<Hit>(n, Hit{std::numeric_limits<double>::infinity(), {}, 1})};
+  const Lighting L = lighting_of(s, f);
+  for (const Mesh& m : meshes) {
+    if (!(m.opacity > 0)) continue;
+    for (const auto& t : m.triangles) {
+      const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+      const Vec3 rgb = polygon_color(s, L, f, a, b, c, m.color, m.lit);
+      // The pixels whose rays can meet it: its projection's bounding box.
+      double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+      double hi[2] = {-lo[0], -lo[1]};
+      for (const Vec3* v : {&a, &b, &c}) {
+        const auto xy = f.image_of(*v);
+        for (int i = 0; i < 2; ++i) {
+          lo[i] = std::min(lo[i], xy[static_cast<size_t>(i)]);
+          hi[i] = std::max(hi[i], xy[static_cast<size_t>(i)]);
+        }
+      }
+      const int x0 = static_cast<int>(std::clamp(std::floor(lo[0]), 0.0, double(width))),
+                x1 = static_cast<int>(std::clamp(std::ceil(hi[0]), -1.0, double(width - 1))),
+                y0 = static_cast<int>(std::clamp(std::floor(lo[1]), 0.0, double(height))),
+                y1 = static_cast<int>(std::clamp(std::ceil(hi[1]), -1.0, double(height - 1)));
+      for (int Y = y0; Y <= y1; ++Y)
+        for (int X = x0; X <= x1; ++X) {
+          const auto hit = intersect(f.object_of_image(X, Y), d, a, b, c);
+          if (!hit) continue;
+          const size_t i = static_cast<size_t>(Y) * width + X;
+          if (m.opacity < 1) {
+            h.translucent[i].push_back({*hit, rgb, m.opacity});
+          } else if (*hit < h.opaque[i].t) {
+            h.opaque[i] = {*hit, rgb, 1};
+          }
+        }
+    }
+  }
+  for (size_t i = 0; i < n; ++i) {
+    auto& list = h.translucent[i];
+    const double z = h.opaque[i].t;
+    list.erase(std::remove_if(list.begin(), list.end(), [z](const Hit& x) { return x.t >= z; }), list.end());
+    std::stable_sort(list.begin(), list.end(), [](const Hit& x, const Hit& y) { return x.t < y.t; });
+  }
+  return h;
 }
 
 }  // namespace
@@ -74,6 +159,10 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
   img.width = s.width;
   img.height = s.height;
   img.rgba.assign(static_cast<size_t>(img.width) * img.height * 4, 0.0f);
+  const std::vector<Mesh> none;
+  const std::vector<Mesh>& meshes = opt.meshes ? *opt.meshes : none;
+  check_polygon_scene(s, meshes);
+  const PolygonHits hits = polygon_hits(s, meshes, f, d, img.width, img.height);
   uint64_t samples = 0;
   for (int Y = 0; Y < img.height; ++Y) {
     for (int X = 0; X < img.width; ++X) {
@@ -93,6 +182,14 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
       }
       double r = 0, g = 0, b = 0, a = 0, best = 0;
       bool valid = false;
+      const size_t pixel = static_cast<size_t>(Y) * img.width + X;
+      const std::vector<Hit>& layers = hits.translucent[pixel];
+      const Hit& surface = hits.opaque[pixel];
+      size_t next_layer = 0;
+      auto over = [&](const Hit& h) {
+        const double w = (1 - a) * h.alpha;
+        r += w * h.rgb[0]; g += w * h.rgb[1]; b += w * h.rgb[2]; a += w;
+      };
       // Steps counted, not accumulated: far from the volume (a ray origin
       // at 1e17, say) t += h would not move t, and the loop would not end.
       // A ray crosses the box in at most its diagonal (twice that: a guard
@@ -100,6 +197,10 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
       const double steps = t1 >= t0 ? std::floor(std::min(t1 - t0, 2 * diagonal + h) / h) : -1.0;
       for (int64_t k = 0; k <= static_cast<int64_t>(steps); ++k) {
         const double t = t0 + static_cast<double>(k) * h;
+        // Surfaces at or in front of the sample come first; at or behind
+        // the opaque one nothing is seen.
+        while (next_layer < layers.size() && layers[next_layer].t <= t) over(layers[next_layer++]);
+        if (t >= surface.t) break;
         const Vec3 q{o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]};
         ++samples;
         const double v = field(vol, q);
@@ -151,6 +252,8 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
           valid = true;
         }
       }
+      while (next_layer < layers.size()) over(layers[next_layer++]);
+      if (surface.t < std::numeric_limits<double>::infinity()) over(surface);
       float* px = img.pixel(X, Y);
       px[0] = static_cast<float>(r); px[1] = static_cast<float>(g);
       px[2] = static_cast<float>(b); px[3] = static_cast<float>(a);

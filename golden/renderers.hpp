@@ -9,7 +9,9 @@
 
 #include "golden/empty_space.hpp"
 #include "golden/host_driver.hpp"
+#include "golden/mesh.hpp"
 #include "golden/pipeline.hpp"
+#include "golden/polygon_frame.hpp"
 #include "golden/volume.hpp"
 
 namespace cube4::golden {
@@ -59,7 +61,7 @@ struct SampleProbe {
   virtual void shaded(int /*x*/, int /*y*/, const SliceControl& /*c*/, const ShadedSample& /*s*/) {}
 };
 
-// How render_fixed() runs; none of it changes the base plane.
+// How render_fixed() runs; none of it but `polygons` changes the base plane.
 struct FixedOptions {
   RenderStats* stats = nullptr;
   Progress progress;          // called from the calling thread
@@ -73,6 +75,9 @@ struct FixedOptions {
   const BlockRanges* ranges = nullptr;
   // Keep every ray's accumulator in BasePlane::acc.
   bool accumulators = false;
+  // The frame's polygon images (Cube-5; golden/polygons.hpp), or none. This
+  // one changes the base plane: it is hardware input, like the registers.
+  const PolygonFrame* polygons = nullptr;
 };
 
 BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);
@@ -80,11 +85,16 @@ BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* st
                        const Progress& progress = {}, SampleProbe* probe = nullptr);
 // What `threads` = 0 means.
 int default_threads();
+// With meshes (the scene's polygons, loaded), they are drawn too (Cube-5);
+// the base plane then has polygon_margins() around it.
 BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f,
-                        RenderStats* stats = nullptr, const Progress& progress = {});
+                        RenderStats* stats = nullptr, const Progress& progress = {},
+                        const std::vector<Mesh>& meshes = {});
 
 struct ReferenceOptions {
   double step = 0.25;  // ray step in units of the smallest voxel spacing
+  // The scene's polygons, loaded (Cube-5): intersected exactly with every ray.
+  const std::vector<Mesh>* meshes = nullptr;
 };
 ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisation& f,
                         const ReferenceOptions& opt = {}, RenderStats* stats = nullptr,

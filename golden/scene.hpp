@@ -143,7 +143,7 @@ struct Scene {
   std::array<int, 3> blocks{1, 1, 1};
   double clock_mhz = 125;
   Precision precision;
-  std::vector<MeshSpec> polygons;   // docs/scene.md, "polygons"; not rendered yet
+  std::vector<MeshSpec> polygons;   // docs/scene.md, "polygons"
 };
 
 // The effects a scene calls for: decides what is computed and simulated.
@@ -155,6 +155,7 @@ struct EffectSet {
   bool cropping = false;
   bool cut_plane = false;
   bool supersampling = false;
+  bool polygons = false;       // Cube-5: the Z test and the double composition (golden/polygons.hpp)
   Blend blend = Blend::Composite;
   std::vector<std::string> names() const;  // e.g. {"composite", "gradient", "shading", ...}
 };

@@ -89,6 +89,30 @@ Lighting lighting_of(const Scene& s, const ViewFactorisation& f) {
   return L;
 }
 
+Vec3 polygon_color(const Scene& s, const Lighting& L, const ViewFactorisation& f, const Vec3& a, const Vec3& b,
+                   const Vec3& c, const Vec3& color, bool lit) {
+  if (!lit) return color;
+  Vec3 e1{}, e2{};
+  for (int i = 0; i < 3; ++i) {
+    e1[i] = (b[i] - a[i]) * f.spacing[i];
+    e2[i] = (c[i] - a[i]) * f.spacing[i];
+  }
+  Vec3 n = unit_or_zero({e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]});
+  const Vec3 eye{-f.view_dir_object[0], -f.view_dir_object[1], -f.view_dir_object[2]};
+  double ne = dot(n, eye);
+  if (ne < 0) {
+    n = {-n[0], -n[1], -n[2]};
+    ne = -ne;
+  }
+  const Material& m = s.material;
+  const double fd = m.ke + m.kd * L.diffuse(n);
+  const double fs = m.ks > 0 ? m.ks * L.specular({2 * ne * n[0] - eye[0], 2 * ne * n[1] - eye[1], 2 * ne * n[2] - eye[2]})
+                             : 0.0;
+  Vec3 rgb{};
+  for (int i = 0; i < 3; ++i) rgb[i] = std::clamp(color[i] * fd + m.specular_color[i] * fs, 0.0, 1.0);
+  return rgb;
+}
+
 Vec3 normal_from_permuted_gradient(const ViewFactorisation& f, const Vec3& g_perm) {
   const Vec3 g_obj = f.direction_to_object(g_perm);
   // A gradient per voxel becomes per physical unit by dividing by the spacing.

@@ -33,6 +33,16 @@ struct Lighting {
 
 Lighting lighting_of(const Scene& s, const ViewFactorisation& f);
 
+// The colour of one triangle of a polygon mesh (Cube-5), flat over the
+// triangle; a, b, c in object voxel coordinates. Unlit: `color`. Lit: the
+// volume's Phong model with the scene's lights and material, at the
+// triangle's normal turned towards the viewer (both faces are lit: the far
+// side of a translucent surface shows through it):
+//   RGB = clamp((ke + kd·Σ I·max(0, n·l))·color + ks·Σ I·max(0, r·l)^exponent·specular_color, 0, 1)
+// One definition for the host rasteriser and the float and reference renderers.
+Vec3 polygon_color(const Scene& s, const Lighting& L, const ViewFactorisation& f, const Vec3& a, const Vec3& b,
+                   const Vec3& c, const Vec3& color, bool lit);
+
 // Unit outward normal (-gradient) in physical object space from a gradient
 // in permuted voxel space; zero vector if the gradient is zero.
 Vec3 normal_from_permuted_gradient(const ViewFactorisation& f, const Vec3& g_perm);

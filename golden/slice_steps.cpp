@@ -3,6 +3,7 @@
 #include "golden/slice_steps.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace cube4::golden {
 
@@ -71,16 +72,37 @@ void SliceInterp::slice(const Plane& lo, const Plane& hi, const SliceControl& c,
   }
 }
 
+void SliceCompositor::start_polygons() {
+  const size_t n = rays_.size();
+  if (poly_->width != width_ || poly_->height != r_.base_height() || poly_->front.size() != n ||
+      poly_->back.size() != n || poly_->z.size() != n || poly_->slabs.size() != static_cast<size_t>(K_) ||
+      r_.blend != BlendMode::Composite)
+    throw std::logic_error("SliceCompositor: the polygon frame does not fit the registers' base plane and blend");
+  for (size_t i = 0; i < n; ++i) {
+    rays_[i] = pixel_to_acc(poly_->front[i], r_.p);
+    const auto u = static_cast<int>(i % static_cast<size_t>(width_)), v = static_cast<int>(i / width_);
+    write_pixel(bp_, u, v, leave_with_polygons(rays_[i], poly_->back[i], r_.p));
+  }
+}
+
+void SliceCompositor::composite_slab(int k, int y, RayAcc* ray) const {
+  const SlabImage& slab = poly_->slabs[static_cast<size_t>(k)];
+  if (slab.empty()) return;
+  thread_local std::vector<Pixel> row;  // bands call this concurrently
+  row.resize(static_cast<size_t>(nx_));
+  slab.decode_beam(y, row.data());
+  for (int x = 0; x < nx_; ++x) ray[x] = ray_over_pixel(ray[x], row[static_cast<size_t>(x)], r_.p);
+}
+
 BasePlane empty_base_plane(const Registers& r) {
-  const int K = r.sample_slices();
   BasePlane bp;
   bp.width = r.base_width();
   bp.height = r.base_height();
   bp.bits = r.p.alpha_bits;
   bp.rgba.assign(static_cast<size_t>(bp.width) * bp.height * 4, 0);
   const double frac_one = std::ldexp(1.0, r.p.dda_frac_bits);
-  bp.shift_x = r.x_offset(K - 1).integer - r.x_start / frac_one;
-  bp.shift_y = r.y_offset(K - 1).integer - r.y_start / frac_one;
+  bp.shift_x = r.base_origin_x() - r.x_start / frac_one;
+  bp.shift_y = r.base_origin_y() - r.y_start / frac_one;
   return bp;
 }
 

@@ -12,7 +12,9 @@
 #include "golden/empty_space.hpp"
 #include "golden/permuted_volume.hpp"
 #include "golden/pipeline.hpp"
+#include "golden/polygon_frame.hpp"
 #include "golden/renderers.hpp"
+#include "golden/units/composite_polygon.hpp"
 
 namespace cube4::golden {
 
@@ -97,12 +99,20 @@ inline void write_pixel(BasePlane& bp, int u, int v, const Pixel& a) {
 //
 // `slice` and `finish` may be given a band of base-plane rows [v0, v1):
 // they then touch only those rays and pixels, so bands run concurrently.
+//
+// With polygons (golden/polygon_frame.hpp) a ray starts as its front
+// image's pixel, each of its samples passes the Z test first and its slab
+// pixel follows it (double_composite(), in two passes over a beam that keep
+// each ray's order), and the back image goes behind it when it leaves;
+// pixels whose ray meets no sample are front over back from the start.
 class SliceCompositor {
  public:
-  SliceCompositor(const Registers& r, BasePlane& bp)
+  SliceCompositor(const Registers& r, BasePlane& bp, const PolygonFrame* polygons = nullptr)
       : r_(r), bp_(bp), nx_(r.dim[0]), ny_(r.dim[1]), K_(r.sample_slices()),
-        ix_last_(r.x_offset(K_ - 1).integer), iy_last_(r.y_offset(K_ - 1).integer), width_(r.base_width()),
-        rays_(static_cast<size_t>(r.base_width()) * r.base_height()) {}
+        ix_last_(r.base_origin_x()), iy_last_(r.base_origin_y()), width_(r.base_width()),
+        rays_(static_cast<size_t>(r.base_width()) * r.base_height()), poly_(polygons) {
+    if (poly_) start_polygons();
+  }
 
   // Beams of slice c.k whose rays are base-plane rows [v0, v1).
   int first_beam(const SliceControl& c, int v0) const { return std::clamp(v0 + c.iy - iy_last_, 0, ny_); }
@@ -118,11 +128,19 @@ class SliceCompositor {
       } else {
         span = beams(y);
       }
-      if (span.empty()) continue;
-      RayAcc* ray = &rays_[static_cast<size_t>(y - c.iy + iy_last_) * width_ + (ix_last_ - c.ix)];
+      if (span.empty() && !poly_) continue;
+      const size_t row = static_cast<size_t>(y - c.iy + iy_last_) * width_ + (ix_last_ - c.ix);
+      RayAcc* ray = &rays_[row];
       ShadedSample s;
+      if (!poly_) {
+        for (int x = span.begin; x < span.end; ++x)
+          if (shade(x, y, ray[x], s)) ray[x] = blend(r_.blend, ray[x], s, r_.p);
+        continue;
+      }
+      const uint32_t* z = &poly_->z[row];
       for (int x = span.begin; x < span.end; ++x)
-        if (shade(x, y, ray[x], s)) ray[x] = blend(r_.blend, ray[x], s, r_.p);
+        if (sample_before_z(c.k, z[x]) && shade(x, y, ray[x], s)) ray[x] = blend(r_.blend, ray[x], s, r_.p);
+      composite_slab(c.k, y, ray);
     }
     // Rays of slice k-1 with no successor in slice k left through a side
     // face; only the last dy beams and the last dx rays of a beam can.
@@ -146,14 +164,18 @@ class SliceCompositor {
  private:
   void leave(const SliceControl& c, int x, int y) {
     const int u = x - c.ix + ix_last_, v = y - c.iy + iy_last_;
-    const RayAcc& ray = rays_[static_cast<size_t>(v) * width_ + u];
-    write_pixel(bp_, u, v, pixel_of(ray, r_.p));
-    if (!bp_.acc.empty()) bp_.acc[static_cast<size_t>(v) * width_ + u] = ray;
+    const size_t i = static_cast<size_t>(v) * width_ + u;
+    write_pixel(bp_, u, v, poly_ ? leave_with_polygons(rays_[i], poly_->back[i], r_.p) : pixel_of(rays_[i], r_.p));
+    if (!bp_.acc.empty()) bp_.acc[i] = rays_[i];
   }
+  void start_polygons();
+  // Slab k's pixels of beam y behind the beam's rays (those already holding sample k).
+  void composite_slab(int k, int y, RayAcc* ray) const;
   const Registers& r_;
   BasePlane& bp_;
   int nx_, ny_, K_, ix_last_, iy_last_, width_;
   std::vector<RayAcc> rays_;
+  const PolygonFrame* poly_;
 };
 
 // An empty base plane of the frame's size, with the warp's shift.

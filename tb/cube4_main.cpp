@@ -19,6 +19,7 @@
 #include "golden/host_driver.hpp"
 #include "golden/input_file.hpp"
 #include "golden/mesh.hpp"
+#include "golden/polygons.hpp"
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
@@ -153,7 +154,7 @@ struct Loaded {
   golden::Scene scene;
   golden::Volume volume;
   golden::HostProgram host;
-  std::vector<golden::Mesh> meshes;  // the scene's "polygons", checked; not rendered yet
+  std::vector<golden::Mesh> meshes;  // the scene's "polygons", checked
 };
 
 // Relative paths in a scene are relative to its folder.
@@ -164,7 +165,8 @@ std::string scene_dir(const std::string& scene_path) {
 
 void load_volume(Loaded& l, const std::string& scene_path, bool header_only) {
   l.volume = golden::load_volume(l.scene.volume, l.scene.precision.voxel_bits, scene_dir(scene_path), header_only);
-  l.host = golden::program_host(l.scene, l.volume);
+  // The meshes (once load() has them) widen the base plane: polygon margins.
+  l.host = golden::program_host(l.scene, l.volume, l.meshes);
 }
 
 // With `header_only` the volume has no voxels yet: what every limit of a run
@@ -175,8 +177,9 @@ Loaded load(const std::string& scene_path, bool header_only = false) {
   Loaded l;
   l.scene = scene_path.empty() ? golden::default_scene() : golden::load_scene(scene_path);
   load_volume(l, scene_path, header_only);
-  // A bad mesh is bad input (exit 2) even while the renderers ignore meshes.
+  // A bad mesh is bad input (exit 2), whatever the model.
   l.meshes = golden::load_meshes(l.scene, scene_dir(scene_path));
+  if (!l.meshes.empty()) l.host = golden::program_host(l.scene, l.volume, l.meshes);
   return l;
 }
 
@@ -200,8 +203,11 @@ void check_render_memory(const Loaded& l, const std::string& model, int golden_t
   // slices of 4-byte samples and voxels.
   const bool system = is_system_model(model);
   const bool fixed = model == "fixed" || system;
+  // With polygons the fixed renderer also holds their front, back and Z
+  // images (20 bytes a pixel), the float one its fragment lists.
   double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20 +
-                 (fixed ? base * sizeof(golden::RayAcc) * (system ? 2 : 1) + golden_threads * 8 * 4 * slice : 0);
+                 (fixed ? base * sizeof(golden::RayAcc) * (system ? 2 : 1) + golden_threads * 8 * 4 * slice : 0) +
+                 (l.meshes.empty() ? 0 : base * 20);
   // Partitioned: every block's partial image (pixels and accumulators) is
   // kept for the network, and one block's volume is copied at a time.
   if (plan)
@@ -379,6 +385,11 @@ int run_render(const RenderArgs& args) {
   const std::string trace_temp = a.trace.empty() ? "" : outputs.add_trace(a.trace, kTraceUnits);
   if (!a.scene.empty()) outputs.check_not_output(a.scene, "the scene");
   Loaded l = load(a.scene, true);
+  if (system && !l.meshes.empty())
+    throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) + ": \"polygons\" (" +
+                     std::to_string(l.meshes.size()) + (l.meshes.size() == 1 ? " mesh" : " meshes") +
+                     ") render with --model fixed, float or reference so far; the system model (--model " + a.model +
+                     ") does not draw polygons yet");
   if (l.scene.volume.kind == "den" || l.scene.volume.kind == "raw" || l.scene.volume.kind == "nifti")
     outputs.check_not_output(l.volume.source, "the volume");
   const int golden_threads = a.threads > 0 ? a.threads : golden::default_threads();
@@ -389,6 +400,9 @@ int run_render(const RenderArgs& args) {
   const bool blocked = partitioned(counts) && (system || a.model == "fixed");
   const std::string what_blocks = blocks_what(a, l.scene);
   std::optional<golden::BlockPlan> header_plan;
+  if (blocked && !l.meshes.empty())
+    throw InputError(what_blocks + ": a scene with \"polygons\" renders in one pass so far (Cube-5's polygon images "
+                     "are not cut into blocks yet)");
   if (blocked) {
     header_plan = golden::plan_blocks(l.host.regs, l.volume.dim, counts, what_blocks);
     if (a.frames > 1)
@@ -442,7 +456,7 @@ int run_render(const RenderArgs& args) {
       a.model == "reference" ? std::vector<golden::Scene>{l.scene} : golden::xy_subframes(l.scene);
   std::vector<golden::HostProgram> sub_hosts;
   for (const golden::Scene& s : sub_scenes)
-    sub_hosts.push_back(sub_scenes.size() == 1 ? l.host : golden::program_host(s, l.volume));
+    sub_hosts.push_back(sub_scenes.size() == 1 ? l.host : golden::program_host(s, l.volume, l.meshes));
   auto sub_frame_name = [&](size_t i) {
     if (sub_scenes.size() == 1) return std::string();
     const auto& o = sub_scenes[i].view.ray_offset;
@@ -453,6 +467,7 @@ int run_render(const RenderArgs& args) {
   // warps them: an image as the hardware plus companion card would deliver it.
   std::vector<double> frame_seconds;
   std::optional<golden::BlockRanges> ranges;
+  std::optional<golden::PolygonFrame::Counts> polygon_counts;  // the fixed model's first frame's
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
@@ -526,19 +541,28 @@ int run_render(const RenderArgs& args) {
         // Built once: the volume is the same for every repetition and frame.
         if (!ranges) ranges = golden::block_ranges(l.volume);
         opt.ranges = &*ranges;
+        // The polygons are host work of every frame, like its registers.
+        std::optional<golden::PolygonFrame> polygons;
+        if (!l.meshes.empty()) {
+          polygons = golden::rasterise_polygons(sub_scenes[i], l.meshes, host);
+          opt.polygons = &*polygons;
+          if (i == 0) polygon_counts = polygons->counts;
+        }
         const golden::BasePlane bp = golden::render_fixed(l.volume, host.regs, opt);
         samples += frame_stats.samples;
         frames.push_back(golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, host.view));
         keep_plane(bp, i);
       } else if (a.model == "float") {
         golden::RenderStats frame_stats;
-        const golden::BasePlaneF bp = golden::render_float(l.volume, sub_scenes[i], host.view, &frame_stats, cb);
+        const golden::BasePlaneF bp =
+            golden::render_float(l.volume, sub_scenes[i], host.view, &frame_stats, cb, l.meshes);
         samples += frame_stats.samples;
         frames.push_back(golden::warp(bp.image, bp.shift_x, bp.shift_y, host.view));
         if (last && i == 0 && !a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp.image, a.baseplane);
       } else {
         golden::ReferenceOptions opt;
         opt.step = a.reference_step;
+        opt.meshes = &l.meshes;
         golden::RenderStats frame_stats;
         frames.push_back(golden::render_reference(l.volume, l.scene, l.host.view, opt, &frame_stats, cb));
         samples += frame_stats.samples;
@@ -574,6 +598,10 @@ int run_render(const RenderArgs& args) {
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
     if (a.model == "fixed") r["threads"] = a.threads > 0 ? a.threads : golden::default_threads();
+    if (polygon_counts)
+      r["polygon_fragments"] = {{"opaque", polygon_counts->opaque},      {"translucent", polygon_counts->translucent},
+                                {"hidden", polygon_counts->hidden},      {"in_front", polygon_counts->in_front},
+                                {"in_slabs", polygon_counts->in_slabs},  {"behind", polygon_counts->behind}};
     if (header_plan) {
       r["blocks"] = tb::describe_blocks(*header_plan);
     } else if (partitioned(counts)) {
@@ -737,8 +765,8 @@ int run_info(const std::string& scene, uint64_t max_memory_mib) {
       {"clock_mhz", l.scene.clock_mhz},
       {"polygons", nlohmann::json::array()},
   };
-  // The meshes as loaded and checked (not rendered yet): what a user wants
-  // to see before trusting a mesh file's units and transform.
+  // The meshes as loaded and checked: what a user wants to see before
+  // trusting a mesh file's units and transform.
   for (const golden::Mesh& m : l.meshes) {
     const auto box = golden::bounds(m);
     j["polygons"].push_back({{"source", m.source},

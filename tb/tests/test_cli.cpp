@@ -130,17 +130,37 @@ TEST_F(Cli, BadInputExitsTwoNamingTheCulprit) {
   EXPECT_FALSE(fs::exists(path("bp.png")));
 }
 
-// The scene's meshes are loaded and checked by every command, and (not
-// rendered yet) leave the image as it was, bit for bit.
-TEST_F(Cli, MeshesAreCheckedAndLeaveTheImageAlone) {
+// The scene's meshes are loaded and checked by every command, drawn by the
+// golden models, and refused by name by the system model, which does not
+// draw them yet; an empty list is no list.
+TEST_F(Cli, MeshesAreCheckedDrawnAndRefusedByTheSystemModel) {
   const std::string plain(kSphere);
-  const std::string with_mesh = plain.substr(0, plain.rfind('}')) +
-                                R"(, "polygons": [{"shape": "sphere", "transform": {"translate": [8, 8, 8]}}]})";
+  const std::string with_mesh =
+      plain.substr(0, plain.rfind('}')) +
+      R"(, "polygons": [{"shape": "box", "size": [4, 4, 30], "transform": {"translate": [7.5, 7.5, 7.5]},
+                         "color": [1, 0, 0], "opacity": 0.5}]})";
+  const std::string empty_list = plain.substr(0, plain.rfind('}')) + R"(, "polygons": []})";
   ASSERT_EQ(run("render " + write("a.json", plain) + " --model fixed -q -o " + path("a.exr")).code, 0);
-  ASSERT_EQ(run("render " + write("b.json", with_mesh) + " --model fixed -q -o " + path("b.exr")).code, 0);
-  const auto ia = cube4::tb::read_image(path("a.exr")), ib = cube4::tb::read_image(path("b.exr"));
+  ASSERT_EQ(run("render " + write("e.json", empty_list) + " --model fixed -q -o " + path("e.exr")).code, 0);
+  const auto ia = cube4::tb::read_image(path("a.exr")), ie = cube4::tb::read_image(path("e.exr"));
   ASSERT_EQ(ia.rgba.size(), 64u * 48 * 4);
-  EXPECT_TRUE(ia.rgba == ib.rgba) << "a mesh changed the image";
+  EXPECT_TRUE(ia.rgba == ie.rgba) << "an empty polygon list changed the image";
+  const std::string scene = write("b.json", with_mesh);
+  for (const std::string model : {"fixed", "float", "reference"}) {
+    ASSERT_EQ(run("render " + scene + " --model " + model + " -q -o " + path(model + ".exr")).code, 0) << model;
+    const auto ib = cube4::tb::read_image(path(model + ".exr"));
+    // A red box through the sphere's middle: red beats green and blue there.
+    const float* centre = &ib.rgba[(static_cast<size_t>(24) * 64 + 32) * 4];
+    EXPECT_GT(centre[0], centre[1] + 0.05f) << model;
+  }
+  for (const std::string model : {"tlm", "mixed:composite"}) {
+    const CliResult r = run("render " + scene + " --model " + model + " -q -o " + path("sys.png"));
+    EXPECT_EQ(r.code, 2) << model << ": " << r.err;
+    EXPECT_NE(r.err.find("\"polygons\" (1 mesh) render with --model fixed, float or reference so far"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(path("sys.png")));
+  }
 
   const std::string bad = plain.substr(0, plain.rfind('}')) + R"(, "polygons": [{"file": "nowhere.obj"}]})";
   for (const char* command : {"render ", "info "}) {

@@ -1,0 +1,253 @@
+#include "golden/polygons.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "golden/errors.hpp"
+#include "golden/rasterise.hpp"
+#include "golden/shading_model.hpp"
+#include "golden/units/composite_polygon.hpp"
+
+namespace cube4::golden {
+namespace {
+
+constexpr double kRange = 1 << 30;  // pixels or sample slices from the origin the rasteriser takes
+
+std::string scene_name(const Scene& s) { return s.file.empty() ? std::string("scene") : s.file; }
+
+std::string fmt(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
+}
+
+// Rounded half up to `bits` fraction bits (exact in double within kRange).
+int64_t snap(double x, int bits) { return static_cast<int64_t>(std::floor(std::ldexp(x, bits) + 0.5)); }
+
+// The sample slices in which the ray of each base-plane pixel has a
+// sample: the ray of (u, v) is in slice k iff 0 <= u - origin_x + ix_k < nx
+// and likewise in y; the offsets grow by 0 or 1 a slice, so the slices form
+// an interval, [first, last], empty when first > last.
+class RaySlices {
+ public:
+  explicit RaySlices(const Registers& r) : r_(r) {
+    for (int k = 0; k < r.sample_slices(); ++k) {
+      ix_.push_back(r.x_offset(k).integer);
+      iy_.push_back(r.y_offset(k).integer);
+    }
+  }
+  std::pair<int, int> of(int u, int v) const {
+    const auto [x0, x1] = along(ix_, r_.base_origin_x() - u, r_.dim[0]);
+    const auto [y0, y1] = along(iy_, r_.base_origin_y() - v, r_.dim[1]);
+    return {std::max(x0, y0), std::min(x1, y1)};
+  }
+  int ix(int k) const { return ix_[static_cast<size_t>(k)]; }
+  int iy(int k) const { return iy_[static_cast<size_t>(k)]; }
+
+ private:
+  // Slices whose offset lies in [lo, lo + n - 1].
+  static std::pair<int, int> along(const std::vector<int>& offsets, int lo, int n) {
+    const auto first = std::lower_bound(offsets.begin(), offsets.end(), lo);
+    const auto end = std::upper_bound(offsets.begin(), offsets.end(), lo + n - 1);
+    return {static_cast<int>(first - offsets.begin()), static_cast<int>(end - offsets.begin()) - 1};
+  }
+  const Registers& r_;
+  std::vector<int> ix_, iy_;
+};
+
+struct Fragment {
+  int u, v;
+  int64_t depth;  // 2^-kZFracBits sample slices
+  Pixel px;
+};
+
+}  // namespace
+
+Vec3 BaseFrame::to_base(const Vec3& p) const {
+  const double d = p[2] * S;
+  return {p[0] - (x0 + d * sx) + origin_x, p[1] - (y0 + d * sy) + origin_y, d};
+}
+
+BaseFrame base_frame(const Registers& r) {
+  const double one = std::ldexp(1.0, r.p.dda_frac_bits);
+  BaseFrame f;
+  f.x0 = static_cast<double>(r.x_start) / one;
+  f.sx = static_cast<double>(r.x_step) / one;
+  f.y0 = static_cast<double>(r.y_start) / one;
+  f.sy = static_cast<double>(r.y_step) / one;
+  f.origin_x = r.base_origin_x();
+  f.origin_y = r.base_origin_y();
+  f.S = r.supersampling;
+  return f;
+}
+
+Margins polygon_margins(const std::vector<Mesh>& meshes, const ViewFactorisation& f, const BaseFrame& frame,
+                        int width, int height) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double lo[2] = {inf, inf}, hi[2] = {-inf, -inf};
+  for (const Mesh& m : meshes) {
+    if (!(m.opacity > 0)) continue;
+    for (const Vec3& vertex : m.vertices) {
+      const Vec3 b = frame.to_base(f.to_permuted(vertex));
+      for (int i = 0; i < 2; ++i) {
+        lo[i] = std::min(lo[i], b[i]);
+        hi[i] = std::max(hi[i], b[i]);
+      }
+    }
+  }
+  // What the final image shows of the base plane's plane: its corners
+  // through the warp's inverse.
+  const Affine2 to_base = f.base_to_image(frame.origin_x - frame.x0, frame.origin_y - frame.y0).inverse();
+  double seen_lo[2] = {inf, inf}, seen_hi[2] = {-inf, -inf};
+  for (double X : {-0.5, f.image_width - 0.5})
+    for (double Y : {-0.5, f.image_height - 0.5}) {
+      const auto uv = to_base.apply(X, Y);
+      for (int i = 0; i < 2; ++i) {
+        seen_lo[i] = std::min(seen_lo[i], uv[static_cast<size_t>(i)]);
+        seen_hi[i] = std::max(seen_hi[i], uv[static_cast<size_t>(i)]);
+      }
+    }
+  Margins m;
+  const int size[2] = {width, height};
+  for (int i = 0; i < 2; ++i) {
+    const double a = std::max(lo[i], seen_lo[i]), b = std::min(hi[i], seen_hi[i]);
+    if (!(a <= b)) continue;
+    // Pixel centres at integers: the first and last covered are ceil(a), floor(b).
+    const double first = std::ceil(a), last = std::floor(b);
+    m.lo[static_cast<size_t>(i)] = static_cast<int>(std::clamp(-first, 0.0, static_cast<double>(size[i])));
+    m.hi[static_cast<size_t>(i)] =
+        static_cast<int>(std::clamp(last - (size[i] - 1), 0.0, static_cast<double>(size[i])));
+  }
+  return m;
+}
+
+void check_polygon_scene(const Scene& s, const std::vector<Mesh>& meshes) {
+  if (meshes.empty() || s.blend == Blend::Composite) return;
+  throw InputError(scene_name(s) + ": \"blend\" = \"" + (s.blend == Blend::Mip ? "mip" : "minip") +
+                   "\" cannot be combined with \"polygons\": polygons are composited in depth order with the "
+                   "samples (Cube-5), which needs \"blend\": \"composite\"");
+}
+
+HostProgram program_host(const Scene& s, const Volume& vol, const std::vector<Mesh>& meshes) {
+  check_polygon_scene(s, meshes);
+  HostProgram h = program_host(s, vol);
+  if (meshes.empty()) return h;
+  const Margins m =
+      polygon_margins(meshes, h.view, base_frame(h.regs), h.regs.base_width(), h.regs.base_height());
+  h.regs.margin_lo = m.lo;
+  h.regs.margin_hi = m.hi;
+  return h;
+}
+
+PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes, const HostProgram& h) {
+  check_polygon_scene(s, meshes);
+  const Registers& r = h.regs;
+  const ViewFactorisation& f = h.view;
+  const Precision& p = r.p;
+  const int W = r.base_width(), H = r.base_height(), K = r.sample_slices(), nx = r.dim[0], ny = r.dim[1];
+  if (nx > kRleRunMax) throw InputError(scene_name(s) + ": polygons need a base-plane x extent of at most " +
+                                        std::to_string(kRleRunMax) + " voxels (the slab lines' run word)");
+  const size_t pixels = static_cast<size_t>(W) * H;
+  PolygonFrame out;
+  out.width = W;
+  out.height = H;
+  out.front.assign(pixels, Pixel{});
+  out.back.assign(pixels, Pixel{});
+  out.z.assign(pixels, kZNone);
+  out.slabs.assign(static_cast<size_t>(K), SlabImage(nx, ny, std::max(1, s.pipelines)));
+
+  const BaseFrame frame = base_frame(r);
+  const Lighting L = lighting_of(s, f);
+  const uint32_t full = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
+  constexpr int64_t kNone = std::numeric_limits<int64_t>::max();
+  std::vector<int64_t> opaque_depth(pixels, kNone);
+  std::vector<Pixel> opaque_px(pixels);
+  std::vector<Fragment> translucent;
+  for (const Mesh& m : meshes) {
+    const auto alpha = static_cast<uint32_t>(quantise_unit(m.opacity, p.alpha_bits));
+    if (alpha == 0) continue;
+    const bool opaque = alpha == full;
+    for (const auto& t : m.triangles) {
+      const Vec3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
+      const Vec3 rgb = polygon_color(s, L, f, a, b, c, m.color, m.lit);
+      Rgb q{};
+      for (int i = 0; i < 3; ++i) q[static_cast<size_t>(i)] = static_cast<uint32_t>(quantise_unit(rgb[i], p.alpha_bits));
+      const Pixel px = polygon_pixel(q, alpha, p);
+      Vec3 uvd[3];
+      for (int i = 0; i < 3; ++i) uvd[i] = frame.to_base(f.to_permuted(m.vertices[t[static_cast<size_t>(i)]]));
+      // A pixel or more beside the base plane: no pixel centre, snapped or
+      // not, whatever the vertices' range.
+      bool beside = false;
+      for (int axis = 0; axis < 2; ++axis) {
+        const double size = axis == 0 ? W : H;
+        beside = beside || std::max({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) < -1 ||
+                 std::min({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) > size;
+      }
+      if (beside) continue;
+      BaseVertex<int64_t> corner[3];
+      for (int i = 0; i < 3; ++i) {
+        for (double x : uvd[i])
+          if (!(std::fabs(x) <= kRange))
+            throw InputError(scene_name(s) + ": \"" + m.key + "\" has a vertex at base-plane (u, v, depth) = (" +
+                             fmt(uvd[i][0]) + ", " + fmt(uvd[i][1]) + ", " + fmt(uvd[i][2]) +
+                             "), beyond the rasteriser's range of ±2^30 pixels and sample slices");
+        corner[i] = {snap(uvd[i][0], kSubpixelBits), snap(uvd[i][1], kSubpixelBits), snap(uvd[i][2], kZFracBits)};
+      }
+      scan_triangle<int64_t>(corner[0], corner[1], corner[2], int64_t{1} << kSubpixelBits, W, H,
+                             [&](int u, int v, int64_t depth) {
+                               const size_t i = static_cast<size_t>(v) * W + u;
+                               if (!opaque) {
+                                 translucent.push_back({u, v, depth, px});
+                                 return;
+                               }
+                               ++out.counts.opaque;
+                               // Nearer wins; on a tie the one drawn first.
+                               if (depth < opaque_depth[i]) {
+                                 opaque_depth[i] = depth;
+                                 opaque_px[i] = px;
+                               }
+                             });
+    }
+  }
+
+  for (size_t i = 0; i < pixels; ++i)
+    if (opaque_depth[i] != kNone)
+      out.z[i] = static_cast<uint32_t>(std::clamp<int64_t>(opaque_depth[i], 0, kZNone));
+  // Front to back, so that each image blends a pixel's fragments over one
+  // another in depth order; equal depths in the order drawn.
+  std::stable_sort(translucent.begin(), translucent.end(),
+                   [](const Fragment& x, const Fragment& y) { return x.depth < y.depth; });
+  const RaySlices rays(r);
+  const int64_t slice = int64_t{1} << kZFracBits;
+  for (const Fragment& g : translucent) {
+    const size_t i = static_cast<size_t>(g.v) * W + g.u;
+    // At or behind the opaque surface: hidden (the unclamped depths, so that
+    // this holds in front of the volume too).
+    if (g.depth >= opaque_depth[i]) {
+      ++out.counts.hidden;
+      continue;
+    }
+    ++out.counts.translucent;
+    const auto [first, last] = rays.of(g.u, g.v);
+    if (first > last || g.depth > last * slice) {
+      out.back[i] = pixel_over(out.back[i], g.px, p);
+      ++out.counts.behind;
+    } else if (g.depth <= first * slice) {
+      out.front[i] = pixel_over(out.front[i], g.px, p);
+      ++out.counts.in_front;
+    } else {
+      const int k = static_cast<int>((g.depth - 1) >> kZFracBits);  // k < depth <= k + 1
+      out.slabs[static_cast<size_t>(k)].insert(g.u - r.base_origin_x() + rays.ix(k), g.v - r.base_origin_y() + rays.iy(k),
+                                               g.px, p);
+      ++out.counts.in_slabs;
+    }
+  }
+  for (size_t i = 0; i < pixels; ++i)
+    if (opaque_depth[i] != kNone) out.back[i] = pixel_over(out.back[i], opaque_px[i], p);
+  return out;
+}
+
+}  // namespace cube4::golden

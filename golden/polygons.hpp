@@ -1,0 +1,64 @@
+// The host side of Cube-5's hybrid volume and polygon rendering (Kreeger
+// and Kaufman 1999, §§2, 5): the scene's meshes rasterised under the
+// volume's permutation and shear onto the base plane, into the integer
+// images the compositor consumes (golden/polygon_frame.hpp). Host code,
+// like the warp: floating point up to the vertices' snapped positions and
+// the fragments' quantised colours, integers from there on.
+// The rules (coverage, depth, ties, slabs) are in docs/fixed-point.md,
+// "Polygons"; the scan conversion itself in golden/rasterise.hpp.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "golden/host_driver.hpp"
+#include "golden/mesh.hpp"
+#include "golden/polygon_frame.hpp"
+
+namespace cube4::golden {
+
+// A renderer's rays on its base plane: the ray of pixel (u, v) passes,
+// at depth d (in sample slices; permuted z = d / S), through permuted
+//   x = u - origin_x + x0 + d·sx,   y = v - origin_y + y0 + d·sy.
+struct BaseFrame {
+  double x0 = 0, sx = 0, y0 = 0, sy = 0;  // ray offset at slice 0 and its step per sample slice, voxels
+  int origin_x = 0, origin_y = 0;         // base_origin_x/y(): pixel of x = 0 at integer offset 0
+  int S = 1;
+  // (u, v, d) of a point in permuted voxel coordinates.
+  Vec3 to_base(const Vec3& permuted) const;
+};
+// The fixed renderer's rays: the registers' DDA, exactly (a sample's own
+// position differs from it by its weights' truncation, under 2^-weight_bits).
+BaseFrame base_frame(const Registers& r);
+
+// Base-plane pixels to add before and after a width x height base plane in
+// u and v, so that every mesh that draws anything (opacity > 0) has rays
+// over its footprint: as far as the final image shows (the warp's inverse
+// of the image's corners) and at most width (height) on each side. Parts
+// beyond are not drawn.
+struct Margins {
+  std::array<int, 2> lo{0, 0}, hi{0, 0};
+};
+Margins polygon_margins(const std::vector<Mesh>& meshes, const ViewFactorisation& f, const BaseFrame& frame,
+                        int width, int height);
+
+// Refuses (InputError, naming the scene file and key) what polygons cannot
+// be combined with: a blend other than composite (surfaces have no place in
+// a maximum or minimum).
+void check_polygon_scene(const Scene& s, const std::vector<Mesh>& meshes);
+
+// program_host(s, vol), with the base plane grown by polygon_margins() for
+// the meshes; the same registers as program_host(s, vol) without meshes.
+HostProgram program_host(const Scene& s, const Volume& vol, const std::vector<Mesh>& meshes);
+
+// The frame's polygon images for the registers of `h` (made by the
+// program_host above, with these meshes). Each scene pipeline's slab
+// lines are its own (lanes = s.pipelines). Throws InputError for a vertex
+// beyond the rasteriser's range (±2^30 pixels or sample slices from the
+// base plane's origin) of a triangle that reaches the base plane.
+PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes, const HostProgram& h);
+
+// Snapped vertex positions: 1/2^kSubpixelBits of a pixel, depth in units of
+// 2^-kZFracBits sample slices, both rounded half up.
+inline constexpr int kSubpixelBits = 8;
+
+}  // namespace cube4::golden

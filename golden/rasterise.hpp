@@ -1,0 +1,113 @@
+// Scan conversion of one triangle on the base plane (Cube-5 §2: polygons
+// drawn under the volume's permutation and shear, so that their footprints
+// are pre-warped and their depth is measured along the processing axis).
+// Host code, like the warp. One algorithm for two arithmetics: in integers
+// (T = int64_t, vertices snapped to 1/`one` of a pixel) it is the golden
+// rasteriser whose fragments the hardware consumes (golden/polygons.hpp);
+// in doubles (T = double, one = 1) it is the float renderer's.
+//
+// Rules (docs/fixed-point.md, "Polygons"):
+//  - Coverage: pixel (u, v) is the ray through the base-plane point (u, v);
+//    the triangle covers it iff that point lies inside the triangle's
+//    footprint (u, v) = the triangle's vertices in base-plane coordinates.
+//    A triangle seen edge-on (zero footprint area) covers nothing. Both
+//    faces are drawn: there is no culling (a translucent surface's far side
+//    shows through it).
+//  - Ties: a pixel centre on an edge or a vertex belongs to the triangle it
+//    would lie in after an infinitesimal move towards -u (and an even
+//    smaller one towards +v, for edges parallel to u). Triangles that share
+//    edges therefore cover every pixel of their union exactly once.
+//  - Depth: the plane of the triangle at the pixel centre, from its three
+//    vertices' depths by barycentric weights (exact: the shear keeps planes
+//    planar); in integers rounded half up to the vertices' depth unit.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+
+namespace cube4::golden {
+
+template <class T>
+struct BaseVertex {
+  T u = 0, v = 0, d = 0;  // base-plane position in 1/`one` pixels; depth
+};
+
+namespace raster {
+
+template <class T>
+using Wide = std::conditional_t<std::is_integral_v<T>, __int128, double>;
+
+inline __int128 floor_div(__int128 a, __int128 b) {  // b > 0
+  __int128 q = a / b;
+  if (a % b != 0 && a < 0) --q;
+  return q;
+}
+
+// The first and last pixel centre within [lo, hi] (units of 1/one pixel),
+// clamped to [0, n - 1]; first > last when there is none.
+template <class T>
+void centres(T lo, T hi, T one, int n, int& first, int& last) {
+  double f, l;
+  if constexpr (std::is_integral_v<T>) {
+    f = static_cast<double>(-floor_div(-static_cast<__int128>(lo), one));
+    l = static_cast<double>(floor_div(static_cast<__int128>(hi), one));
+  } else {
+    f = std::ceil(lo / one);
+    l = std::floor(hi / one);
+  }
+  first = static_cast<int>(std::clamp(f, 0.0, static_cast<double>(n)));
+  last = static_cast<int>(std::clamp(l, -1.0, static_cast<double>(n - 1)));
+}
+
+// Twice the signed area of (a, b, p): positive when p lies to the inside of
+// edge a -> b of a positively oriented triangle.
+template <class T>
+Wide<T> edge(const BaseVertex<T>& a, const BaseVertex<T>& b, Wide<T> pu, Wide<T> pv) {
+  return (Wide<T>(b.u) - a.u) * (pv - a.v) - (Wide<T>(b.v) - a.v) * (pu - a.u);
+}
+
+// The tie rule: on the edge (e == 0) the centre counts as inside iff moving
+// it by (-1, +epsilon)·epsilon makes e positive.
+template <class T>
+bool inside(Wide<T> e, const BaseVertex<T>& a, const BaseVertex<T>& b) {
+  if (e != 0) return e > 0;
+  const T du = b.u - a.u, dv = b.v - a.v;
+  return dv > 0 || (dv == 0 && du > 0);
+}
+
+}  // namespace raster
+
+// Calls emit(u, v, depth) for every pixel of [0, width) x [0, height) that
+// the triangle covers, row by row. Integer vertices must lie within ±2^38
+// units in u, v and d (the host refuses polygons beyond that), so that
+// every product fits 128 bits.
+template <class T, class Emit>
+void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int width, int height, Emit&& emit) {
+  using W = raster::Wide<T>;
+  W area = raster::edge(a, b, W(c.u), W(c.v));
+  if (area == 0) return;
+  if (area < 0) {
+    std::swap(b, c);
+    area = -area;
+  }
+  int u0, u1, v0, v1;
+  raster::centres(std::min({a.u, b.u, c.u}), std::max({a.u, b.u, c.u}), one, width, u0, u1);
+  raster::centres(std::min({a.v, b.v, c.v}), std::max({a.v, b.v, c.v}), one, height, v0, v1);
+  for (int v = v0; v <= v1; ++v) {
+    const W pv = W(v) * one;
+    for (int u = u0; u <= u1; ++u) {
+      const W pu = W(u) * one;
+      const W ea = raster::edge(b, c, pu, pv), eb = raster::edge(c, a, pu, pv), ec = raster::edge(a, b, pu, pv);
+      if (!raster::inside<T>(ea, b, c) || !raster::inside<T>(eb, c, a) || !raster::inside<T>(ec, a, b)) continue;
+      const W num = ea * a.d + eb * b.d + ec * c.d;
+      if constexpr (std::is_integral_v<T>) {
+        emit(u, v, static_cast<T>(raster::floor_div(2 * num + area, 2 * area)));  // rounded half up
+      } else {
+        emit(u, v, num / area);
+      }
+    }
+  }
+}
+
+}  // namespace cube4::golden

@@ -1,0 +1,73 @@
+// The run-length-encoded frame buffer of translucent polygon slabs
+// (Cube-5 §5, Fig. 13, Algorithm 1): the polygon side's store, which takes
+// fragments in any order and hands each slab image, scanline by scanline,
+// to the Cube pipelines' decoders (golden/units/rle_decode.hpp, where the
+// format is defined).
+//
+// rle_insert() is the paper's RLE_AddPixelToScanline: the encoded line is
+// copied flit by flit into a new one, the new pixel blended in at its
+// position, a run of blank pixels split around it. Read literally, the
+// paper's pseudo-code has three faults at run ends, which ours does not
+// share (the tests insert at every position of every kind of line):
+//  - a fragment on the last pixel of a run longer than one is never
+//    inserted (the split condition is `total + length > xPos`, with the
+//    run word being the length less one);
+//  - a fragment on a one-pixel run leaves a run of length zero (a run
+//    word of -1) behind;
+//  - after copying a whole run, `total` advances by the run word, one
+//    pixel short.
+// Every line the functions below make is canonical: no two run flits
+// adjacent, no empty run, the pixels adding up to the line's width; the
+// insert keeps a canonical line canonical (it only splits runs).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "golden/precision.hpp"
+#include "golden/units/composite_polygon.hpp"
+#include "golden/units/rle_decode.hpp"
+
+namespace cube4::golden {
+
+using RleLine = std::vector<uint16_t>;
+
+// A cleared line: one run of `width` blank pixels (no flit for width 0).
+RleLine rle_clear(int width);
+RleLine rle_encode(const Pixel* pixels, int width);
+// Throws std::logic_error if the line does not hold exactly `width` pixels.
+std::vector<Pixel> rle_decode(const RleLine& line, int width);
+// Algorithm 1: the line with `px` blended in at x, behind what the line
+// holds there (fragments are inserted front to back: pixel_over(old, px)).
+// A blank px changes nothing.
+RleLine rle_insert(const RleLine& line, int width, int x, const Pixel& px, const Precision& p);
+// Flits in a line: the cycles Fig. 13's hardware spends copying it.
+size_t rle_flits(const RleLine& line);
+
+// One slab image: the fragments of one thin slab, for every beam y of the
+// sample slice and every pipeline lane (golden/units/rle_decode.hpp).
+class SlabImage {
+ public:
+  SlabImage() = default;
+  SlabImage(int width, int beams, int lanes) : width_(width), beams_(beams), lanes_(lanes) {}
+  int width() const { return width_; }
+  int beams() const { return beams_; }
+  int lanes() const { return lanes_; }
+  // Pixels of lane l of a beam: x = l, l + lanes, ... < width.
+  int lane_width(int lane) const { return lane < width_ ? (width_ - lane + lanes_ - 1) / lanes_ : 0; }
+  // No fragment at all: the lines are not even stored (every one cleared).
+  bool empty() const { return lines_.empty(); }
+  const RleLine& line(int y, int lane) const { return lines_[static_cast<size_t>(y) * lanes_ + lane]; }
+  // Inserts a fragment at (x, y) with rle_insert on its lane's line.
+  void insert(int x, int y, const Pixel& px, const Precision& p);
+  // Beam y as the p decoders deliver it: out[x] for x in [0, width).
+  // Throws std::logic_error on a malformed line.
+  void decode_beam(int y, Pixel* out) const;
+  // Flits over all lines: the data the slab sends to the pipelines.
+  size_t flits() const;
+
+ private:
+  int width_ = 0, beams_ = 0, lanes_ = 1;
+  std::vector<RleLine> lines_;
+};
+
+}  // namespace cube4::golden
