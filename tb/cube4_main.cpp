@@ -43,6 +43,7 @@ struct RenderArgs {
   std::string baseplane;
   std::string report;
   double reference_step = 0.25;
+  golden::SplatKernel splat;
   int repeat = 1;
   bool quiet = false;
   int pipes = 0;           // 0: the scene's
@@ -158,10 +159,12 @@ void check_render_memory(const Loaded& l, const std::string& model, int golden_t
   // system model keeps its own copy of the volume in voxel memory, and the
   // check's golden render another base plane. The fixed renderer's ray
   // store holds a ray per base-plane pixel, and each of its threads eight
-  // slices of 4-byte samples and voxels.
+  // slices of 4-byte samples and voxels. The splat model accumulates a slice
+  // image and the image in double RGBA.
   const bool system = is_system_model(model);
   const bool fixed = model == "fixed" || system;
-  const double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20 +
+  const double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) +
+                       image * (20 + (model == "splat" ? 64 : 0)) +
                        (fixed ? base * sizeof(golden::RayAcc) * (system ? 2 : 1) + golden_threads * 8 * 4 * slice : 0);
   golden::check_memory(l.scene.file.empty() ? std::string("the default scene") : l.scene.file,
                        "the " + model + " render", bytes,
@@ -203,13 +206,16 @@ int run_render(const RenderArgs& a) {
     if (ext != ".png" && ext != ".exr" && ext != ".PNG" && ext != ".EXR")
       throw InputError("output file '" + *p + "': unsupported extension '" + ext + "' (use .png or .exr)");
   }
-  if (a.model == "reference" && !a.baseplane.empty())
-    throw InputError("--baseplane: the reference model casts rays from image pixels and has no base plane");
+  if ((a.model == "reference" || a.model == "splat") && !a.baseplane.empty())
+    throw InputError("--baseplane: the " + a.model + " model renders the final image directly and has no base plane");
   if (!(a.reference_step > 0 && a.reference_step <= 4))
     throw InputError("--reference-step " + std::to_string(a.reference_step) + " is out of range (0, 4]");
+  if (!(a.splat.sigma >= 0.05 && a.splat.sigma <= 4) || !(a.splat.width >= 0.25 && a.splat.width <= 8))
+    throw InputError("--splat-kernel " + std::to_string(a.splat.sigma) + " " + std::to_string(a.splat.width) +
+                     " is out of range (SIGMA 0.05..4, WIDTH 0.25..8 voxel spacings)");
   const bool system = is_system_model(a.model);
-  if (!system && a.model != "fixed" && a.model != "float" && a.model != "reference")
-    throw InputError("--model " + a.model + ": unknown model (fixed, float, reference, tlm, rtl, mixed:UNIT,...)");
+  if (!system && a.model != "fixed" && a.model != "float" && a.model != "reference" && a.model != "splat")
+    throw InputError("--model " + a.model + ": unknown model (fixed, float, reference, splat, tlm, rtl, mixed:UNIT,...)");
   if (!a.trace_window.empty() &&
       (a.trace_window.size() != 2 || a.trace_window[0] < 0 || a.trace_window[0] > a.trace_window[1]))
     throw InputError("--trace-window: give FIRST LAST cycles, 0 <= FIRST <= LAST");
@@ -262,9 +268,10 @@ int run_render(const RenderArgs& a) {
   // x/y supersampling (VolumePro §4.1): n² frames whose rays start 1/n of a
   // pixel apart, each warped, then blended on the host; for n = 1 the one
   // frame of the scene. The reference ray caster casts a ray per output
-  // pixel already and renders once.
+  // pixel already and renders once; so does the splat model, which has no rays.
   const std::vector<golden::Scene> sub_scenes =
-      a.model == "reference" ? std::vector<golden::Scene>{l.scene} : golden::xy_subframes(l.scene);
+      a.model == "reference" || a.model == "splat" ? std::vector<golden::Scene>{l.scene}
+                                                   : golden::xy_subframes(l.scene);
   std::vector<golden::HostProgram> sub_hosts;
   for (const golden::Scene& s : sub_scenes)
     sub_hosts.push_back(sub_scenes.size() == 1 ? l.host : golden::program_host(s, l.volume));
@@ -332,6 +339,10 @@ int run_render(const RenderArgs& a) {
         samples += frame_stats.samples;
         frames.push_back(golden::warp(bp.image, bp.shift_x, bp.shift_y, host.view));
         if (last && i == 0 && !a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp.image, a.baseplane);
+      } else if (a.model == "splat") {
+        golden::RenderStats frame_stats;
+        frames.push_back(golden::render_splat(l.volume, l.scene, l.host.view, a.splat, &frame_stats, cb));
+        samples += frame_stats.samples;
       } else {
         golden::ReferenceOptions opt;
         opt.step = a.reference_step;
@@ -369,6 +380,11 @@ int run_render(const RenderArgs& a) {
         {"output", a.output},
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
+    if (a.model == "splat") {
+      const golden::FootprintTables t = golden::footprint_tables(l.host.view, a.splat);
+      r["splat"] = {{"kernel", "gaussian"}, {"sigma", a.splat.sigma}, {"distribution_width", a.splat.width},
+                    {"extent", t.extent}, {"cell_area_pixels", t.cell_area}};
+    }
     if (a.model == "fixed") r["threads"] = a.threads > 0 ? a.threads : golden::default_threads();
     if (sys) {
       r["system"] = tb::describe_system(*sys, cfg, l.scene.clock_mhz, seconds, check_failure);
@@ -436,13 +452,18 @@ int main(int argc, char** argv) {
   CLI::App* render = app.add_subcommand("render", "render a scene (default: shaded composite of brainsmall)");
   render->add_option("scene", ra.scene, "scene JSON file (docs/scene.md)");
   render->add_option("--model", ra.model,
-                     "fixed (bit-exact golden), float, reference (image-order), or the system model: tlm, rtl, "
+                     "fixed (bit-exact golden), float, reference (image-order), splat (bela's energy projection), "
+                     "or the system model: tlm, rtl, "
                      "mixed:UNIT,... (units interp, gradient, shade, composite, addr at RTL, the rest TLM)")
       ;
   render->add_option("-o,--output", ra.output, "final image, .png or .exr")->capture_default_str();
   render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact; with xy_supersampling, the first frame's)");
   render->add_option("--report", ra.report, "write a JSON report");
   render->add_option("--reference-step", ra.reference_step, "reference model: ray step in voxels")->capture_default_str();
+  render->add_option_function<std::vector<double>>(
+            "--splat-kernel", [&ra](const std::vector<double>& v) { ra.splat = {v[0], v[1]}; },
+            "splat model: SIGMA WIDTH of the Gaussian kernel in voxel spacings (default 0.5 1.25)")
+      ->expected(2);
   render->add_option("--repeat", ra.repeat, "render N times (benchmarking): the report gives min and median")
       ->check(CLI::Range(1, 100000));
   render->add_flag("-q,--quiet", ra.quiet, "no progress or summary on stderr");
