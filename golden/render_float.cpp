@@ -173,9 +173,7 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
   const Precision& p = s.precision;
   const double vmax = static_cast<double>(vol.max_value());
   const double gscale = std::ldexp(1.0, -p.gradient_shift);
-  const double ratio = sample_step_ratio(f, S);
-  const double gmax = max_gradient_magnitude(p);
-  const Lighting L = lighting_of(s, f);
+  const SampleShading shade(s, f, vmax, sample_step_ratio(f, S));
   const CropRegs crop = permute_cropping(s.cropping, f);
   const PermutedCutPlane cut = permute_cut_plane_real(s.cut, f);
 
@@ -226,26 +224,9 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
           g = {(current.at(x + 1, y) - current.at(x - 1, y)) * gscale,
                (current.at(x, y + 1) - current.at(x, y - 1)) * gscale, (a - b) * S * gscale};
         }
-        const double mag = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        const double gm = e.magnitude ? eval_piecewise(s.gm_lut, std::min(1.0, mag / gmax)) : 1.0;
-        double alpha = correct_alpha(eval_piecewise(s.opacity, v / vmax), ratio);
-        if (s.gm.opacity) alpha *= gm;
-        Vec3 rgb = eval_color(s.color, v / vmax);
-        if (e.shading) {
-          double id = 0, is = 0;
-          if (mag > 0) {
-            id = L.diffuse(normal_from_permuted_gradient(f, g));
-            if (e.specular) {
-              const Vec3& E = f.eye_perm;
-              const double ne = g[0] * E[0] + g[1] * E[1] + g[2] * E[2], nn = mag * mag;
-              is = L.specular(object_direction(f, {2 * ne * g[0] - nn * E[0], 2 * ne * g[1] - nn * E[1],
-                                                   2 * ne * g[2] - nn * E[2]}));
-            }
-          }
-          const double fd = s.material.ke + s.material.kd * id * (s.gm.diffuse ? gm : 1.0);
-          const double fs = e.specular ? s.material.ks * is * (s.gm.specular ? gm : 1.0) : 0.0;
-          for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c] * fd + s.material.specular_color[c] * fs, 0.0, 1.0);
-        }
+        const ShadedF sh = shade(v, g);
+        double alpha = sh.alpha;
+        const Vec3& rgb = sh.rgb;
         bool visible = !e.cropping || crop_visible(x, y, zv, crop);
         if (e.cut_plane) {
           const double fac = cut.factor(cut.a[0] * (x + ox.frac) + cut.a[1] * (y + oy.frac) + cut.a[2] * z);

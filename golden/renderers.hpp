@@ -1,6 +1,7 @@
-// The three renderers and the warp. The fixed-point renderer is the
-// bit-exact specification; the float renderer is the same algorithm in real
-// arithmetic; the reference is an independent image-order ray caster.
+// The renderers and the warp. The fixed-point renderer is the bit-exact
+// specification; the float renderer is the same algorithm in real
+// arithmetic; the reference is an independent image-order ray caster; the
+// splat renderer is bela's energy projection, for comparison.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -12,6 +13,7 @@
 #include "golden/mesh.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/polygon_frame.hpp"
+#include "golden/splat_footprint.hpp"
 #include "golden/volume.hpp"
 
 namespace cube4::golden {
@@ -99,6 +101,14 @@ struct ReferenceOptions {
 ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisation& f,
                         const ReferenceOptions& opt = {}, RenderStats* stats = nullptr,
                         const Progress& progress = {});
+
+// bela's projection (§III.B–C) in double precision, object order: every
+// voxel classified and shaded where it is and spread over the image by its
+// footprint table, slice images composited front to back. A comparison
+// renderer, not a hardware specification. Final image of the scene's size;
+// "composite" scenes only (InputError otherwise); samples = voxels spread.
+ImageF render_splat(const Volume& vol, const Scene& s, const ViewFactorisation& f, const SplatKernel& kernel = {},
+                    RenderStats* stats = nullptr, const Progress& progress = {});
 
 // Bilinear warp of a base plane onto the final image (transparent outside).
 ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactorisation& f);

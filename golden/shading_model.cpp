@@ -125,4 +125,34 @@ Vec3 object_direction(const ViewFactorisation& f, const Vec3& d_perm) {
   return unit_or_zero(f.direction_to_object(d_perm));
 }
 
+SampleShading::SampleShading(const Scene& s, const ViewFactorisation& f, double vmax, double ratio)
+    : s_(s), f_(f), e_(effects_of(s)), lighting_(lighting_of(s, f)), vmax_(vmax),
+      gmax_(max_gradient_magnitude(s.precision)), ratio_(ratio) {}
+
+ShadedF SampleShading::operator()(double v, const Vec3& g) const {
+  const Scene& s = s_;
+  const double mag = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  const double gm = e_.magnitude ? eval_piecewise(s.gm_lut, std::min(1.0, mag / gmax_)) : 1.0;
+  ShadedF out;
+  out.alpha = correct_alpha(eval_piecewise(s.opacity, v / vmax_), ratio_);
+  if (s.gm.opacity) out.alpha *= gm;
+  Vec3& rgb = out.rgb;
+  rgb = eval_color(s.color, v / vmax_);
+  if (!e_.shading) return out;
+  double id = 0, is = 0;
+  if (mag > 0) {
+    id = lighting_.diffuse(normal_from_permuted_gradient(f_, g));
+    if (e_.specular) {
+      const Vec3& E = f_.eye_perm;
+      const double ne = g[0] * E[0] + g[1] * E[1] + g[2] * E[2], nn = mag * mag;
+      is = lighting_.specular(
+          object_direction(f_, {2 * ne * g[0] - nn * E[0], 2 * ne * g[1] - nn * E[1], 2 * ne * g[2] - nn * E[2]}));
+    }
+  }
+  const double fd = s.material.ke + s.material.kd * id * (s.gm.diffuse ? gm : 1.0);
+  const double fs = e_.specular ? s.material.ks * is * (s.gm.specular ? gm : 1.0) : 0.0;
+  for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c] * fd + s.material.specular_color[c] * fs, 0.0, 1.0);
+  return out;
+}
+
 }  // namespace cube4::golden

@@ -49,4 +49,33 @@ Vec3 normal_from_permuted_gradient(const ViewFactorisation& f, const Vec3& g_per
 // Unit direction in object space from a direction in permuted voxel space.
 Vec3 object_direction(const ViewFactorisation& f, const Vec3& d_perm);
 
+// A sample's colour (not premultiplied) and opacity.
+struct ShadedF {
+  Vec3 rgb{};
+  double alpha = 0;
+};
+
+// The pipeline's classification, gradient-magnitude modulation and Phong
+// shading of one sample in real arithmetic, in the order the units apply
+// them; the reflection vector is formed from the unnormalised gradient in
+// permuted voxel space, as the shading unit forms it (docs/architecture.md,
+// step 7). The float and splat renderers shade every sample with it, so that
+// they differ from each other only in where their samples are.
+class SampleShading {
+ public:
+  // vmax: the largest voxel value; ratio: the length of ray a sample stands
+  // for, in unit lengths (its opacity is corrected to it).
+  SampleShading(const Scene& s, const ViewFactorisation& f, double vmax, double ratio);
+  // v: the sample's value; g: its gradient in permuted voxel space, scaled
+  // as the gradient unit scales it (zero when the scene needs none).
+  ShadedF operator()(double v, const Vec3& g) const;
+
+ private:
+  const Scene& s_;
+  const ViewFactorisation& f_;
+  EffectSet e_;
+  Lighting lighting_;
+  double vmax_, gmax_, ratio_;
+};
+
 }  // namespace cube4::golden

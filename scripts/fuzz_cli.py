@@ -127,7 +127,7 @@ def main():
         v = {"file": name} if not name.endswith(".raw") else {"file": name, "format": "raw", "dims": list(dims),
                                                               "type": "uint8"}
         scenes.append({"volume": v, "output": {"width": 48, "height": 48}})
-    models = ["fixed", "float", "tlm", "rtl", "mixed:shade", "reference"]
+    models = ["fixed", "float", "tlm", "rtl", "mixed:shade", "reference", "splat"]
     end = time.time() + a.minutes * 60
     runs, problems, codes = 0, [], {}
     while time.time() < end:
@@ -149,7 +149,7 @@ def main():
         model = rng.choice(models)
         cmd = [cube4, "render", os.path.join(case, "scene.json"), "--model", model, "-q", "-o", outs[0],
                "--baseplane", outs[1], "--report", outs[2]]
-        if model == "reference":
+        if model in ("reference", "splat"):  # no base plane
             cmd.remove("--baseplane"); cmd.remove(outs[1])
         try:
             r = subprocess.run(cmd, capture_output=True, timeout=a.timeout)
@@ -168,7 +168,7 @@ def main():
             if leftovers:
                 fault = "exit 2 left temporaries " + ", ".join(leftovers)
         elif code == 0:
-            written = [o for o in outs if model != "reference" or o != outs[1]]
+            written = [o for o in outs if model not in ("reference", "splat") or o != outs[1]]
             if any(not os.path.exists(o) or os.path.getsize(o) == 0 for o in written):
                 fault = "exit 0 without every output"
         if fault:

@@ -47,6 +47,7 @@ struct RenderArgs {
   std::string baseplane;
   std::string report;
   double reference_step = 0.25;
+  golden::SplatKernel splat;
   int repeat = 1;
   bool quiet = false;
   int pipes = 0;           // 0: the scene's
@@ -200,12 +201,14 @@ void check_render_memory(const Loaded& l, const std::string& model, int golden_t
   // system model keeps its own copy of the volume in voxel memory, and the
   // check's golden render another base plane. The fixed renderer's ray
   // store holds a ray per base-plane pixel, and each of its threads eight
-  // slices of 4-byte samples and voxels.
+  // slices of 4-byte samples and voxels. The splat model accumulates a slice
+  // image and the image in double RGBA.
   const bool system = is_system_model(model);
   const bool fixed = model == "fixed" || system;
   // With polygons the fixed renderer also holds their front, back and Z
   // images (20 bytes a pixel), the float one its fragment lists.
-  double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) + image * 20 +
+  double bytes = voxels * 2 * (system ? 2 : 1) + base * 16 * (system ? 2 : 1) +
+                 image * (20 + (model == "splat" ? 64 : 0)) +
                  (fixed ? base * sizeof(golden::RayAcc) * (system ? 2 : 1) + golden_threads * 8 * 4 * slice : 0) +
                  (l.meshes.empty() ? 0 : base * 20);
   // Partitioned: every block's partial image (pixels and accumulators) is
@@ -360,13 +363,16 @@ int run_render(const RenderArgs& args) {
     if (ext != ".png" && ext != ".exr" && ext != ".PNG" && ext != ".EXR")
       throw InputError("output file '" + *p + "': unsupported extension '" + ext + "' (use .png or .exr)");
   }
-  if (a.model == "reference" && !a.baseplane.empty())
-    throw InputError("--baseplane: the reference model casts rays from image pixels and has no base plane");
+  if ((a.model == "reference" || a.model == "splat") && !a.baseplane.empty())
+    throw InputError("--baseplane: the " + a.model + " model renders the final image directly and has no base plane");
   if (!(a.reference_step > 0 && a.reference_step <= 4))
     throw InputError("--reference-step " + std::to_string(a.reference_step) + " is out of range (0, 4]");
+  if (!(a.splat.sigma >= 0.05 && a.splat.sigma <= 4) || !(a.splat.width >= 0.25 && a.splat.width <= 8))
+    throw InputError("--splat-kernel " + std::to_string(a.splat.sigma) + " " + std::to_string(a.splat.width) +
+                     " is out of range (SIGMA 0.05..4, WIDTH 0.25..8 voxel spacings)");
   const bool system = is_system_model(a.model);
-  if (!system && a.model != "fixed" && a.model != "float" && a.model != "reference")
-    throw InputError("--model " + a.model + ": unknown model (fixed, float, reference, tlm, rtl, mixed:UNIT,...)");
+  if (!system && a.model != "fixed" && a.model != "float" && a.model != "reference" && a.model != "splat")
+    throw InputError("--model " + a.model + ": unknown model (fixed, float, reference, splat, tlm, rtl, mixed:UNIT,...)");
   if (!a.trace_window.empty() &&
       (a.trace_window.size() != 2 || a.trace_window[0] < 0 || a.trace_window[0] > a.trace_window[1]))
     throw InputError("--trace-window: give FIRST LAST cycles, 0 <= FIRST <= LAST");
@@ -400,6 +406,9 @@ int run_render(const RenderArgs& args) {
   const bool blocked = partitioned(counts) && (system || a.model == "fixed");
   const std::string what_blocks = blocks_what(a, l.scene);
   std::optional<golden::BlockPlan> header_plan;
+  if (a.model == "splat" && !l.meshes.empty())
+    throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
+                     ": \"polygons\": the splat model draws the volume only (bela's voxel projection)");
   if (blocked && !l.meshes.empty())
     throw InputError(what_blocks + ": a scene with \"polygons\" renders in one pass so far (Cube-5's polygon images "
                      "are not cut into blocks yet)");
@@ -451,9 +460,10 @@ int run_render(const RenderArgs& args) {
   // x/y supersampling (VolumePro §4.1): n² frames whose rays start 1/n of a
   // pixel apart, each warped, then blended on the host; for n = 1 the one
   // frame of the scene. The reference ray caster casts a ray per output
-  // pixel already and renders once.
+  // pixel already and renders once; so does the splat model, which has no rays.
   const std::vector<golden::Scene> sub_scenes =
-      a.model == "reference" ? std::vector<golden::Scene>{l.scene} : golden::xy_subframes(l.scene);
+      a.model == "reference" || a.model == "splat" ? std::vector<golden::Scene>{l.scene}
+                                                   : golden::xy_subframes(l.scene);
   std::vector<golden::HostProgram> sub_hosts;
   for (const golden::Scene& s : sub_scenes)
     sub_hosts.push_back(sub_scenes.size() == 1 ? l.host : golden::program_host(s, l.volume, l.meshes));
@@ -559,6 +569,10 @@ int run_render(const RenderArgs& args) {
         samples += frame_stats.samples;
         frames.push_back(golden::warp(bp.image, bp.shift_x, bp.shift_y, host.view));
         if (last && i == 0 && !a.baseplane.empty()) tb::write_baseplane(baseplane_temp, bp.image, a.baseplane);
+      } else if (a.model == "splat") {
+        golden::RenderStats frame_stats;
+        frames.push_back(golden::render_splat(l.volume, l.scene, l.host.view, a.splat, &frame_stats, cb));
+        samples += frame_stats.samples;
       } else {
         golden::ReferenceOptions opt;
         opt.step = a.reference_step;
@@ -597,6 +611,11 @@ int run_render(const RenderArgs& args) {
         {"output", a.output},
     };
     if (a.model == "reference") r["reference_step"] = a.reference_step;
+    if (a.model == "splat") {
+      const golden::FootprintTables t = golden::footprint_tables(l.host.view, a.splat);
+      r["splat"] = {{"kernel", "gaussian"}, {"sigma", a.splat.sigma}, {"distribution_width", a.splat.width},
+                    {"extent", t.extent}, {"cell_area_pixels", t.cell_area}};
+    }
     if (a.model == "fixed") r["threads"] = a.threads > 0 ? a.threads : golden::default_threads();
     if (polygon_counts)
       r["polygon_fragments"] = {{"opaque", polygon_counts->opaque},      {"translucent", polygon_counts->translucent},
@@ -792,13 +811,18 @@ int main(int argc, char** argv) {
   CLI::App* render = app.add_subcommand("render", "render a scene (default: shaded composite of brainsmall)");
   render->add_option("scene", ra.scene, "scene JSON file (docs/scene.md)");
   render->add_option("--model", ra.model,
-                     "fixed (bit-exact golden), float, reference (image-order), or the system model: tlm, rtl, "
+                     "fixed (bit-exact golden), float, reference (image-order), splat (bela's energy projection), "
+                     "or the system model: tlm, rtl, "
                      "mixed:UNIT,... (units interp, gradient, shade, composite, addr at RTL, the rest TLM)")
       ;
   render->add_option("-o,--output", ra.output, "final image, .png or .exr")->capture_default_str();
   render->add_option("--baseplane", ra.baseplane, "also write the base-plane image (.png: 16-bit, bit-exact; with xy_supersampling, the first frame's)");
   render->add_option("--report", ra.report, "write a JSON report");
   render->add_option("--reference-step", ra.reference_step, "reference model: ray step in voxels")->capture_default_str();
+  render->add_option_function<std::vector<double>>(
+            "--splat-kernel", [&ra](const std::vector<double>& v) { ra.splat = {v[0], v[1]}; },
+            "splat model: SIGMA WIDTH of the Gaussian kernel in voxel spacings (default 0.5 1.25)")
+      ->expected(2);
   render->add_option("--repeat", ra.repeat, "render N times (benchmarking): the report gives min and median")
       ->check(CLI::Range(1, 100000));
   render->add_flag("-q,--quiet", ra.quiet, "no progress or summary on stderr");

@@ -30,9 +30,10 @@ const char* kSphere = R"({"volume": {"synthetic": "sphere", "size": [16, 16, 16]
 
 TEST_F(Cli, RendersEveryModelWithReportAndBasePlane) {
   const std::string scene = write("s.json", kSphere);
-  for (const std::string model : {"fixed", "float", "reference"}) {
+  for (const std::string model : {"fixed", "float", "reference", "splat"}) {
     const std::string out = path(model + ".png"), rep = path(model + ".json");
-    const std::string bp = model == "reference" ? "" : " --baseplane " + path(model + "_bp.png");
+    const bool base_plane = model != "reference" && model != "splat";
+    const std::string bp = base_plane ? " --baseplane " + path(model + "_bp.png") : "";
     const CliResult r = run("render " + scene + " --model " + model + " -q -o " + out + " --report " + rep + bp);
     ASSERT_EQ(r.code, 0) << r.err;
     const auto img = cube4::tb::read_image(out);
@@ -44,6 +45,7 @@ TEST_F(Cli, RendersEveryModelWithReportAndBasePlane) {
     EXPECT_EQ(j["samples"].get<uint64_t>() > 0, true);
     for (const char* key : {"volume", "view", "pipelines", "wall_seconds", "samples_per_second", "effects"})
       EXPECT_TRUE(j.contains(key)) << key;
+    if (model == "splat") EXPECT_EQ(j["splat"]["extent"].get<int>() % 2, 1);
     if (model == "fixed") {
       EXPECT_EQ(j["samples"], 16 * 16 * 16);
       EXPECT_EQ(j["baseplane_hash_fnv1a64"].get<std::string>().size(), 16u);
