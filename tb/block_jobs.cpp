@@ -67,7 +67,9 @@ std::string plan_id(const golden::BlockPlan& plan, const golden::Volume& vol) {
   Hash h;
   // Every register the host writes (with the widths the hardware reports),
   // then the tables: what the volume's frame is, bit for bit.
-  sysc::regmap::RegisterValues values{plan.whole, vol.dim};
+  sysc::regmap::RegisterValues values;
+  values.regs = plan.whole;
+  values.vol_dims[0] = vol.dim;
   const sysc::HardwareParams hw{plan.whole.p, 1, 256};
   for (const sysc::regmap::Register& r : sysc::regmap::kRegisters)
     if (r.get && (r.set || r.block == sysc::regmap::Block::Precision)) h.u64(r.get(values, hw));

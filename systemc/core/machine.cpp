@@ -12,18 +12,24 @@
 
 namespace cube4::sysc {
 
-void Machine::set_volume_dims(int nx, int ny, int nz) {
-  volume_.dim = {nx, ny, nz};
-  volume_.data.assign(volume_.size(), 0);
-  volume_.source = "host interface";
+void Machine::set_volume_dims(int k, int nx, int ny, int nz) {
+  golden::Volume& v = volumes_[static_cast<size_t>(k)];
+  v.dim = {nx, ny, nz};
+  v.data.assign(v.size(), 0);
+  v.source = "host interface, subvolume " + std::to_string(k);
 }
 
-void Machine::write_voxel(int x, int y, int z, uint16_t v) { volume_.data[volume_.index(x, y, z)] = v; }
+void Machine::write_voxel(int k, int x, int y, int z, uint16_t v) {
+  golden::Volume& vol = volumes_[static_cast<size_t>(k)];
+  vol.data[vol.index(x, y, z)] = v;
+}
 
-void Machine::start_frame(const golden::Registers& regs) {
+uint16_t Machine::read_voxel(int k, int x, int y, int z) const { return volumes_[static_cast<size_t>(k)].at(x, y, z); }
+
+void Machine::start_frame(const golden::Registers& regs, int k) {
   error_ = nullptr;
   try {
-    last_ = run_frame(regs, volume_, cfg_, progress_);
+    last_ = run_frame(regs, volumes_[static_cast<size_t>(k)], cfg_, progress_);
   } catch (...) {
     // The host interface reports a refused frame as a status code; the
     // reason is kept for the program that drives the host.
@@ -61,19 +67,19 @@ Hosted& hosted_once() {
   return h;
 }
 
-Hosted& hosted(const SystemConfig& cfg, const golden::Registers& r, const golden::Volume& vol) {
+Hosted& hosted(const SystemConfig& cfg, const golden::Precision& p, int max_dim) {
   Hosted& h = hosted_once();
   HardwareParams hw;
-  hw.precision = r.p;
+  hw.precision = p;
   hw.pipelines = cfg.p;
-  hw.max_dim = std::max({256, vol.dim[0], vol.dim[1], vol.dim[2]});
+  hw.max_dim = std::max(256, max_dim);
   if (!h.host) {
     if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
       throw std::invalid_argument(
           "host interface: this process has simulated frames without it already, and SystemC adds no module once "
           "it runs; render through the host interface first, or in a process of its own");
     h.hw = hw;
-    h.machine = std::make_unique<Machine>(cfg, r.p.voxel_bits);
+    h.machine = std::make_unique<Machine>(cfg, p.voxel_bits);
     h.host = std::make_unique<HostInterface>("host", HostConfig{hw, sc_core::sc_time(30, sc_core::SC_NS)}, *h.machine);
     h.bus = std::make_unique<HostBus>("host_bus");
     h.bus->socket.bind(h.host->socket);
@@ -93,9 +99,14 @@ bool host_interface_available(int p) {
   return h.host ? h.hw.pipelines == p : sc_core::sc_get_status() == sc_core::SC_ELABORATION;
 }
 
+HostSession host_session(const SystemConfig& cfg, const golden::Precision& p, int max_dim) {
+  Hosted& h = hosted(cfg, p, max_dim);
+  return {h.host->target(), *h.machine};
+}
+
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds) {
-  Hosted& h = hosted(cfg, r, vol);
+  Hosted& h = hosted(cfg, r.p, std::max({vol.dim[0], vol.dim[1], vol.dim[2]}));
   h.machine->set_progress(progress);
   TlmTarget& target = h.host->target();
   sc_core::sc_time delay = sc_core::SC_ZERO_TIME;

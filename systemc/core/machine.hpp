@@ -10,12 +10,16 @@
 #include "golden/volume.hpp"
 #include "systemc/core/system.hpp"
 #include "systemc/host/host_backend.hpp"
+#include "systemc/host/host_program.hpp"
+#include "systemc/host/register_map.hpp"
 
 namespace cube4::sysc {
 
 class Machine final : public HostBackend {
  public:
-  Machine(const SystemConfig& cfg, int voxel_bits) : cfg_(cfg) { volume_.bits = voxel_bits; }
+  Machine(const SystemConfig& cfg, int voxel_bits) : cfg_(cfg) {
+    for (golden::Volume& v : volumes_) v.bits = voxel_bits;
+  }
 
   void set_config(const SystemConfig& cfg) { cfg_ = cfg; }
   void set_progress(golden::Progress p) { progress_ = std::move(p); }
@@ -23,10 +27,13 @@ class Machine final : public HostBackend {
   // Why the last START failed (null if it did not).
   std::exception_ptr error() const { return error_; }
 
-  void set_volume_dims(int nx, int ny, int nz) override;
-  void write_voxel(int x, int y, int z, uint16_t v) override;
+  void set_volume_dims(int k, int nx, int ny, int nz) override;
+  void write_voxel(int k, int x, int y, int z, uint16_t v) override;
+  uint16_t read_voxel(int k, int x, int y, int z) const override;
   // Runs the frame to its end (the host interface's START is blocking).
-  void start_frame(const golden::Registers& regs) override;
+  void start_frame(const golden::Registers& regs, int k) override;
+  // Subvolume k as the voxel memory holds it.
+  const golden::Volume& volume(int k) const { return volumes_[static_cast<size_t>(k)]; }
   bool busy() const override { return false; }
   uint64_t frames_done() const override { return frames_; }
   uint64_t last_frame_cycles() const override { return last_ ? last_->frame_cycles : 0; }
@@ -36,7 +43,7 @@ class Machine final : public HostBackend {
 
  private:
   SystemConfig cfg_;
-  golden::Volume volume_;
+  std::array<golden::Volume, regmap::kSubvolumes> volumes_;
   golden::Progress progress_;
   std::optional<SystemResult> last_;
   uint64_t frames_ = 0;
@@ -51,6 +58,16 @@ class Machine final : public HostBackend {
 // once), for the first call's p and precision.
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds = nullptr);
+// The process's host interface and machine, as render_through_host()
+// builds them (for cfg.p, precision p, volumes up to max_dim per axis), for
+// a host program of its own: several subvolumes, slab updates between
+// frames, frames without reloading the volume (systemc/host/host_program.hpp).
+struct HostSession {
+  TlmTarget& target;
+  Machine& machine;
+};
+HostSession host_session(const SystemConfig& cfg, const golden::Precision& p, int max_dim = 256);
+
 // Whether render_through_host() can run a frame for p pipelines in this
 // process: its modules are built already, for p, or can still be built
 // (no frame has been simulated yet: SystemC adds no module once it runs).

@@ -13,15 +13,20 @@ namespace cube4::sysc {
 
 struct HostBackend {
   virtual ~HostBackend() = default;
-  // A new volume of nx*ny*nz voxels (object order, 1..max_dim each). Called
-  // before the first voxel write or START after VOL_DIM changed.
-  virtual void set_volume_dims(int nx, int ny, int nz) = 0;
-  // One voxel at object coordinates, value < 2^voxel_bits. Never while busy().
-  virtual void write_voxel(int x, int y, int z, uint16_t v) = 0;
-  // Runs, or schedules, one frame with these register values (a copy: the
-  // register file may be rewritten while the frame runs). Never while
-  // busy(). May throw std::exception to refuse the frame (GENERIC_ERROR).
-  virtual void start_frame(const golden::Registers& regs) = 0;
+  // Subvolume k (0 .. regmap::kSubvolumes - 1) becomes a volume of
+  // nx*ny*nz voxels (object order, 1..max_dim each), all zero; the other
+  // subvolumes keep theirs. Called before the first voxel access of k or a
+  // START that renders k after its VOL_DIM changed.
+  virtual void set_volume_dims(int k, int nx, int ny, int nz) = 0;
+  // One voxel of subvolume k at object coordinates, value < 2^voxel_bits.
+  // Never while busy().
+  virtual void write_voxel(int k, int x, int y, int z, uint16_t v) = 0;
+  virtual uint16_t read_voxel(int k, int x, int y, int z) const = 0;
+  // Runs, or schedules, one frame of subvolume k with these register values
+  // (a copy: the register file may be rewritten while the frame runs).
+  // Never while busy(). May throw std::exception to refuse the frame
+  // (GENERIC_ERROR).
+  virtual void start_frame(const golden::Registers& regs, int k) = 0;
   virtual bool busy() const = 0;
   virtual uint64_t frames_done() const = 0;
   virtual uint64_t last_frame_cycles() const = 0;

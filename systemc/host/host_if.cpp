@@ -33,6 +33,7 @@ uint64_t region_base(Region r) {
     case Region::Specular: return rm::kSpecularBase;
     case Region::Base: return rm::kBaseBase;
     case Region::Volume: return rm::kVolumeBase;
+    case Region::Slab: return rm::kSlabBase;
     default: return 0;
   }
 }
@@ -101,7 +102,8 @@ uint64_t HostInterface::mapped_bytes(Region r) const {
   switch (r) {
     case Region::Registers: return rm::kRegisterSpace;
     case Region::Base: return 8 * (2 * n) * (2 * n);
-    case Region::Volume: return (2 * n * n * n + 3) / 4 * 4;
+    case Region::Volume:
+    case Region::Slab: return (2 * n * n * n + 3) / 4 * 4;
     case Region::None: return 0;
     default: return regs_.table_bytes(r);
   }
@@ -138,6 +140,11 @@ HostInterface::Outcome HostInterface::execute(tlm::tlm_generic_payload& t, bool 
       // A debugger must not disturb the voxel memory behind a frame's back.
       if (debug) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
       o = write_volume(addr, words.data(), n);
+      break;
+    case Region::Slab:
+      // A debugger may look, but must not change voxel memory.
+      if (debug && write) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
+      o = access_slab(write, addr, words.data(), n);
       break;
     case Region::Base:
       if (write) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
@@ -216,19 +223,20 @@ HostInterface::Outcome HostInterface::write_ctrl(uint32_t v) {
   }
   if (v & rm::kCtrlReset) {
     regs_.reset();
-    told_dims_ = {0, 0, 0};  // the system model hears the volume's dims again
+    told_dims_ = {};  // the system model hears the volumes' dims again
     started_ = false;        // DONE waits for the next frame
   }
   if (v & rm::kCtrlStart) return start_frame();
   return {};
 }
 
-ErrorCode HostInterface::commit_volume_dims() {
-  const std::array<int, 3> d = regs_.volume_dims();
+ErrorCode HostInterface::commit_volume_dims(int k) {
+  const std::array<int, 3> d = regs_.volume_dims(k);
   if (d[0] == 0 || d[1] == 0 || d[2] == 0) return ErrorCode::VolumeDimsUnset;
-  if (d != told_dims_) {
-    backend_.set_volume_dims(d[0], d[1], d[2]);
-    told_dims_ = d;
+  std::array<int, 3>& told = told_dims_[static_cast<size_t>(k)];
+  if (d != told) {
+    backend_.set_volume_dims(k, d[0], d[1], d[2]);
+    told = d;
   }
   return ErrorCode::None;
 }
@@ -236,7 +244,8 @@ ErrorCode HostInterface::commit_volume_dims() {
 HostInterface::Outcome HostInterface::start_frame() {
   auto fail = [](ErrorCode e) { return Outcome{status_of(e), e, rm::kCtrl}; };
   if (backend_.busy()) return fail(ErrorCode::Busy);
-  const std::array<int, 3> vol = regs_.volume_dims();
+  const int k = regs_.vol_select();
+  const std::array<int, 3> vol = regs_.volume_dims(k);
   if (vol[0] == 0 || vol[1] == 0 || vol[2] == 0) return fail(ErrorCode::VolumeDimsUnset);
   const golden::Registers r = regs_.decoded();
   for (int i = 0; i < 3; ++i)
@@ -253,8 +262,8 @@ HostInterface::Outcome HostInterface::start_frame() {
 
   const uint64_t before = backend_.frames_done();
   try {
-    if (commit_volume_dims() != ErrorCode::None) return fail(ErrorCode::VolumeDimsUnset);
-    backend_.start_frame(r);
+    if (commit_volume_dims(k) != ErrorCode::None) return fail(ErrorCode::VolumeDimsUnset);
+    backend_.start_frame(r, k);
   } catch (const std::exception&) {
     return fail(ErrorCode::BackendFailure);
   }
@@ -266,7 +275,8 @@ HostInterface::Outcome HostInterface::start_frame() {
 HostInterface::Outcome HostInterface::write_volume(uint64_t addr, const uint32_t* words, unsigned n) {
   auto fail = [](ErrorCode e, uint64_t a) { return Outcome{status_of(e), e, a}; };
   if (backend_.busy()) return fail(ErrorCode::Busy, addr);
-  const std::array<int, 3> d = regs_.volume_dims();
+  const int k = regs_.vol_index();
+  const std::array<int, 3> d = regs_.volume_dims(k);
   if (d[0] == 0 || d[1] == 0 || d[2] == 0) return fail(ErrorCode::VolumeDimsUnset, addr);
   const uint64_t voxels = uint64_t(d[0]) * d[1] * d[2];
   const uint32_t max = (uint32_t{1} << config_.hw.precision.voxel_bits) - 1;
@@ -279,15 +289,55 @@ HostInterface::Outcome HostInterface::write_volume(uint64_t addr, const uint32_t
     if ((words[i] & 0xFFFF) > max || (v + 1 < voxels && (words[i] >> 16) > max))
       return fail(ErrorCode::FieldRange, a);
   }
-  commit_volume_dims();
+  commit_volume_dims(k);
   for (unsigned i = 0; i < n; ++i) {
-    for (uint64_t k = 0; k < 2; ++k) {
-      const uint64_t v = first + 2 * uint64_t{i} + k;
+    for (uint64_t h = 0; h < 2; ++h) {
+      const uint64_t v = first + 2 * uint64_t{i} + h;
       if (v >= voxels) break;
       const int x = static_cast<int>(v % d[0]);
       const int y = static_cast<int>(v / d[0] % d[1]);
       const int z = static_cast<int>(v / d[0] / d[1]);
-      backend_.write_voxel(x, y, z, static_cast<uint16_t>(words[i] >> (16 * k)));
+      backend_.write_voxel(k, x, y, z, static_cast<uint16_t>(words[i] >> (16 * h)));
+    }
+  }
+  return {};
+}
+
+// The slab window: the voxels of the box SLAB_X0.. SLAB_NZ of subvolume
+// VOL_INDEX, x fastest, two per word (VolumePro §4.2: single voxels, slices
+// and rectangular slabs read and written between frames).
+HostInterface::Outcome HostInterface::access_slab(bool write, uint64_t addr, uint32_t* words, unsigned n) {
+  auto fail = [](ErrorCode e, uint64_t a) { return Outcome{status_of(e), e, a}; };
+  if (backend_.busy()) return fail(ErrorCode::Busy, addr);
+  const int k = regs_.vol_index();
+  const std::array<int, 3> d = regs_.volume_dims(k), o = regs_.slab_origin(), s = regs_.slab_size();
+  if (d[0] == 0 || d[1] == 0 || d[2] == 0) return fail(ErrorCode::VolumeDimsUnset, addr);
+  for (int i = 0; i < 3; ++i)
+    if (s[i] < 1 || o[i] + s[i] > d[i]) return fail(ErrorCode::SlabOutOfVolume, addr);
+  const uint64_t voxels = uint64_t(s[0]) * s[1] * s[2];
+  const uint32_t max = (uint32_t{1} << config_.hw.precision.voxel_bits) - 1;
+  const uint64_t first = (addr - rm::kSlabBase) / 2;
+  for (unsigned i = 0; i < n; ++i) {
+    const uint64_t v = first + 2 * uint64_t{i};
+    const uint64_t a = addr + 4 * uint64_t{i};
+    if (v >= voxels) return fail(ErrorCode::SlabOutOfVolume, a);
+    if (write && ((words[i] & 0xFFFF) > max || (v + 1 < voxels && (words[i] >> 16) > max)))
+      return fail(ErrorCode::FieldRange, a);
+  }
+  commit_volume_dims(k);
+  for (unsigned i = 0; i < n; ++i) {
+    if (!write) words[i] = 0;
+    for (uint64_t h = 0; h < 2; ++h) {
+      const uint64_t v = first + 2 * uint64_t{i} + h;
+      if (v >= voxels) break;  // a word's high half past an odd slab's end: ignored, read as 0
+      const int x = o[0] + static_cast<int>(v % s[0]);
+      const int y = o[1] + static_cast<int>(v / s[0] % s[1]);
+      const int z = o[2] + static_cast<int>(v / s[0] / s[1]);
+      if (write) {
+        backend_.write_voxel(k, x, y, z, static_cast<uint16_t>(words[i] >> (16 * h)));
+      } else {
+        words[i] |= uint32_t{backend_.read_voxel(k, x, y, z)} << (16 * h);
+      }
     }
   }
   return {};

@@ -67,17 +67,20 @@ class HostInterface : public sc_core::sc_module {
   Outcome access_registers(bool write, uint64_t addr, uint32_t* words, unsigned n, bool debug);
   Outcome access_tables(bool write, uint64_t addr, uint32_t* words, unsigned n);
   Outcome write_volume(uint64_t addr, const uint32_t* words, unsigned n);
+  Outcome access_slab(bool write, uint64_t addr, uint32_t* words, unsigned n);
   Outcome read_base_plane(uint64_t addr, uint32_t* words, unsigned n) const;
   bool read_control(uint64_t addr, uint32_t& v) const;
   Outcome write_ctrl(uint32_t v);
   Outcome start_frame();
-  regmap::ErrorCode commit_volume_dims();
+  // Tells the backend subvolume k's dimensions if they changed since.
+  regmap::ErrorCode commit_volume_dims(int k);
   void record(const Outcome& o);
 
   HostConfig config_;
   HostBackend& backend_;
   RegisterFile regs_;
-  std::array<int, 3> told_dims_{0, 0, 0};  // what the backend was last given
+  // What the backend was last given, per subvolume.
+  std::array<std::array<int, 3>, regmap::kSubvolumes> told_dims_{};
   bool error_ = false;
   regmap::ErrorCode last_error_ = regmap::ErrorCode::None;
   uint64_t error_addr_ = 0;

@@ -79,13 +79,13 @@ void check_table(size_t size, size_t expected, bool used, const char* field) {
             std::to_string(expected) + (used ? "" : " (or 0: the mode bits leave it unused)"));
 }
 
-// The writable registers' words, one block per run of consecutive
-// addresses: the volume's (VOL_DIM) or the frame's (all the others).
-std::vector<RegisterBlock> writable_blocks(const rm::RegisterValues& v, bool volume) {
+// The frame's writable registers' words (not the voxel memory's: VOL_DIM,
+// VOL_INDEX, VOL_SELECT, the slab), one block per run of consecutive addresses.
+std::vector<RegisterBlock> writable_blocks(const rm::RegisterValues& v) {
   const HardwareParams no_hardware;  // writable registers' getters read only the values
   std::vector<RegisterBlock> blocks;
   for (const rm::Register& reg : rm::kRegisters) {
-    if (!reg.set || (reg.block == rm::Block::Volume) != volume) continue;
+    if (!reg.set || reg.block == rm::Block::Volume) continue;
     if (blocks.empty() || blocks.back().addr + 4 * blocks.back().words.size() != reg.addr)
       blocks.push_back({reg.addr, {}});
     const uint64_t value = reg.get(v, no_hardware);
@@ -134,16 +134,71 @@ HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay) {
   return h;
 }
 
-void load_volume_over_tlm(TlmTarget& target, const golden::Volume& vol, sc_core::sc_time& delay) {
+namespace {
+
+// Two voxels per word, x fastest: the windows' order.
+std::vector<uint32_t> pack_voxels(const std::vector<uint16_t>& v) {
+  std::vector<uint32_t> words((v.size() + 1) / 2, 0);
+  for (size_t i = 0; i < v.size(); ++i) words[i / 2] |= uint32_t{v[i]} << (16 * (i % 2));
+  return words;
+}
+
+}  // namespace
+
+void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol, sc_core::sc_time& delay) {
   check(vol.data.size() == vol.size(), "the volume holds " + std::to_string(vol.data.size()) +
                                            " voxels, its dimensions say " + std::to_string(vol.size()));
-  rm::RegisterValues dims;
-  dims.vol_dim = vol.dim;
-  for (const RegisterBlock& b : writable_blocks(dims, true)) write_words(target, b.addr, b.words.data(), b.words.size(), delay);
-  // Two voxels per word, x fastest: the volume's own order, so a plain pack.
-  std::vector<uint32_t> words((vol.data.size() + 1) / 2, 0);
-  for (size_t i = 0; i < vol.data.size(); ++i) words[i / 2] |= uint32_t{vol.data[i]} << (16 * (i % 2));
+  check(k >= 0 && k < rm::kSubvolumes, "subvolume " + std::to_string(k) + " is not one of 0.." +
+                                           std::to_string(rm::kSubvolumes - 1));
+  write_word(target, rm::kVolIndex, static_cast<uint32_t>(k), delay);
+  const uint32_t dims[3] = {static_cast<uint32_t>(vol.dim[0]), static_cast<uint32_t>(vol.dim[1]),
+                            static_cast<uint32_t>(vol.dim[2])};
+  write_words(target, rm::kVolDim, dims, 3, delay);
+  const std::vector<uint32_t> words = pack_voxels(vol.data);
   write_words(target, rm::kVolumeBase, words.data(), words.size(), delay);
+}
+
+void select_subvolume_over_tlm(TlmTarget& target, int k, sc_core::sc_time& delay) {
+  write_word(target, rm::kVolSelect, static_cast<uint32_t>(k), delay);
+}
+
+void load_volume_over_tlm(TlmTarget& target, const golden::Volume& vol, sc_core::sc_time& delay) {
+  load_subvolume_over_tlm(target, 0, vol, delay);
+  select_subvolume_over_tlm(target, 0, delay);
+}
+
+namespace {
+
+// VOL_INDEX and the slab registers for a box of subvolume k.
+void set_slab(TlmTarget& target, int k, const std::array<int, 3>& origin, const std::array<int, 3>& size,
+              sc_core::sc_time& delay) {
+  write_word(target, rm::kVolIndex, static_cast<uint32_t>(k), delay);
+  const uint32_t box[6] = {static_cast<uint32_t>(origin[0]), static_cast<uint32_t>(origin[1]),
+                           static_cast<uint32_t>(origin[2]), static_cast<uint32_t>(size[0]),
+                           static_cast<uint32_t>(size[1]), static_cast<uint32_t>(size[2])};
+  write_words(target, rm::kSlab, box, 6, delay);
+}
+
+}  // namespace
+
+void write_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& origin, const std::array<int, 3>& size,
+                         const std::vector<uint16_t>& voxels, sc_core::sc_time& delay) {
+  const uint64_t n = uint64_t(size[0]) * size[1] * size[2];
+  check(voxels.size() == n, std::to_string(voxels.size()) + " voxels for a slab of " + std::to_string(n));
+  set_slab(target, k, origin, size, delay);
+  const std::vector<uint32_t> words = pack_voxels(voxels);
+  write_words(target, rm::kSlabBase, words.data(), words.size(), delay);
+}
+
+std::vector<uint16_t> read_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& origin,
+                                         const std::array<int, 3>& size, sc_core::sc_time& delay) {
+  const uint64_t n = uint64_t(size[0]) * size[1] * size[2];
+  set_slab(target, k, origin, size, delay);
+  std::vector<uint32_t> words((n + 1) / 2);
+  read_words(target, rm::kSlabBase, words.data(), words.size(), delay);
+  std::vector<uint16_t> voxels(n);
+  for (size_t i = 0; i < n; ++i) voxels[i] = static_cast<uint16_t>(words[i / 2] >> (16 * (i % 2)));
+  return voxels;
 }
 
 void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay) {
@@ -161,7 +216,9 @@ void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_
 }
 
 std::vector<RegisterBlock> register_blocks(const golden::Registers& r) {
-  return writable_blocks(rm::RegisterValues{r, {0, 0, 0}}, false);
+  rm::RegisterValues values;
+  values.regs = r;
+  return writable_blocks(values);
 }
 
 void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay) {

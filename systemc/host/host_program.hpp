@@ -14,6 +14,7 @@
 #pragma once
 #include <tlm>
 
+#include <array>
 #include <cstdint>
 #include <stdexcept>
 #include <systemc>
@@ -49,7 +50,8 @@ struct HardwareId {
 };
 HardwareId read_hardware_id(TlmTarget& target, sc_core::sc_time& delay);
 
-// The words of regs' writable registers (all but VOL_DIM), one block per run
+// The words of regs' writable registers (all but the voxel memory's: VOL_DIM,
+// VOL_INDEX, VOL_SELECT and the slab), one block per run
 // of consecutive addresses in regmap::kRegisters: what write_view_over_tlm
 // writes, one burst each.
 struct RegisterBlock {
@@ -58,7 +60,8 @@ struct RegisterBlock {
 };
 std::vector<RegisterBlock> register_blocks(const golden::Registers& regs);
 
-// The pieces of program_over_tlm, in its order.
+// The pieces of program_over_tlm, in its order. load_volume_over_tlm loads
+// vol as subvolume 0 and selects it for START.
 void load_volume_over_tlm(TlmTarget& target, const golden::Volume& vol, sc_core::sc_time& delay);
 void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay);
 void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay);
@@ -68,6 +71,21 @@ void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_co
 // table the mode bits use, and every register. Does not start the frame.
 void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const golden::Volume& vol,
                       sc_core::sc_time& delay);
+
+// Subvolumes (VolumePro §4.2, docs/registers.md "Subvolumes and slabs"):
+// several volumes resident in voxel memory, one rendered per START.
+// Loads vol as subvolume k (VOL_INDEX = k, VOL_DIM, the volume window);
+// the other subvolumes keep theirs.
+void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol, sc_core::sc_time& delay);
+// START renders subvolume k.
+void select_subvolume_over_tlm(TlmTarget& target, int k, sc_core::sc_time& delay);
+// A box of subvolume k, `size` voxels from `origin` (object order, x
+// fastest): written from `voxels` or read back. A voxel is a 1×1×1 box, a
+// slice nx×ny×1. Between frames, without reloading the rest.
+void write_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& origin, const std::array<int, 3>& size,
+                         const std::vector<uint16_t>& voxels, sc_core::sc_time& delay);
+std::vector<uint16_t> read_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& origin,
+                                         const std::array<int, 3>& size, sc_core::sc_time& delay);
 
 void start_frame_over_tlm(TlmTarget& target, sc_core::sc_time& delay);
 uint32_t read_status_over_tlm(TlmTarget& target, sc_core::sc_time& delay);

@@ -108,7 +108,19 @@ ErrorCode RegisterFile::check_register(uint64_t a, uint32_t v) const {
   if (!reg || reg->block == rm::Block::Control) return ErrorCode::Unmapped;
   if (reg->access != rm::Access::RW) return ErrorCode::ReadOnly;
   if (reg->words == 2) return ErrorCode::None;  // wide_value_out_of_range, at START
-  return rm::fits(*reg, v, hw_) ? ErrorCode::None : ErrorCode::FieldRange;
+  if (!rm::fits(*reg, v, hw_)) return ErrorCode::FieldRange;
+  // Every resident subvolume (all three dimensions set) shares the voxel
+  // memory: a new size must leave room for the others.
+  if (reg->rule == rm::Rule::Dim && reg->block == rm::Block::Volume) {
+    uint64_t used = 0;
+    for (int k = 0; k < rm::kSubvolumes; ++k) {
+      std::array<int, 3> d = values_.vol_dims[static_cast<size_t>(k)];
+      if (k == values_.vol_index) d[(a - rm::kVolDim) / 4] = static_cast<int>(v);
+      used += uint64_t(d[0]) * uint64_t(d[1]) * uint64_t(d[2]);
+    }
+    if (used > hw_.voxel_memory) return ErrorCode::VoxelMemoryFull;
+  }
+  return ErrorCode::None;
 }
 
 const rm::Register* RegisterFile::wide_value_out_of_range() const {

@@ -41,7 +41,12 @@ class RegisterFile {
   // bits say the pipeline uses it (classification: always), as program_host
   // leaves unused tables empty.
   golden::Registers decoded() const;
-  std::array<int, 3> volume_dims() const { return values_.vol_dim; }
+  // Subvolume k's dimensions (0 0 0 until its VOL_DIM is written).
+  std::array<int, 3> volume_dims(int k) const { return values_.vol_dims[static_cast<size_t>(k)]; }
+  int vol_index() const { return values_.vol_index; }
+  int vol_select() const { return values_.vol_select; }
+  std::array<int, 3> slab_origin() const { return values_.slab_origin; }
+  std::array<int, 3> slab_size() const { return values_.slab_size; }
   const HardwareParams& hardware() const { return hw_; }
 
  private:

@@ -27,17 +27,30 @@ struct HardwareParams {
   golden::Precision precision;
   int pipelines = 4;
   int max_dim = 256;
+  // Voxels the voxel memory holds, for every resident subvolume together
+  // (VolumePro §4.2; 2^30: 1024³, the volume window's largest volume).
+  uint64_t voxel_memory = uint64_t{1} << 30;
 };
 
 }  // namespace cube4::sysc
 
 namespace cube4::sysc::regmap {
 
-// What the writable registers hold: a frame's registers and the volume's
-// object-order dimensions.
+// Subvolumes (VolumePro §4.2): volumes resident in voxel memory at once;
+// VOL_INDEX says which one the volume registers and windows address,
+// VOL_SELECT which one START renders.
+constexpr int kSubvolumes = 8;
+
+// What the writable registers hold: a frame's registers, each subvolume's
+// object-order dimensions, the subvolume addressed and the one rendered,
+// and the slab the slab window reads and writes.
 struct RegisterValues {
   golden::Registers regs;
-  std::array<int, 3> vol_dim{0, 0, 0};
+  std::array<std::array<int, 3>, kSubvolumes> vol_dims{};
+  int vol_index = 0, vol_select = 0;
+  std::array<int, 3> slab_origin{0, 0, 0}, slab_size{0, 0, 0};
+  const std::array<int, 3>& vol_dim() const { return vol_dims[static_cast<size_t>(vol_index)]; }
+  std::array<int, 3>& vol_dim() { return vol_dims[static_cast<size_t>(vol_index)]; }
 };
 
 enum class Block { Control, Identification, Precision, View, Mode, Cropping, Window, CutPlane, Shading, Volume };
@@ -198,6 +211,11 @@ inline constexpr Register kListed[] = {
      CUBE4_REG_HW(map_entries(hw.precision)), "", "6·`map_face_res`² per reflectance map"},
     {"ID_BASE_MAX", 0x060, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
      CUBE4_REG_HW(2 * hw.max_dim), "", "2·max dim: largest base-plane width and height (pixel memory)"},
+    {"ID_VOXEL_MEMORY", 0x064, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(hw.voxel_memory >> 10), "",
+     "voxel memory in units of 1024 voxels: every resident subvolume together"},
+    {"ID_SUBVOLUMES", 0x068, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
+     CUBE4_REG_HW(kSubvolumes), "", "subvolumes the voxel memory holds at once (VOL_INDEX, VOL_SELECT)"},
 
     // ---- View and DDA.
     {"DIM_X", 0x100, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, CUBE4_REG_FIELD(dim[0]),
@@ -311,15 +329,34 @@ inline constexpr Register kListed[] = {
 
     // ---- Volume.
     {"VOL_DIM_X", 0x240, Block::Volume, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, "golden::Volume::dim[0]",
-     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim[0]); },
-     [](RegisterValues& v, uint64_t w) { v.vol_dim[0] = static_cast<int>(w); }, "— (voxel memory layout)",
-     "object-order nx"},
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim()[0]); },
+     [](RegisterValues& v, uint64_t w) { v.vol_dim()[0] = static_cast<int>(w); }, "— (voxel memory layout)",
+     "object-order nx of subvolume VOL_INDEX; a new size clears the subvolume"},
     {"VOL_DIM_Y", 0x244, Block::Volume, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, "golden::Volume::dim[1]",
-     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim[1]); },
-     [](RegisterValues& v, uint64_t w) { v.vol_dim[1] = static_cast<int>(w); }, "— (voxel memory layout)", "ny"},
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim()[1]); },
+     [](RegisterValues& v, uint64_t w) { v.vol_dim()[1] = static_cast<int>(w); }, "— (voxel memory layout)", "ny"},
     {"VOL_DIM_Z", 0x248, Block::Volume, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Dim, "golden::Volume::dim[2]",
-     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim[2]); },
-     [](RegisterValues& v, uint64_t w) { v.vol_dim[2] = static_cast<int>(w); }, "— (voxel memory layout)", "nz"},
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_dim()[2]); },
+     [](RegisterValues& v, uint64_t w) { v.vol_dim()[2] = static_cast<int>(w); }, "— (voxel memory layout)", "nz"},
+    {"VOL_INDEX", 0x24C, Block::Volume, Access::RW, 1, bits(3), Sign::Unsigned, Rule::Width, "— (subvolume)",
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_index); },
+     [](RegisterValues& v, uint64_t w) { v.vol_index = static_cast<int>(w); }, "— (voxel memory)",
+     "the subvolume VOL_DIM, the volume window and the slab window address (0..ID_SUBVOLUMES-1)"},
+    {"VOL_SELECT", 0x250, Block::Volume, Access::RW, 1, bits(3), Sign::Unsigned, Rule::Width, "— (subvolume)",
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.vol_select); },
+     [](RegisterValues& v, uint64_t w) { v.vol_select = static_cast<int>(w); }, "cube4_addr (module base address)",
+     "the subvolume START renders"},
+#define CUBE4_SLAB(reg, addr, field, i, meaning)                                                                  \
+    {reg, addr, Block::Volume, Access::RW, 1, bits(16), Sign::Unsigned, Rule::Width, "— (slab)",                   \
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.field[i]); },             \
+     [](RegisterValues& v, uint64_t w) { v.field[i] = static_cast<int>(w); }, "— (voxel memory)", meaning}
+    CUBE4_SLAB("SLAB_X0", 0x254, slab_origin, 0, "the slab window's box in subvolume VOL_INDEX: first voxel"),
+    CUBE4_SLAB("SLAB_Y0", 0x258, slab_origin, 1, ""),
+    CUBE4_SLAB("SLAB_Z0", 0x25C, slab_origin, 2, ""),
+    CUBE4_SLAB("SLAB_NX", 0x260, slab_size, 0, "its size (a voxel: 1, 1, 1; a slice: nx, ny, 1)"),
+    CUBE4_SLAB("SLAB_NY", 0x264, slab_size, 1, ""),
+    CUBE4_SLAB("SLAB_NZ", 0x268, slab_size, 2, ""),
+#undef CUBE4_SLAB
 };
 
 #undef CUBE4_REG_FIELD
@@ -449,6 +486,9 @@ constexpr uint64_t kKs = address_of("KS");
 constexpr uint64_t kSpecularColor = address_of("SPEC_R");  // r, g, b
 constexpr uint64_t kEye = address_of("EYE_X");             // x, y, z
 constexpr uint64_t kVolDim = address_of("VOL_DIM_X");      // x, y, z
+constexpr uint64_t kVolIndex = address_of("VOL_INDEX");
+constexpr uint64_t kVolSelect = address_of("VOL_SELECT");
+constexpr uint64_t kSlab = address_of("SLAB_X0");          // x0, y0, z0, nx, ny, nz
 
 constexpr uint64_t kRegisterSpace = 0x1000;   // everything above is a window
 static_assert(kRegisters.back().addr + 4 * kRegisters.back().words <= kRegisterSpace);
@@ -467,8 +507,10 @@ constexpr uint64_t kBaseBase = 0x0800'0000;    // 8 bytes per pixel: {r|g<<16, b
 constexpr uint64_t kBaseSize = 0x0800'0000;
 constexpr uint64_t kVolumeBase = 0x1'0000'0000;  // two voxels per word, x fastest
 constexpr uint64_t kVolumeSize = 0x1'0000'0000;
+constexpr uint64_t kSlabBase = 0x2'0000'0000;    // the slab's voxels, two per word, x fastest
+constexpr uint64_t kSlabSize = 0x1'0000'0000;
 
-enum class Region { None, Registers, Class, GmLut, Diffuse, Specular, Base, Volume };
+enum class Region { None, Registers, Class, GmLut, Diffuse, Specular, Base, Volume, Slab };
 
 constexpr Region region_of(uint64_t a) {
   if (a < kRegisterSpace) return Region::Registers;
@@ -478,6 +520,7 @@ constexpr Region region_of(uint64_t a) {
   if (a >= kSpecularBase && a - kSpecularBase < kMapSize) return Region::Specular;
   if (a >= kBaseBase && a - kBaseBase < kBaseSize) return Region::Base;
   if (a >= kVolumeBase && a - kVolumeBase < kVolumeSize) return Region::Volume;
+  if (a >= kSlabBase && a - kSlabBase < kSlabSize) return Region::Slab;
   return Region::None;
 }
 
@@ -509,7 +552,7 @@ enum class ErrorCode : uint32_t {
   Streaming = 3,          // BURST_ERROR: streaming width below the data length
   ByteEnable = 4,         // BYTE_ENABLE_ERROR: byte enables are not supported
   ReadOnly = 5,           // COMMAND_ERROR: write to a read-only register or window
-  WriteOnly = 6,          // COMMAND_ERROR: read of the volume window
+  WriteOnly = 6,          // COMMAND_ERROR: read of the volume window (the slab window reads)
   CtrlInBurst = 7,        // BURST_ERROR: CTRL must be written alone (it has side effects)
   FieldRange = 8,         // GENERIC_ERROR: value out of range for its field
   Busy = 9,               // GENERIC_ERROR: START, volume write or base-plane read while busy
@@ -520,6 +563,8 @@ enum class ErrorCode : uint32_t {
   CutFalloffNegative = 14,// GENERIC_ERROR at START
   PixelOutOfImage = 15,   // GENERIC_ERROR: base-plane pixel past width*height
   BackendFailure = 16,    // GENERIC_ERROR: the system model refused the frame
+  SlabOutOfVolume = 17,   // GENERIC_ERROR: slab window access with an empty slab or one past its subvolume
+  VoxelMemoryFull = 18,   // GENERIC_ERROR: VOL_DIM write past ID_VOXEL_MEMORY with the other subvolumes
 };
 
 constexpr const char* error_name(ErrorCode e) {
@@ -541,6 +586,8 @@ constexpr const char* error_name(ErrorCode e) {
     case ErrorCode::CutFalloffNegative: return "cut-plane falloff negative";
     case ErrorCode::PixelOutOfImage: return "pixel outside the base plane";
     case ErrorCode::BackendFailure: return "backend failure";
+    case ErrorCode::SlabOutOfVolume: return "slab outside its subvolume";
+    case ErrorCode::VoxelMemoryFull: return "voxel memory full";
   }
   return "unknown";
 }

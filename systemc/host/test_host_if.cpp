@@ -41,8 +41,9 @@ namespace {
 // asked, renders frames with the golden model.
 class TestBackend : public HostBackend {
  public:
-  golden::Volume volume;
-  std::vector<int> writes_per_voxel;
+  std::array<golden::Volume, rm::kSubvolumes> volumes;
+  std::vector<int> writes_per_voxel;  // subvolume 0's
+  std::vector<int> rendered;          // the subvolume of every frame started
   int dims_calls = 0;
   std::vector<golden::Registers> frames;
   bool is_busy = false;
@@ -53,24 +54,32 @@ class TestBackend : public HostBackend {
   bool render = false;  // start_frame renders with golden::render_fixed
   bool refuse = false;  // start_frame throws
 
-  void set_volume_dims(int nx, int ny, int nz) override {
+  void set_volume_dims(int k, int nx, int ny, int nz) override {
     ++dims_calls;
-    volume = golden::Volume{};
-    volume.dim = {nx, ny, nz};
-    volume.data.assign(volume.size(), 0);
-    writes_per_voxel.assign(volume.size(), 0);
+    golden::Volume& v = volumes.at(static_cast<size_t>(k));
+    v = golden::Volume{};
+    v.dim = {nx, ny, nz};
+    v.data.assign(v.size(), 0);
+    if (k == 0) writes_per_voxel.assign(v.size(), 0);
   }
-  void write_voxel(int x, int y, int z, uint16_t v) override {
-    const size_t i = volume.index(x, y, z);
-    volume.data.at(i) = v;
-    ++writes_per_voxel.at(i);
+  void write_voxel(int k, int x, int y, int z, uint16_t v) override {
+    golden::Volume& vol = volumes.at(static_cast<size_t>(k));
+    const size_t i = vol.index(x, y, z);
+    vol.data.at(i) = v;
+    if (k == 0) ++writes_per_voxel.at(i);
   }
-  void start_frame(const golden::Registers& regs) override {
+  uint16_t read_voxel(int k, int x, int y, int z) const override {
+    const golden::Volume& vol = volumes.at(static_cast<size_t>(k));
+    return vol.data.at(vol.index(x, y, z));
+  }
+  void start_frame(const golden::Registers& regs, int k) override {
     if (refuse) throw std::runtime_error("refused");
     frames.push_back(regs);
+    rendered.push_back(k);
     if (render) {
-      volume.bits = regs.p.voxel_bits;
-      plane = golden::render_fixed(volume, regs);
+      golden::Volume& vol = volumes.at(static_cast<size_t>(k));
+      vol.bits = regs.p.voxel_bits;
+      plane = golden::render_fixed(vol, regs);
     }
     busy_until = sc_core::sc_time_stamp() + frame_time;
     cycles = 1000 + frames.size();
@@ -157,7 +166,8 @@ struct Env {
   TestBackend backend;
   HostInterface host{"host", HostConfig{HardwareParams{golden::Precision{}, 4, 64}}, backend};
   TestBackend backend8;
-  HostInterface host8{"host8", HostConfig{HardwareParams{narrow_precision(), 3, 32}}, backend8};
+  // A small voxel memory: two 32³ subvolumes fill it.
+  HostInterface host8{"host8", HostConfig{HardwareParams{narrow_precision(), 3, 32, 2 * 32 * 32 * 32}}, backend8};
   HostThread thread{"thread"};
   IdleInitiator idle{"idle"};
   Env() {
@@ -418,7 +428,7 @@ TEST(HostInterface, StatusRegistersMirrorTheBackend) {
   EXPECT_EQ(read(e.host, rm::kStatus), rm::kStatusDone);
   ASSERT_EQ(e.backend.frames.size(), 1u);
   EXPECT_EQ(e.backend.dims_calls, 1);
-  EXPECT_EQ(e.backend.volume.dim, (std::array<int, 3>{4, 5, 6}));
+  EXPECT_EQ(e.backend.volumes[0].dim, (std::array<int, 3>{4, 5, 6}));
   e.backend.is_busy = true;
   EXPECT_EQ(read(e.host, rm::kStatus), rm::kStatusBusy);
   e.backend.is_busy = false;
@@ -459,8 +469,8 @@ TEST(HostInterface, SceneRegistersRoundTripFieldByField) {
     sc_time delay = SC_ZERO_TIME;
     program_over_tlm(e.host.target(), s.regs, s.volume, delay);
     expect_registers_equal(e.host.decoded(), s.regs, s.name);
-    EXPECT_EQ(e.backend.volume.dim, s.volume.dim) << s.name;
-    EXPECT_EQ(e.backend.volume.data, s.volume.data) << s.name;
+    EXPECT_EQ(e.backend.volumes[0].dim, s.volume.dim) << s.name;
+    EXPECT_EQ(e.backend.volumes[0].data, s.volume.data) << s.name;
     EXPECT_GT(delay, SC_ZERO_TIME);
     ASSERT_EQ(write(e.host, rm::kCtrl, {rm::kCtrlStart}), tlm::TLM_OK_RESPONSE) << s.name;
     expect_registers_equal(e.backend.frames.back(), s.regs, s.name + " (as started)");
@@ -488,7 +498,7 @@ TEST(HostInterface, NarrowPrecisionSceneRoundTrips) {
   sc_time delay = SC_ZERO_TIME;
   program_over_tlm(e.host8.target(), s.regs, s.volume, delay);
   expect_registers_equal(e.host8.decoded(), s.regs, s.name);
-  EXPECT_EQ(e.backend8.volume.data, s.volume.data);
+  EXPECT_EQ(e.backend8.volumes[0].data, s.volume.data);
   // The field ranges follow this hardware's widths.
   EXPECT_EQ(write(e.host8, rm::kClassBase, {0x40}), tlm::TLM_GENERIC_ERROR_RESPONSE);  // color_bits 6
   EXPECT_EQ(write(e.host8, rm::kClassBase + 4, {0xFFFF}), tlm::TLM_OK_RESPONSE);       // alpha_bits 16
@@ -513,7 +523,7 @@ TEST(HostInterface, RandomRegisterSetsRoundTripEveryBit) {
       program_over_tlm(h->target(), r, vol, delay);
       const std::string where = std::string(h->name()) + " set " + std::to_string(k);
       expect_registers_equal(h->decoded(), r, where);
-      EXPECT_EQ(b.volume.data, vol.data) << where;
+      EXPECT_EQ(b.volumes[0].data, vol.data) << where;
       // Every register word reads back as written.
       for (const RegisterBlock& block : register_blocks(r)) {
         std::vector<uint32_t> back(block.words.size());
@@ -564,20 +574,20 @@ TEST(HostInterface, VolumeLoadWritesEveryVoxelOnceAtItsObjectCoordinate) {
   sc_time delay = SC_ZERO_TIME;
   load_volume_over_tlm(e.host.target(), vol, delay);
   EXPECT_EQ(e.backend.dims_calls, 1);
-  ASSERT_EQ(e.backend.volume.dim, vol.dim);
+  ASSERT_EQ(e.backend.volumes[0].dim, vol.dim);
   for (int z = 0; z < 7; ++z)
     for (int y = 0; y < 3; ++y)
       for (int x = 0; x < 5; ++x) {
-        EXPECT_EQ(e.backend.volume.at(x, y, z), 1 + x + 10 * y + 100 * z) << x << "," << y << "," << z;
+        EXPECT_EQ(e.backend.volumes[0].at(x, y, z), 1 + x + 10 * y + 100 * z) << x << "," << y << "," << z;
         EXPECT_EQ(e.backend.writes_per_voxel[vol.index(x, y, z)], 1);
       }
   // One word by hand: voxel (4,1,2) = index 39 is the high half of the word at byte 2*38.
   ASSERT_EQ(write(e.host, rm::kVolumeBase + 2 * 38, {0x0BBB'0AAA}), tlm::TLM_OK_RESPONSE);
-  EXPECT_EQ(e.backend.volume.at(3, 1, 2), 0xAAA);
-  EXPECT_EQ(e.backend.volume.at(4, 1, 2), 0xBBB);
+  EXPECT_EQ(e.backend.volumes[0].at(3, 1, 2), 0xAAA);
+  EXPECT_EQ(e.backend.volumes[0].at(4, 1, 2), 0xBBB);
   // The padding half of the last word is ignored, whatever it holds.
   ASSERT_EQ(write(e.host, rm::kVolumeBase + 2 * 104, {0xFFFF'0123}), tlm::TLM_OK_RESPONSE);
-  EXPECT_EQ(e.backend.volume.at(4, 2, 6), 0x123);
+  EXPECT_EQ(e.backend.volumes[0].at(4, 2, 6), 0x123);
   // Same dimensions again: the backend's volume is kept.
   ASSERT_EQ(write(e.host, rm::kVolDim, {5, 3, 7}), tlm::TLM_OK_RESPONSE);
   ASSERT_EQ(write(e.host, rm::kVolumeBase, {0x0001'0002}), tlm::TLM_OK_RESPONSE);
@@ -585,6 +595,71 @@ TEST(HostInterface, VolumeLoadWritesEveryVoxelOnceAtItsObjectCoordinate) {
 }
 
 // ---- Base plane -----------------------------------------------------------------------
+
+// Subvolumes and slabs (VolumePro §4.2): several volumes resident at once,
+// START renders the one VOL_SELECT names, and voxels, slices and boxes are
+// written and read back through the slab window without touching anything
+// else; the voxel memory refuses a size that leaves no room.
+TEST(HostInterface, SubvolumesAndSlabsReadAndWriteOnlyTheirVoxels) {
+  Env& e = env();
+  fresh(e.host, e.backend);
+  sc_time delay = SC_ZERO_TIME;
+  golden::Volume a, b;
+  a.dim = {10, 8, 6};
+  b.dim = {5, 7, 3};
+  for (golden::Volume* v : {&a, &b}) {
+    v->data.resize(v->size());
+    for (size_t i = 0; i < v->size(); ++i) v->data[i] = static_cast<uint16_t>((i * 37 + v->dim[0]) % 4096);
+  }
+  load_subvolume_over_tlm(e.host.target(), 0, a, delay);
+  load_subvolume_over_tlm(e.host.target(), 5, b, delay);
+  EXPECT_EQ(e.backend.volumes[0].data, a.data);
+  EXPECT_EQ(e.backend.volumes[5].data, b.data);
+  // START renders the selected subvolume.
+  ASSERT_EQ(write(e.host, rm::kDimX, {5, 7, 3}), tlm::TLM_OK_RESPONSE);
+  select_subvolume_over_tlm(e.host.target(), 5, delay);
+  start_frame_over_tlm(e.host.target(), delay);
+  ASSERT_EQ(e.backend.rendered, std::vector<int>{5});
+  // A box, a slice and a voxel of subvolume 0; subvolume 5 untouched.
+  golden::Volume want = a;
+  const std::array<int, 3> o{2, 3, 1}, n{5, 4, 3};
+  std::vector<uint16_t> box(static_cast<size_t>(n[0]) * n[1] * n[2]);
+  for (size_t i = 0; i < box.size(); ++i) box[i] = static_cast<uint16_t>(4000 - i);
+  write_slab_over_tlm(e.host.target(), 0, o, n, box, delay);
+  for (int z = 0; z < n[2]; ++z)
+    for (int y = 0; y < n[1]; ++y)
+      for (int x = 0; x < n[0]; ++x)
+        want.data[want.index(o[0] + x, o[1] + y, o[2] + z)] = box[(static_cast<size_t>(z) * n[1] + y) * n[0] + x];
+  std::vector<uint16_t> slice(10 * 8, 77);
+  write_slab_over_tlm(e.host.target(), 0, {0, 0, 5}, {10, 8, 1}, slice, delay);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 10; ++x) want.data[want.index(x, y, 5)] = 77;
+  write_slab_over_tlm(e.host.target(), 0, {9, 7, 0}, {1, 1, 1}, {1234}, delay);
+  want.data[want.index(9, 7, 0)] = 1234;
+  EXPECT_EQ(e.backend.volumes[0].data, want.data);
+  EXPECT_EQ(e.backend.volumes[5].data, b.data);
+  EXPECT_EQ(read_slab_over_tlm(e.host.target(), 0, o, n, delay), box);
+  EXPECT_EQ(read_slab_over_tlm(e.host.target(), 0, {9, 7, 0}, {1, 1, 1}, delay), std::vector<uint16_t>{1234});
+  EXPECT_EQ(read_slab_over_tlm(e.host.target(), 5, {0, 0, 0}, {5, 7, 3}, delay), b.data);
+  EXPECT_EQ(read(e.host, rm::kStatus) & rm::kStatusError, 0u);
+  // The small voxel memory of host8 (2·32³ voxels): two full subvolumes
+  // fit, a third does not, and the refused write leaves the size unset.
+  fresh(e.host8, e.backend8);
+  for (uint32_t k = 0; k < 2; ++k) {
+    ASSERT_EQ(write(e.host8, rm::kVolIndex, {k}), tlm::TLM_OK_RESPONSE);
+    ASSERT_EQ(write(e.host8, rm::kVolDim, {32, 32, 32}), tlm::TLM_OK_RESPONSE);
+  }
+  ASSERT_EQ(write(e.host8, rm::kVolIndex, {2}), tlm::TLM_OK_RESPONSE);
+  ASSERT_EQ(write(e.host8, rm::kVolDim, {1, 1}), tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(write(e.host8, rm::kVolDim + 8, {1}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(read(e.host8, rm::kLastError), static_cast<uint32_t>(ErrorCode::VoxelMemoryFull));
+  EXPECT_EQ(read(e.host8, rm::kVolDim + 8), 0u);
+  // Shrinking subvolume 1 makes room.
+  ASSERT_EQ(write(e.host8, rm::kVolIndex, {1}), tlm::TLM_OK_RESPONSE);
+  ASSERT_EQ(write(e.host8, rm::kVolDim + 8, {31}), tlm::TLM_OK_RESPONSE);
+  ASSERT_EQ(write(e.host8, rm::kVolIndex, {2}), tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(write(e.host8, rm::kVolDim + 8, {1}), tlm::TLM_OK_RESPONSE);
+}
 
 TEST(HostInterface, BasePlaneReadReturnsWhatTheBackendHolds) {
   Env& e = env();
@@ -674,7 +749,8 @@ std::vector<ErrorCase> error_cases() {
       {"class entry past 2^voxel_bits", none, TLM_WRITE_COMMAND, class_end, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, class_end},
       {"burst past the class table", none, TLM_WRITE_COMMAND, class_end - 8, {0, 0, 0, 0}, 0, false, 0, addr_err, ErrorCode::Unmapped, class_end},
       {"voxel past max_dim^3", none, TLM_WRITE_COMMAND, rm::kVolumeBase + 2 * 64 * 64 * 64, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, rm::kVolumeBase + 2 * 64 * 64 * 64},
-      {"beyond the volume window", none, TLM_READ_COMMAND, rm::kVolumeBase + rm::kVolumeSize, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, rm::kVolumeBase + rm::kVolumeSize},
+      {"beyond the slab window", none, TLM_READ_COMMAND, rm::kSlabBase + rm::kSlabSize, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, rm::kSlabBase + rm::kSlabSize},
+      {"slab past max_dim^3", none, TLM_READ_COMMAND, rm::kSlabBase + 2 * 64 * 64 * 64, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, rm::kSlabBase + 2 * 64 * 64 * 64},
       {"length 3", none, TLM_WRITE_COMMAND, rm::kMode, {0}, 3, false, 0, burst, ErrorCode::Alignment, rm::kMode},
       {"length 6", none, TLM_READ_COMMAND, rm::kDimX, {0, 0}, 6, false, 0, burst, ErrorCode::Alignment, rm::kDimX},
       {"unaligned address", none, TLM_READ_COMMAND, rm::kDimX + 2, {0}, 0, false, 0, burst, ErrorCode::Alignment, rm::kDimX + 2},
@@ -713,6 +789,22 @@ std::vector<ErrorCase> error_cases() {
       {"voxel wider than voxel_bits", dims, TLM_WRITE_COMMAND, rm::kVolumeBase, {0, 0x1000'0000}, 0, false, 0, gen, ErrorCode::FieldRange, rm::kVolumeBase + 4},
       {"voxel past the volume", dims, TLM_WRITE_COMMAND, rm::kVolumeBase + 2 * 998, {0, 0}, 0, false, 0, gen, ErrorCode::VoxelOutOfVolume, rm::kVolumeBase + 2 * 1000},
       {"volume before VOL_DIM", none, TLM_WRITE_COMMAND, rm::kVolumeBase, {0}, 0, false, 0, gen, ErrorCode::VolumeDimsUnset, rm::kVolumeBase},
+      {"subvolume 8", none, TLM_WRITE_COMMAND, rm::kVolIndex, {8}, 0, false, 0, gen, ErrorCode::FieldRange, rm::kVolIndex},
+      {"select subvolume 8", none, TLM_WRITE_COMMAND, rm::kVolSelect, {8}, 0, false, 0, gen, ErrorCode::FieldRange, rm::kVolSelect},
+      {"slab before VOL_DIM", none, TLM_WRITE_COMMAND, rm::kSlabBase, {0}, 0, false, 0, gen, ErrorCode::VolumeDimsUnset, rm::kSlabBase},
+      {"empty slab", dims, TLM_READ_COMMAND, rm::kSlabBase, {0}, 0, false, 0, gen, ErrorCode::SlabOutOfVolume, rm::kSlabBase},
+      {"slab past its subvolume",
+       [](Env& e) { set_volume_and_view(e, {10, 10, 10});
+                    ASSERT_EQ(write(e.host, rm::kSlab, {8, 0, 0, 3, 1, 1}), tlm::TLM_OK_RESPONSE); },
+       TLM_WRITE_COMMAND, rm::kSlabBase, {0}, 0, false, 0, gen, ErrorCode::SlabOutOfVolume, rm::kSlabBase},
+      {"voxel past the slab",
+       [](Env& e) { set_volume_and_view(e, {10, 10, 10});
+                    ASSERT_EQ(write(e.host, rm::kSlab, {1, 2, 3, 2, 1, 1}), tlm::TLM_OK_RESPONSE); },
+       TLM_WRITE_COMMAND, rm::kSlabBase, {0, 0}, 0, false, 0, gen, ErrorCode::SlabOutOfVolume, rm::kSlabBase + 4},
+      {"START of a subvolume without VOL_DIM",
+       [](Env& e) { set_volume_and_view(e, {10, 10, 10});
+                    ASSERT_EQ(write(e.host, rm::kVolSelect, {3}), tlm::TLM_OK_RESPONSE); },
+       TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::VolumeDimsUnset, rm::kCtrl},
       {"START before VOL_DIM", none, TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::VolumeDimsUnset, rm::kCtrl},
       {"START with view and volume apart",
        [](Env& e) { ASSERT_EQ(write(e.host, rm::kVolDim, {10, 10, 10}), tlm::TLM_OK_RESPONSE);
@@ -735,6 +827,7 @@ std::vector<ErrorCase> error_cases() {
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::BackendFailure, rm::kCtrl},
       {"START while busy", busy, TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::Busy, rm::kCtrl},
       {"volume write while busy", busy, TLM_WRITE_COMMAND, rm::kVolumeBase, {0}, 0, false, 0, gen, ErrorCode::Busy, rm::kVolumeBase},
+      {"slab read while busy", busy, TLM_READ_COMMAND, rm::kSlabBase, {0}, 0, false, 0, gen, ErrorCode::Busy, rm::kSlabBase},
       {"base-plane read while busy", busy, TLM_READ_COMMAND, rm::kBaseBase, {0}, 0, false, 0, gen, ErrorCode::Busy, rm::kBaseBase},
       {"pixel past the base plane", [](Env& e) { e.backend.plane.width = 3; e.backend.plane.height = 2;
                                                  e.backend.plane.rgba.assign(24, 1); },
