@@ -29,6 +29,7 @@
 #include "systemc/core/system.hpp"
 #include "systemc/host/host_program.hpp"
 #include "systemc/host/register_map.hpp"
+#include "systemc/rtl/rtl_assertion.hpp"
 #include "tb/system_report.hpp"
 
 namespace {
@@ -48,6 +49,7 @@ struct RenderArgs {
   int pipes = 0;           // 0: the scene's
   int check = -1;          // -1: on for models with RTL units
   bool simulate_all = false;
+  bool no_assert = false;
   int frames = 1;
   std::string trace;       // FST file (RTL units)
   std::vector<int64_t> trace_window;  // first, last cycle
@@ -242,6 +244,7 @@ int run_render(const RenderArgs& a) {
     cfg.simulate_unneeded = a.simulate_all;
     cfg.frames = a.frames;
     cfg.seed = rtl_seed(a);
+    cfg.assertions = !a.no_assert;
     if (a.frames > 1 && cfg.all_tlm())
       throw InputError("--frames: the tlm model has no clock to stream frames on (its interval is the cycle model's)");
     if (!a.trace.empty()) {
@@ -463,6 +466,8 @@ int main(int argc, char** argv) {
                      "fixed model and --check: threads, each rendering a band of rays (default 0: one per core; "
                      "the image is the same for any number)")
       ->check(CLI::Range(0, 1024));
+  render->add_flag("--no-assert", ra.no_assert,
+                   "system model: do not evaluate the RTL units' assertions (by default a failed one stops the run, exit 4)");
   render->add_option("--seed", ra.seed, "system model: Verilator random-reset seed of the RTL units (default: CUBE4_SEED, else 1)");
   const std::string memory_help = "refuse volumes and renders estimated to need more than MiB of memory (default " +
                                   std::to_string(golden::kDefaultMemoryLimit >> 20) + ")";
@@ -502,6 +507,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "cube4: error: %s\n", e.what());
     return 2;
+  } catch (const sysc::RtlAssertionError& e) {
+    std::fprintf(stderr, "cube4: RTL assertion failed: %s\n", e.what());
+    return sysc::kExitRtlAssertion;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cube4: internal error: %s\n", e.what());
     return 1;

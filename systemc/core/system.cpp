@@ -284,6 +284,10 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     if (!cfg.trace.file.empty()) ctx->traceEverOn(true);
     ctx->randReset(2);
     ctx->randSeed(static_cast<int>(cfg.seed & 0x7FFFFFFF));
+    // A failed assertion is reported by the unit that raised it
+    // (RtlModel: RtlAssertionError), not by Verilator's abort().
+    ctx->fatalOnError(false);
+    ctx->assertOn(cfg.assertions);
     VerilatedContext* rtl_ctx = ctx.get();
 #else
     VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit

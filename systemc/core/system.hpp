@@ -41,6 +41,9 @@ struct SystemConfig {
   // reset starts from values drawn from this seed (the RTL is verilated with
   // --x-initial unique), so runs with two seeds are two X-states.
   uint32_t seed = 1;
+  // Evaluate the RTL units' assertions (rtl/assert/); a failure ends the
+  // frame with RtlAssertionError. cube4 render --no-assert turns them off.
+  bool assertions = true;
   bool all_tlm() const {
     for (Level l : levels)
       if (l != Level::Tlm) return false;
