@@ -14,6 +14,9 @@
 #include "systemc/core/voxel_memory.hpp"
 #include "systemc/tlm/tlm_addr.hpp"
 #if CUBE4_TEST_RTL
+// verilated.h calls sc_time_stamp() unqualified once SystemC is included.
+#include <systemc>
+using sc_core::sc_time_stamp;
 #include "systemc/core/trace_window.hpp"
 #include "systemc/rtl/rtl_assertion.hpp"
 #include "systemc/rtl/rtl_factory.hpp"
