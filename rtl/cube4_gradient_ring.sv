@@ -20,9 +20,9 @@
 // last gradient B + 4 cycles after its zero slice's last sample) and
 // preconditions: cube4_gradient_unit and docs/rtl-gradient.md.
 //
-// Handshake: valid-only, no back-pressure. overrun_o (sticky until reset):
-// some pipeline saw valid_i while it was running its zero beam. Reset:
-// control only.
+// Handshake: valid-only, no back-pressure. Reset: control only. A valid_i
+// in a unit's zero beam, or pipelines out of lock step, are protocol errors
+// that the assertions of rtl/assert/ report in simulation.
 //
 // Parameters:
 //   NumPipes                                       - p, pipelines (>= 1)
@@ -68,15 +68,13 @@ module cube4_gradient_ring #(
   output logic [NumPipes*GradientBits-1:0] gz_o,
   output logic [NumPipes*DimBits-1:0]      x_o,
   output logic [NumPipes*DimBits-1:0]      y_o,
-  output logic [NumPipes*UserTagBits-1:0]  tag_o,
-  output logic                             overrun_o
+  output logic [NumPipes*UserTagBits-1:0]  tag_o
 );
 
   localparam int unsigned LinkBits = 5 * VoxelBits;
 
   // Links as packed vectors (yosys 0.23: no unpacked wire arrays).
   logic [NumPipes*LinkBits-1:0] link, link_now, link_prev;
-  logic [NumPipes-1:0]          overrun;
 
   for (genvar k = 0; k < NumPipes; k++) begin : g_pipe
     logic [LinkBits-1:0] left_in, right_in;
@@ -128,12 +126,9 @@ module cube4_gradient_ring #(
       .gz_o         (gz_o[k*GradientBits +: GradientBits]),
       .x_o          (x_o[k*DimBits +: DimBits]),
       .y_o          (y_o[k*DimBits +: DimBits]),
-      .tag_o        (tag_o[k*UserTagBits +: UserTagBits]),
-      .overrun_o    (overrun[k])
+      .tag_o        (tag_o[k*UserTagBits +: UserTagBits])
     );
   end
-
-  assign overrun_o = |overrun;
 
   // Only pipeline 0's current column and pipeline p-1's previous column
   // leave their units through the wrap; with p = 1 the aligned link has no

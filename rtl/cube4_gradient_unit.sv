@@ -34,8 +34,9 @@
 //     produces the slice's last gradient beam and, being written into the
 //     beam delay, the zero row above beam 0. valid_i must stay low in those
 //     B cycles: the interpolation ring leaves exactly them free (its beam 0
-//     of the next pass produces no samples). A valid_i in them is ignored
-//     and sets overrun_o.
+//     of the next pass produces no samples). A valid_i in them is ignored;
+//     the assertion a_zero_beam_idle (rtl/assert/cube4_gradient_unit_sva.sv)
+//     reports it in simulation.
 //   - slices: every frame ends with one zero slice (the tag's ZeroSlice bit;
 //     its sample values are ignored and taken as zero), which the stream
 //     former supplies as one more pass through the interpolation ring (pass
@@ -72,8 +73,7 @@
 // last gradient of a frame 4 cycles after the last zero-beam step, i.e.
 // B + 4 cycles after the zero slice's last input. One gradient per clock.
 // Handshake: valid-only, no back-pressure. Reset: control (valid, counters,
-// first-slice state, delay pointers, overrun); data registers and RAMs are
-// not reset.
+// first-slice state, delay pointers); data registers and RAMs are not reset.
 //
 // Preconditions: every slice is complete (ny >= 1 beams of the same
 // B <= BeamDepth partial beams, ny * B <= SliceDepth); every frame ends with
@@ -143,8 +143,7 @@ module cube4_gradient_unit #(
   output logic signed [GradientBits-1:0] gz_o,
   output logic [DimBits-1:0]             x_o,
   output logic [DimBits-1:0]             y_o,
-  output logic [UserTagBits-1:0]         tag_o,
-  output logic                           overrun_o     // valid_i during a zero beam (sticky)
+  output logic [UserTagBits-1:0]         tag_o
 );
 
   localparam int unsigned V              = VoxelBits;
@@ -168,7 +167,6 @@ module cube4_gradient_unit #(
   logic [DimBits-1:0]   y_q, y_d, y_step;       // beam of the step (ny: zero beam)
   logic                 s_beam_start, s_beam_end, slice_last;
   logic                 first_q, first_d;       // the input slice is a frame's first
-  logic                 overrun_q;
   logic [TagBits-1:0]   tag_in_q;               // tag of the input slice (s+1)
   logic [TagBits-1:0]   tag_out_q;              // tag of the output slice (s)
 
@@ -207,16 +205,13 @@ module cube4_gradient_unit #(
       j_q       <= '0;
       y_q       <= '0;
       first_q   <= 1'b1;
-      overrun_q <= 1'b0;
     end else begin
       zb_left_q <= zb_left_d;
       j_q       <= j_d;
       y_q       <= y_d;
       first_q   <= first_d;
-      overrun_q <= overrun_q || (valid_i && zb_active);
     end
   end
-  assign overrun_o = overrun_q;
 
   // The output slice's control is the tag its samples arrived with, one
   // slice earlier: it moves on when the next slice's first sample arrives

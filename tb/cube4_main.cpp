@@ -33,6 +33,7 @@
 #include "systemc/core/system.hpp"
 #include "systemc/host/host_program.hpp"
 #include "systemc/host/register_map.hpp"
+#include "systemc/rtl/rtl_assertion.hpp"
 #include "tb/system_report.hpp"
 
 namespace {
@@ -53,6 +54,7 @@ struct RenderArgs {
   int pipes = 0;           // 0: the scene's
   int check = -1;          // -1: on for models with RTL units
   bool simulate_all = false;
+  bool no_assert = false;
   int frames = 1;
   std::string trace;       // FST file (RTL units)
   std::vector<int64_t> trace_window;  // first, last cycle
@@ -436,6 +438,8 @@ int run_render(const RenderArgs& args) {
     cfg.simulate_unneeded = a.simulate_all;
     cfg.frames = a.frames;
     cfg.seed = rtl_seed(a);
+    cfg.assertions = !a.no_assert;
+    net.assertions = cfg.assertions;
     if (a.frames > 1 && cfg.all_tlm())
       throw InputError("--frames: the tlm model has no clock to stream frames on (its interval is the cycle model's)");
     if (!a.trace.empty()) {
@@ -691,6 +695,7 @@ struct ComposeArgs {
   std::string output = "cube4.png", baseplane, report, model = "tlm";
   int check = -1;  // -1: on at RTL
   bool quiet = false;
+  bool no_assert = false;
   std::optional<uint32_t> seed;
   uint64_t max_memory_mib = 0;
 };
@@ -722,6 +727,7 @@ int run_compose(const ComposeArgs& a) {
   net.level = a.model == "rtl" ? sysc::Level::Rtl : sysc::Level::Tlm;
   net.cycle_level = net.level == sysc::Level::Rtl;
   net.check = a.check < 0 ? net.level == sysc::Level::Rtl : a.check == 1;
+  net.assertions = !a.no_assert;
   RenderArgs seeded;
   seeded.seed = a.seed;
   net.seed = rtl_seed(seeded);
@@ -849,6 +855,8 @@ int main(int argc, char** argv) {
   render->add_option("--plan", ra.plan, "with --block and --partial: render one block of a plan (cube4 plan)");
   render->add_option("--block", ra.block, "the plan's block to render (0 .. blocks-1)")->check(CLI::Range(0, golden::kMaxBlocks - 1));
   render->add_option("--partial", ra.partial, "the block's partial image file (.cpart) for cube4 compose");
+  render->add_flag("--no-assert", ra.no_assert,
+                   "system model: do not evaluate the RTL units' assertions (by default a failed one stops the run, exit 4)");
   render->add_option("--seed", ra.seed, "system model: Verilator random-reset seed of the RTL units (default: CUBE4_SEED, else 1)");
   const std::string memory_help = "refuse volumes and renders estimated to need more than MiB of memory (default " +
                                   std::to_string(golden::kDefaultMemoryLimit >> 20) + ")";
@@ -878,6 +886,7 @@ int main(int argc, char** argv) {
   compose->add_flag_callback("--check", [&ca] { ca.check = 1; }, "compare with golden (default: on at rtl; exit 3)");
   compose->add_flag_callback("--no-check", [&ca] { ca.check = 0; }, "no comparison with golden");
   compose->add_option("--seed", ca.seed, "Verilator random-reset seed (default: CUBE4_SEED, else 1)");
+  compose->add_flag("--no-assert", ca.no_assert, "rtl: do not evaluate the nodes' assertions (a failed one: exit 4)");
   compose->add_flag("-q,--quiet", ca.quiet, "no progress or summary on stderr");
   compose->add_option("--max-memory", ca.max_memory_mib, memory_help)->check(CLI::Range(uint64_t{1}, uint64_t{1} << 30));
   tb::RegressArgs rg;
@@ -915,6 +924,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "cube4: error: %s\n", e.what());
     return 2;
+  } catch (const sysc::RtlAssertionError& e) {
+    std::fprintf(stderr, "cube4: RTL assertion failed: %s\n", e.what());
+    return sysc::kExitRtlAssertion;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cube4: internal error: %s\n", e.what());
     return 1;

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "golden/errors.hpp"
+#include "systemc/rtl/rtl_assertion.hpp"
 #include "tb/output_files.hpp"
 #include "tb/report.hpp"
 
@@ -31,6 +32,9 @@ struct Case {
   double seconds = 0;
   std::chrono::steady_clock::time_point start;
   std::string hash, failure, log;
+  // A failed check: a difference from golden (exit 3) or a failed RTL
+  // assertion (exit 4); any other non-zero exit is an error.
+  bool failed() const { return exit_code == 3 || exit_code == sysc::kExitRtlAssertion; }
 };
 
 std::string read_file(const fs::path& p) {
@@ -96,12 +100,17 @@ void finish(Case& c, int status) {
     }
   }
   // The child names the first differing pixel, unit, slice and sample on
-  // its last error line (exit 3), or the bad input (exit 2).
+  // its last error line (exit 3), or the bad input (exit 2); a failed RTL
+  // assertion (exit 4) is Verilator's line, which names the assertion and
+  // the values at fault.
   std::istringstream lines(c.log);
-  for (std::string line; std::getline(lines, line);)
+  for (std::string line; std::getline(lines, line);) {
     if (line.rfind("cube4: check FAILED", 0) == 0 || line.rfind("cube4: error", 0) == 0 ||
         line.rfind("cube4: internal error", 0) == 0)
       c.failure = line;
+    if (c.exit_code == sysc::kExitRtlAssertion && c.failure.empty() && line.find("Assertion failed in") != std::string::npos)
+      c.failure = line;
+  }
 }
 
 }  // namespace
@@ -196,8 +205,8 @@ int run_regress(const RegressArgs& a, const std::string& self) {
 
   int failures = 0, errors = 0;
   for (const Case& c : cases) {
-    failures += c.exit_code == 3;
-    errors += c.exit_code != 0 && c.exit_code != 3;
+    failures += c.failed();
+    errors += c.exit_code != 0 && !c.failed();
   }
   std::ostringstream x;
   x << std::fixed << std::setprecision(3);  // xs:decimal, never 1e-05
@@ -208,15 +217,16 @@ int run_regress(const RegressArgs& a, const std::string& self) {
     int n = 0, f = 0, e = 0;
     double t = 0;
     for (const Case& c : cases)
-      if (c.level == l) ++n, f += c.exit_code == 3, e += c.exit_code != 0 && c.exit_code != 3, t += c.seconds;
+      if (c.level == l) ++n, f += c.failed(), e += c.exit_code != 0 && !c.failed(), t += c.seconds;
     x << "  <testsuite name=\"" << xml_escape(l) << "\" tests=\"" << n << "\" failures=\"" << f << "\" errors=\""
       << e << "\" skipped=\"0\" time=\"" << t << "\">\n";
     for (const Case& c : cases) {
       if (c.level != l) continue;
       x << "    <testcase classname=\"cube4." << xml_escape(level_slug(l)) << "\" name=\"" << xml_escape(c.scene)
         << "\" time=\"" << c.seconds << "\">\n";
-      if (c.exit_code == 3)
-        x << "      <failure type=\"mismatch\" message=\"" << xml_escape(c.failure) << "\"/>\n";
+      if (c.failed())
+        x << "      <failure type=\"" << (c.exit_code == 3 ? "mismatch" : "assertion") << "\" message=\""
+          << xml_escape(c.failure) << "\"/>\n";
       else if (c.exit_code != 0)
         x << "      <error type=\"exit " << c.exit_code << "\" message=\""
           << xml_escape(c.failure.empty() ? "exit code " + std::to_string(c.exit_code) : c.failure) << "\"/>\n";
@@ -240,7 +250,7 @@ int run_regress(const RegressArgs& a, const std::string& self) {
     for (const std::string& s : scenes) {
       m << "| " << s << " |";
       for (const Case& c : cases)
-        if (c.scene == s) m << " " << (c.exit_code == 0 ? "pass" : c.exit_code == 3 ? "**FAIL**" : "**error**") << " |";
+        if (c.scene == s) m << " " << (c.exit_code == 0 ? "pass" : c.failed() ? "**FAIL**" : "**error**") << " |";
       m << "\n";
     }
     for (const Case& c : cases)

@@ -32,6 +32,7 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
        wall_seconds > 0 ? static_cast<double>(r.simulated_cycles ? r.simulated_cycles : r.frame_cycles) / wall_seconds
                         : 0.0},
       {"seed", cfg.seed},
+      {"rtl_assertions", cfg.assertions ? "on" : "off (--no-assert)"},
       {"timing", cfg.all_tlm() ? "cycle model (loosely timed, no clock simulated)" : "simulated clock cycles"},
       {"check", cfg.check ? (check_failure.empty() ? "passed: base plane and unit streams bit-exact" : check_failure)
                           : "off"},

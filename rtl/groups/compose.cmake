@@ -11,6 +11,7 @@ cube4_rtl_test(test_rtl_compose
   TOPS cube4_compose_node cube4_compose_out
   SOURCES ${_compose_sources} cube4_acc_to_pixel.sv
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_compose.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_compose_out.cpp
+        ${PROJECT_SOURCE_DIR}/tb/rtl/test_compose_sva.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 
 # 8-bit pixels without guard bits (bela's eight bits a channel).
@@ -26,3 +27,6 @@ cube4_rtl_variant(test_rtl_compose cube4_compose_out Vcube4_compose_out_a12 SOUR
   PARAMS AlphaBits=12 AccGuardBits=4)
 cube4_rtl_variant(test_rtl_compose cube4_compose_out Vcube4_compose_out_a8 SOURCES cube4_acc_to_pixel.sv
   PARAMS AlphaBits=8 AccGuardBits=0)
+# The node's checker alone (tb/rtl/test_compose_sva.cpp drives its alpha
+# invariant into a violation, which the node cannot produce).
+cube4_rtl_variant(test_rtl_compose cube4_compose_node_sva Vcube4_compose_node_sva)

@@ -12,6 +12,7 @@ cube4_rtl_test(test_rtl_composite
   TOPS cube4_composite_ring
   SOURCES ${_composite_ring_sources}
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_composite.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_composite_ring.cpp
+        ${PROJECT_SOURCE_DIR}/tb/rtl/test_composite_sva.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 
 # Rings of 1, 2 and 5 pipelines; small MaxDim values let the tests fill the
@@ -30,3 +31,6 @@ cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_narrow
 cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_volumepro PARAMS AlphaBits=12 AccGuardBits=0)
 # Without cut-plane hardware (the system's variant for scenes without one).
 cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_nocut PARAMS HasCutPlane=0)
+# The unit's checker alone (tb/rtl/test_composite_sva.cpp drives its
+# ray-store order invariant into a violation, which the unit cannot produce).
+cube4_rtl_variant(test_rtl_composite cube4_composite_unit_sva Vcube4_composite_unit_sva)

@@ -1,8 +1,9 @@
 # Gradient (`gradient`): the datapath cube4_gradient and the unit with its
 # sample storage and near-neighbour links, cube4_gradient_unit (inside
 # cube4_gradient_ring, around cube4_gradient and cube4_delay_ram). One
-# executable, test_rtl_gradient: the datapath tests (tb/rtl/test_gradient.cpp)
-# and the ring's (tb/rtl/test_gradient_ring.cpp); the default ring (p = 4, MaxDim = 256)
+# executable, test_rtl_gradient: the datapath tests (tb/rtl/test_gradient.cpp),
+# the ring's (tb/rtl/test_gradient_ring.cpp) and the assertions'
+# (tb/rtl/test_gradient_sva.cpp); the default ring (p = 4, MaxDim = 256)
 # from cube4_rtl_test, rings of 1, 2 and 5 pipelines verilated again below,
 # and interpolation rings of the same p and MaxDim whose tag carries the
 # gradient ring's tag (the test chains them: voxels -> samples -> gradients).
@@ -18,7 +19,7 @@ cube4_rtl_test(test_rtl_gradient
   TOPS cube4_gradient_ring
   SOURCES ${_gradient_sources}
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_gradient.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_gradient_ring.cpp
-        ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
+        ${PROJECT_SOURCE_DIR}/tb/rtl/test_gradient_sva.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 target_compile_definitions(test_rtl_gradient PRIVATE CUBE4_GRADIENT_TAG_BITS=${_gradient_tag_bits})
 
 # Pipelines and storage as in interp.cmake (test_gradient_ring.cpp holds the

@@ -12,6 +12,7 @@ cube4_rtl_test(test_rtl_interp
   TOPS cube4_interp_ring
   SOURCES ${_interp_sources}
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_ring.cpp
+        ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_sva.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 
 # Rings of 1, 2 and 5 pipelines; the small MaxDim of p = 2 and p = 5 lets

@@ -21,6 +21,7 @@ cube4_rtl_test(test_rtl_shade
   SOURCES ${_shade_sources}
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_shade.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/test_shade_magnitude.cpp
+        ${PROJECT_SOURCE_DIR}/tb/rtl/test_shade_sva.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 
 # The five shade units as tops, default widths.

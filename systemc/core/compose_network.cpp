@@ -241,7 +241,7 @@ NetworkResult run_network(const golden::BlockPlan& plan, const std::vector<const
   } else {
     // The context first: the models made in it must go before it does.
 #ifdef CUBE4_HAVE_RTL
-    rtl::ScopedVerilatedContext ctx(cfg.seed, !cfg.trace.file.empty());
+    rtl::ScopedVerilatedContext ctx(cfg.seed, !cfg.trace.file.empty(), cfg.assertions);
     VerilatedContext* rtl_ctx = ctx.get();
 #else
     VerilatedContext* rtl_ctx = nullptr;

@@ -72,6 +72,7 @@ struct NetworkConfig {
   Kernel kernel = Kernel::SystemC;
   bool check = false;        // compare the image with golden compose_blocks()
   uint32_t seed = 1;         // RTL random reset
+  bool assertions = true;    // RTL: the nodes' assertions (rtl/assert/), RtlAssertionError when one fails
   TraceWindow trace;         // RTL: F.compose.fst (the root node) if set
 };
 

@@ -298,7 +298,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
 #ifdef CUBE4_HAVE_RTL
-    rtl::ScopedVerilatedContext ctx(cfg.seed, !cfg.trace.file.empty());
+    rtl::ScopedVerilatedContext ctx(cfg.seed, !cfg.trace.file.empty(), cfg.assertions);
     VerilatedContext* rtl_ctx = ctx.get();
 #else
     VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit

@@ -45,6 +45,9 @@ struct SystemConfig {
   // result plane's acc): a block of a partitioned volume, whose partial
   // image the composition network reads (golden/blocks.hpp).
   bool accumulators = false;
+  // Evaluate the RTL units' assertions (rtl/assert/); a failure ends the
+  // frame with RtlAssertionError. cube4 render --no-assert turns them off.
+  bool assertions = true;
   bool all_tlm() const {
     for (Level l : levels)
       if (l != Level::Tlm) return false;

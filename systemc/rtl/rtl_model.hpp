@@ -3,6 +3,9 @@
 // unit tests, tb/rtl/rtl_check.hpp): inputs are driven, the clock goes low
 // and the model is evaluated (the outputs of this cycle are visible), the
 // outputs are read, then the clock rises (the edge that ends the cycle).
+// The assertions (rtl/assert/) act on clock edges: an edge after which the
+// context records an error throws RtlAssertionError (the context must not
+// be fatalOnError, or Verilator aborts first; the system's is not).
 #pragma once
 // verilated.h calls sc_time_stamp() unqualified once SystemC is included.
 #include <systemc>
@@ -15,6 +18,7 @@ using sc_core::sc_time_stamp;
 #include <string>
 
 #include "systemc/core/trace_window.hpp"
+#include "systemc/rtl/rtl_assertion.hpp"
 #include "systemc/rtl/vl_bits.hpp"
 
 namespace cube4::sysc {
@@ -23,7 +27,7 @@ template <class M>
 class RtlModel {
  public:
   RtlModel(VerilatedContext& ctx, const std::string& name, const TraceWindow& trace, const std::string& trace_suffix)
-      : ctx_(ctx), m_(std::make_unique<M>(&ctx, name.c_str())), window_(trace) {
+      : ctx_(ctx), name_(name), m_(std::make_unique<M>(&ctx, name.c_str())), window_(trace) {
     if (!trace.file.empty()) {
       fst_ = std::make_unique<VerilatedFstC>();
       m_->trace(fst_.get(), 99);
@@ -52,6 +56,7 @@ class RtlModel {
     m_->clk_i = 1;
     m_->eval();
     dump(2 * cycle_ + 1);
+    check_assertions(cycle_);
     ++cycle_;
   }
   void edge() { settle(); rise(); }
@@ -64,6 +69,7 @@ class RtlModel {
     m_->eval();
     m_->clk_i = 1;
     m_->eval();
+    check_assertions(0);
   }
   // The system's cycle numbers: the frame's first clock is cycle 1 (after
   // reset, or after a table load through the write ports).
@@ -77,10 +83,14 @@ class RtlModel {
   }
 
  private:
+  void check_assertions(uint64_t cycle) const {
+    if (ctx_.gotError()) throw RtlAssertionError(name_, cycle);
+  }
   void dump(uint64_t t) {
     if (fst_ && cycle_ >= window_.first && cycle_ <= window_.last) fst_->dump(t);
   }
   VerilatedContext& ctx_;
+  std::string name_;
   std::unique_ptr<M> m_;
   std::unique_ptr<VerilatedFstC> fst_;
   TraceWindow window_;

@@ -22,11 +22,15 @@ class ScopedVerilatedContext {
 
   // A context for one simulated run: Verilator's random reset from `seed`
   // (every register and memory the RTL does not reset starts from values
-  // drawn from it), tracing allowed when asked.
-  ScopedVerilatedContext(uint32_t seed, bool trace) : ScopedVerilatedContext() {
+  // drawn from it), tracing allowed when asked, the units' assertions
+  // evaluated or not. A failed assertion is reported by the unit that
+  // raised it (RtlModel: RtlAssertionError), not by Verilator's abort().
+  ScopedVerilatedContext(uint32_t seed, bool trace, bool assertions) : ScopedVerilatedContext() {
     if (trace) ctx_.traceEverOn(true);
     ctx_.randReset(2);
     ctx_.randSeed(static_cast<int>(seed & 0x7FFFFFFF));
+    ctx_.fatalOnError(false);
+    ctx_.assertOn(assertions);
   }
 
   VerilatedContext& operator*() { return ctx_; }

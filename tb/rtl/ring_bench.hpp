@@ -284,6 +284,7 @@ struct VoxelStreamOptions {
   double stall = 0;   // probability of idle cycles before a partial beam
   int max_gap = 3;    // 1 .. max_gap idle cycles each time
   bool junk = false;  // random voxels in the zero beam and the zero pass, random weights in the zero pass
+                      // (one set for the pass: the interpolation unit's stream keeps a pass's weights)
 };
 
 // A partial beam of samples the interpolation ring emits (every pipeline
@@ -338,6 +339,10 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
     if (fi > 0) idle(plans[fi - 1].B - plan.B);
     for (int pass = 0; pass < plan.passes; ++pass) {
       const uint64_t pass_tag = tag(static_cast<int>(fi), pass);
+      const bool zero = plan.zero_pass(pass);
+      const bool junk_weights = zero && opt.junk;
+      const auto junk_wx = junk_weights ? static_cast<uint32_t>(rng.range(0, 256)) : 0u;
+      const auto junk_wy = junk_weights ? static_cast<uint32_t>(rng.range(0, 256)) : 0u;
       for (int y = 0; y <= plan.ny; ++y)
         for (int j = 0; j < plan.B; ++j) {
           if (opt.stall > 0 && rng.chance(opt.stall)) idle(static_cast<int>(rng.range(1, opt.max_gap)));
@@ -345,9 +350,8 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
           sysc::VoxelBeat b;
           b.valid = true;
           b.f = st.f;
-          const bool zero = plan.zero_pass(pass);
-          b.wx = zero && opt.junk ? rng.range(0, 256) : st.wx;
-          b.wy = zero && opt.junk ? rng.range(0, 256) : st.wy;
+          b.wx = junk_weights ? junk_wx : st.wx;
+          b.wy = junk_weights ? junk_wy : st.wy;
           b.wz = st.wz;
           b.tag = pass_tag;
           for (int q = 0; q < p; ++q) {

@@ -243,6 +243,31 @@ TEST_F(Cli, TracesHoldTheFrameQuietly) {
 #endif
 }
 
+// --no-assert turns the RTL assertions off (the report says so; they never
+// fire on a frame the system forms: the same image, exit 0, nothing from
+// Verilator on stdout); the help names the flag and exit code 4 of a failed
+// assertion.
+TEST_F(Cli, NoAssertRendersTheSameFrame) {
+  const CliResult help = run("render --help");
+  ASSERT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("--no-assert"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("exit 4"), std::string::npos) << help.out;
+  if (!CUBE4_TEST_RTL) GTEST_SKIP() << "built without RTL";
+  const std::string scene = write("s.json", kSphere);
+  std::string hash;
+  for (const std::string flag : {"", " --no-assert"}) {
+    const std::string rep = path("r.json");
+    const CliResult r = run("render " + scene + " --model rtl --pipes 4 -q -o " + path("o.png") + " --report " + rep + flag);
+    ASSERT_EQ(r.code, 0) << flag << ": " << r.err;
+    EXPECT_EQ(r.out, "") << flag;
+    nlohmann::json j;
+    std::ifstream(rep) >> j;
+    if (hash.empty()) hash = j["baseplane_hash_fnv1a64"];
+    EXPECT_EQ(j["baseplane_hash_fnv1a64"], hash) << flag;
+    EXPECT_EQ(j["system"]["rtl_assertions"], flag.empty() ? "on" : "off (--no-assert)");
+  }
+}
+
 TEST_F(Cli, EveryThreadCountGivesTheSameBasePlane) {
   const std::string scene = write("s.json", kSphere);
   std::string first;

@@ -13,6 +13,15 @@
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/voxel_memory.hpp"
 #include "systemc/tlm/tlm_addr.hpp"
+#if CUBE4_TEST_RTL
+// verilated.h calls sc_time_stamp() unqualified once SystemC is included.
+#include <systemc>
+using sc_core::sc_time_stamp;
+#include "systemc/core/trace_window.hpp"
+#include "systemc/rtl/rtl_assertion.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
+#include "systemc/rtl/vl_context.hpp"
+#endif
 
 namespace {
 
@@ -165,4 +174,63 @@ TEST(StreamChecker, NamesTheFirstDifferingUnitSliceAndSample) {
   checker.gradients(g);
   EXPECT_EQ(checker.first_mismatch()->unit, sysc::Unit::Interp);
 }
+// A failed RTL assertion stops the unit's clock() with RtlAssertionError,
+// naming the unit and the system's cycle (the checker's message on stdout
+// names the assertion and the same cycle); with the context's assertions
+// off (cube4 render --no-assert) the same stream runs on. The stream: one
+// slice of the gradient ring, ny = 2 beams of B = 2 partial beams
+// (nx = 6, p = 4), then a sample in the unit's zero beam, which must be idle.
+// No scene makes the system send such a stream, so this is the wrapper
+// level's test of the path cube4 render takes to its exit code 4.
+TEST(RtlAssertion, StopsTheFrameNamingUnitAndCycle) {
+  if (!CUBE4_TEST_RTL) GTEST_SKIP() << "built without RTL";
+#if CUBE4_TEST_RTL
+  golden::Registers r;
+  r.dim = {6, 2, 3};
+  r.gradient = true;
+  const sysc::FramePlan plan(r, 4);
+  for (const bool assertions : {true, false}) {
+    rtl::ScopedVerilatedContext ctx;
+    ctx->fatalOnError(false);
+    ctx->assertOn(assertions);
+    auto gradient = sysc::make_rtl_gradient(plan, *ctx, sysc::TraceWindow{});
+    sysc::SampleBeat in;
+    sysc::GradientBeat out;
+    in.tag = plan.pass_tag(0);
+    testing::internal::CaptureStdout();
+    int failed_cycle = 0;
+    std::string unit;
+    for (int cycle = 1; cycle <= 8; ++cycle) {
+      const int step = cycle - 1;  // 0 .. 3: the slice; 4: the zero beam's first cycle
+      in.valid = step <= 4;
+      in.f.beam_start = step % 2 == 0;
+      in.f.beam_end = step % 2 == 1;
+      in.f.slice_start = step < 2;
+      in.f.slice_end = step == 2 || step == 3;
+      try {
+        gradient->clock(in, out);
+      } catch (const sysc::RtlAssertionError& e) {
+        failed_cycle = cycle;
+        unit = e.unit();
+        EXPECT_EQ(e.cycle(), 5u);
+        EXPECT_NE(std::string(e.what()).find("gradient unit (RTL) failed in cycle 5"), std::string::npos) << e.what();
+        break;
+      }
+    }
+    std::fflush(stdout);
+    const std::string printed = testing::internal::GetCapturedStdout();
+    if (assertions) {
+      EXPECT_EQ(failed_cycle, 5);
+      EXPECT_EQ(unit, "gradient");
+      EXPECT_NE(printed.find("a_zero_beam_idle: cube4_gradient_unit: cycle 5: valid_i high in a zero-beam cycle"),
+                std::string::npos)
+          << printed;
+    } else {
+      EXPECT_EQ(failed_cycle, 0);
+      EXPECT_EQ(printed, "");
+    }
+  }
+#endif
+}
+
 }  // namespace

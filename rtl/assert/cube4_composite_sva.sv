@@ -1,0 +1,82 @@
+// cube4_composite_sva: the frame-register rule cube4_composite's header
+// states, as an assertion bound to every compositor datapath:
+//   a_frame_registers_stable - blend mode, cropping and cut-plane registers
+//                      do not change while a sample is in flight: they are
+//                      read in stages 1 to 7, so a sample that entered in
+//                      one of the Latency - 1 cycles before a change would
+//                      be cropped, cut or blended under two settings.
+//
+// Simulation only: not part of the unit, never synthesised.
+module cube4_composite_sva #(
+  parameter int unsigned AlphaBits   = 16,
+  parameter int unsigned CutBits     = 32,
+  parameter int unsigned CutInvShift = 24,
+  parameter int unsigned PosBits     = 16,
+  parameter int unsigned CutCoefBits = 12
+) (
+  input logic                             clk_i,
+  input logic                             rst_ni,
+  input cube4_pkg::blend_e                blend_mode_i,
+  input logic                             crop_enabled_i,
+  input logic [PosBits-1:0]               crop_x_lo_i,
+  input logic [PosBits-1:0]               crop_x_hi_i,
+  input logic [PosBits-1:0]               crop_y_lo_i,
+  input logic [PosBits-1:0]               crop_y_hi_i,
+  input logic [PosBits-1:0]               crop_z_lo_i,
+  input logic [PosBits-1:0]               crop_z_hi_i,
+  input logic [7:0]                       crop_mask_i,
+  input logic                             cut_enabled_i,
+  input logic [CutCoefBits-1:0]           cut_a_i,
+  input logic [CutCoefBits-1:0]           cut_b_i,
+  input logic [CutCoefBits-1:0]           cut_c_i,
+  input logic [CutBits-1:0]               cut_dmin_i,
+  input logic [CutBits-1:0]               cut_dmax_i,
+  input logic [CutBits-1:0]               cut_falloff_i,
+  input logic [AlphaBits+CutInvShift-1:0] cut_inv_falloff_i,
+  input logic                             cut_keep_inside_i,
+  input logic                             valid_i
+);
+
+  // cube4_composite's Latency is 7: a sample entered in the last 6 cycles
+  // still has stages that read the registers.
+  localparam int unsigned InFlight = 6;
+  localparam int unsigned CropBits = 1 + 6 * PosBits + 8;
+  localparam int unsigned CutRegs  = 1 + 3 * CutCoefBits + 3 * CutBits + AlphaBits + CutInvShift + 1;
+  localparam int unsigned RegBits  = 2 + CropBits + CutRegs;
+
+  logic [63:0] cycle;
+  cube4_sva_cycle u_cycle (.clk_i, .rst_ni, .cycle_o(cycle));
+
+  logic [RegBits-1:0]  regs, regs_q;
+  logic [InFlight-1:0] entered;
+  assign regs = {blend_mode_i,
+                 crop_enabled_i, crop_x_lo_i, crop_x_hi_i, crop_y_lo_i, crop_y_hi_i, crop_z_lo_i, crop_z_hi_i,
+                 crop_mask_i,
+                 cut_enabled_i, cut_a_i, cut_b_i, cut_c_i, cut_dmin_i, cut_dmax_i, cut_falloff_i, cut_inv_falloff_i,
+                 cut_keep_inside_i};
+  cube4_sva_frame_registers #(.Width(RegBits), .Cycles(InFlight)) u_frame (
+    .clk_i, .rst_ni, .valid_i, .regs_i(regs), .entered_o(entered), .regs_q_o(regs_q));
+
+  logic [1:0] mode_q;
+  logic       crop_changed, cut_changed;
+  assign mode_q       = regs_q[RegBits-1 -: 2];
+  assign crop_changed = regs[CutRegs +: CropBits] != regs_q[CutRegs +: CropBits];
+  assign cut_changed  = regs[0 +: CutRegs] != regs_q[0 +: CutRegs];
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (rst_ni) begin
+      a_frame_registers_stable: assert (entered == '0 || regs == regs_q)
+        else $error("cube4_composite: cycle %0d: frame registers changed with samples in flight (entered %b cycles ago, bit i: i+1): blend mode %0d -> %0d, cropping changed %0d, cut plane changed %0d",
+                    cycle, entered, mode_q, blend_mode_i, crop_changed, cut_changed);
+    end
+  end
+
+endmodule
+
+bind cube4_composite cube4_composite_sva #(
+  .AlphaBits  (AlphaBits),
+  .CutBits    (CutBits),
+  .CutInvShift(CutInvShift),
+  .PosBits    (PosBits),
+  .CutCoefBits(CutCoefBits)
+) u_sva (.*);
