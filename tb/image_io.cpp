@@ -1,21 +1,46 @@
 #include "tb/image_io.hpp"
 
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <mutex>
+#include <stdexcept>
 #include <vector>
 
 #include "golden/errors.hpp"
 #include "golden/fixed.hpp"
+#include "tb/image_plugin.hpp"
 
 namespace cube4::tb {
 namespace {
 
 namespace fs = std::filesystem;
 using golden::InputError;
+using Format = ImagePixels::Format;
+
+// OpenImageIO is opened at the first image read or write
+// (tb/image_plugin.hpp): CUBE4_IMAGE_PLUGIN names the module, else the one
+// this build made.
+const ImagePlugin& plugin() {
+  static const ImagePlugin* loaded = [] {
+    const char* env = std::getenv("CUBE4_IMAGE_PLUGIN");
+    const std::string path = env && *env ? env : CUBE4_IMAGE_PLUGIN;
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) throw std::runtime_error("image support: cannot load " + path + ": " + ::dlerror());
+    auto entry = reinterpret_cast<const ImagePlugin* (*)()>(::dlsym(handle, "cube4_image_plugin"));
+    if (!entry) throw std::runtime_error("image support: " + path + " has no cube4_image_plugin()");
+    const ImagePlugin* p = entry();
+    if (p->version != kImagePluginVersion)
+      throw std::runtime_error("image support: " + path + " is version " + std::to_string(p->version) +
+                               ", this cube4 needs " + std::to_string(kImagePluginVersion));
+    return p;
+  }();
+  return *loaded;
+}
 
 std::string extension_of(const std::string& path) {
   std::string e = fs::path(path).extension().string();
@@ -29,26 +54,12 @@ void check_extension(const std::string& path) {
     throw InputError("output file '" + path + "': unsupported extension '" + e + "' (use .png or .exr)");
 }
 
-// Writes `file` and reads it back: OpenImageIO's PNG writer does not report
-// a failed write (a full disk gives a truncated file and success), so the
-// file only counts as written once it decodes to the same size. `shown`
-// names the output in messages (the destination, not the temporary).
-void write_checked(const std::string& file, const std::string& shown, OIIO::ImageSpec spec, const void* pixels) {
+// Writes `file` and checks it reads back whole; `shown` names the output
+// in messages (the destination, not the temporary).
+void write_checked(const std::string& file, const std::string& shown, const ImagePixels& px) {
   check_extension(file);
-  auto out = OIIO::ImageOutput::create(file);
-  if (!out) throw InputError("cannot write '" + shown + "': " + OIIO::geterror());
-  if (!out->open(file, spec) || !out->write_image(spec.format, pixels) || !out->close())
-    throw InputError("cannot write '" + shown + "': " + out->geterror());
-  auto in = OIIO::ImageInput::open(file);
-  bool ok = in && in->spec().width == spec.width && in->spec().height == spec.height &&
-            in->spec().nchannels == spec.nchannels;
-  if (ok) {
-    std::vector<float> px(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-    ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data());
-  }
-  if (!ok)
-    throw InputError("cannot write '" + shown + "': the file written does not read back whole (" +
-                     (in ? in->geterror() : OIIO::geterror()) + "; is the disk full?)");
+  const std::string error = plugin().write(file, shown, px);
+  if (!error.empty()) throw InputError(error);
 }
 
 }  // namespace
@@ -57,8 +68,7 @@ void write_image(const std::string& path, const golden::ImageF& img, const std::
   const std::string& shown = shown_as.empty() ? path : shown_as;
   check_extension(path);
   if (extension_of(path) == ".exr") {
-    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::FLOAT);
-    write_checked(path, shown, spec, img.rgba.data());
+    write_checked(path, shown, {img.width, img.height, 4, Format::F32, img.rgba.data()});
     return;
   }
   // PNG: the premultiplied colour is the image over a black background.
@@ -67,8 +77,7 @@ void write_image(const std::string& path, const golden::ImageF& img, const std::
   for (size_t i = 0; i < n; ++i)
     for (int c = 0; c < 3; ++c)
       px[i * 3 + c] = static_cast<uint8_t>(std::lround(std::clamp(img.rgba[i * 4 + c], 0.0f, 1.0f) * 255.0f));
-  OIIO::ImageSpec spec(img.width, img.height, 3, OIIO::TypeDesc::UINT8);
-  write_checked(path, shown, spec, px.data());
+  write_checked(path, shown, {img.width, img.height, 3, Format::U8, px.data()});
 }
 
 void write_baseplane(const std::string& path, const golden::BasePlane& bp, const std::string& shown_as) {
@@ -81,58 +90,46 @@ void write_baseplane(const std::string& path, const golden::BasePlane& bp, const
   std::vector<uint16_t> px(bp.rgba.size());
   for (size_t i = 0; i < px.size(); ++i)
     px[i] = static_cast<uint16_t>(golden::expand_bits(bp.rgba[i], bp.bits, 16));
-  OIIO::ImageSpec spec(bp.width, bp.height, 4, OIIO::TypeDesc::UINT16);
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  spec.attribute("cube4:channel_bits", bp.bits);
-  write_checked(path, shown, spec, px.data());
+  write_checked(path, shown, {bp.width, bp.height, 4, Format::U16, px.data(), true, bp.bits});
 }
 
 void write_baseplane(const std::string& path, const golden::ImageF& bp, const std::string& shown_as) {
   const std::string& shown = shown_as.empty() ? path : shown_as;
   check_extension(path);
   if (extension_of(path) == ".exr") {
-    OIIO::ImageSpec spec(bp.width, bp.height, 4, OIIO::TypeDesc::FLOAT);
-    write_checked(path, shown, spec, bp.rgba.data());
+    write_checked(path, shown, {bp.width, bp.height, 4, Format::F32, bp.rgba.data()});
     return;
   }
   std::vector<uint16_t> px(bp.rgba.size());
   for (size_t i = 0; i < px.size(); ++i)
     px[i] = static_cast<uint16_t>(std::lround(std::clamp(bp.rgba[i], 0.0f, 1.0f) * 65535.0f));
-  OIIO::ImageSpec spec(bp.width, bp.height, 4, OIIO::TypeDesc::UINT16);
-  spec.attribute("oiio:UnassociatedAlpha", 1);
-  write_checked(path, shown, spec, px.data());
+  write_checked(path, shown, {bp.width, bp.height, 4, Format::U16, px.data(), true});
 }
 
 golden::ImageF read_image(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw InputError("cannot read image '" + path + "': " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
+  int w = 0, h = 0, c = 0;
+  std::vector<float> px;
+  const std::string error = plugin().read_f32(path, false, &w, &h, &c, &px);
+  if (!error.empty()) throw InputError("cannot read image '" + path + "': " + error);
   golden::ImageF img;
-  img.width = spec.width;
-  img.height = spec.height;
-  std::vector<float> px(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()))
-    throw InputError("cannot read image '" + path + "': " + in->geterror());
-  img.rgba.assign(static_cast<size_t>(img.width) * img.height * 4, 1.0f);
-  for (size_t i = 0; i < static_cast<size_t>(img.width) * img.height; ++i)
-    for (int c = 0; c < std::min(4, spec.nchannels); ++c) img.rgba[i * 4 + c] = px[i * spec.nchannels + c];
+  img.width = w;
+  img.height = h;
+  img.rgba.assign(static_cast<size_t>(w) * h * 4, 1.0f);
+  for (size_t i = 0; i < static_cast<size_t>(w) * h; ++i)
+    for (int k = 0; k < std::min(4, c); ++k) img.rgba[i * 4 + k] = px[i * c + k];
   return img;
 }
 
 golden::BasePlane read_baseplane_png(const std::string& path, int bits) {
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) throw InputError("cannot read base plane '" + path + "': " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.nchannels != 4) throw InputError("base plane '" + path + "' has " + std::to_string(spec.nchannels) + " channels, expected 4");
+  int w = 0, h = 0, c = 0;
+  std::vector<uint16_t> px;
+  const std::string error = plugin().read_u16(path, true, &w, &h, &c, &px);
+  if (!error.empty()) throw InputError("cannot read base plane '" + path + "': " + error);
+  if (c != 4) throw InputError("base plane '" + path + "' has " + std::to_string(c) + " channels, expected 4");
   golden::BasePlane bp;
-  bp.width = spec.width;
-  bp.height = spec.height;
+  bp.width = w;
+  bp.height = h;
   bp.bits = bits;
-  std::vector<uint16_t> px(static_cast<size_t>(spec.width) * spec.height * 4);
-  if (!in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT16, px.data()))
-    throw InputError("cannot read base plane '" + path + "': " + in->geterror());
   bp.rgba.resize(px.size());
   for (size_t i = 0; i < px.size(); ++i) bp.rgba[i] = static_cast<uint16_t>(px[i] >> (16 - bits));
   return bp;

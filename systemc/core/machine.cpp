@@ -72,7 +72,11 @@ Hosted& hosted(const SystemConfig& cfg, const golden::Precision& p, int max_dim)
   HardwareParams hw;
   hw.precision = p;
   hw.pipelines = cfg.p;
-  hw.max_dim = std::max(256, max_dim);
+  // The largest volume the interface takes, rounded up to a power of two:
+  // a process renders volumes of several sizes through it (the blocks of a
+  // partitioned volume differ by their borders), and it is built once.
+  hw.max_dim = 256;
+  while (hw.max_dim < max_dim && hw.max_dim < regmap::kMaxDimLimit) hw.max_dim *= 2;
   if (!h.host) {
     if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
       throw std::invalid_argument(
@@ -83,10 +87,14 @@ Hosted& hosted(const SystemConfig& cfg, const golden::Precision& p, int max_dim)
     h.host = std::make_unique<HostInterface>("host", HostConfig{hw, sc_core::sc_time(30, sc_core::SC_NS)}, *h.machine);
     h.bus = std::make_unique<HostBus>("host_bus");
     h.bus->socket.bind(h.host->socket);
-  } else if (hw.pipelines != h.hw.pipelines || hw.max_dim > h.hw.max_dim) {
+  } else if (hw.pipelines != h.hw.pipelines) {
     throw std::invalid_argument("host interface: built for p = " + std::to_string(h.hw.pipelines) +
                                 " in this process; SystemC elaborates once, so run p = " +
                                 std::to_string(hw.pipelines) + " in a process of its own");
+  } else if (hw.max_dim > h.hw.max_dim) {
+    throw std::invalid_argument("host interface: built for volumes of up to " + std::to_string(h.hw.max_dim) +
+                                " voxels per axis in this process; SystemC elaborates once, so render the " +
+                                std::to_string(max_dim) + "-voxel volume in a process of its own");
   }
   h.machine->set_config(cfg);
   return h;
