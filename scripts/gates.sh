@@ -21,8 +21,23 @@
 #               20 per async-reset flip-flop (not in yosys's table)
 #   memory      $mem cells, depth x width (bits), counted apart from logic
 #
-# Usage: scripts/gates.sh [module ...]   (default: every module of rtl/)
+# Usage: scripts/gates.sh [--json] [--set Name=value,...] [module ...]
+#   (default: every module of rtl/, each also at the extra parameter sets below)
+#   --set    synthesise each module once, with those parameters it declares
+#            overridden (the explorer's width configurations, docs/explore.md)
+#   --json   a JSON array of the rows instead of the markdown table
+#   --declared  with --set: print, per module, "module overrides-it-declares"
+#            and synthesise nothing (the explorer caches per module and those)
 set -u
+json=0 set_params="" set_given=0 declared_only=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --json) json=1; shift ;;
+    --declared) declared_only=1; shift ;;
+    --set) set_params=$2; set_given=1; shift 2 ;;
+    *) break ;;
+  esac
+done
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 command -v yosys >/dev/null || { echo "gates: yosys not found" >&2; exit 2; }
@@ -83,18 +98,38 @@ synth_one() {
   runs+=("$m|$params|$tag")
 }
 
+# The overrides of --set that module $1 declares as parameters.
+declared() {
+  local m=$1 kv out=""
+  for kv in ${set_params//,/ }; do
+    awk "/^module $m([^A-Za-z0-9_]|\$)/,/^\\) *\\(/" "rtl/$m.sv" | grep -qE "parameter[^=]*\\<${kv%%=*}\\>[[:space:]]*=" &&
+      out="${out:+$out,}$kv"
+  done
+  echo "$out"
+}
+
+if [ $declared_only = 1 ]; then
+  for u in "${units[@]}"; do echo "$u $(declared "$u")"; done
+  exit 0
+fi
+
 status=0
 for u in "${units[@]}"; do
+  if [ $set_given = 1 ]; then
+    synth_one "$u" "$(declared "$u")" || status=1
+    continue
+  fi
   synth_one "$u" "" || status=1
   for e in "${extra[@]}"; do
     [ "${e%% *}" = "$u" ] && { synth_one "$u" "${e#* }" || status=1; }
   done
 done
 
-python3 - "$tmp" "${runs[@]}" <<'EOF'
+python3 - "$tmp" "$json" "${runs[@]}" <<'EOF'
 import json, re, sys
 
-tmp = sys.argv[1]
+tmp, as_json = sys.argv[1], sys.argv[2] == "1"
+rows = []
 weights = {  # NAND2 equivalents
     "$_NOT_": 0.67, "$_BUF_": 0.0, "$_NAND_": 1.0, "$_NOR_": 1.0, "$_AND_": 1.33, "$_OR_": 1.33,
     "$_XOR_": 2.0, "$_XNOR_": 2.0, "$_MUX_": 2.33,
@@ -120,10 +155,8 @@ def parameters(module, overrides):
         vals[k] = v + "*"
     return ", ".join(f"{k}={v}" for k, v in vals.items()) or "-"
 
-print("| module | parameters | cells | FFs | NAND2-eq | transistors | memory |")
-print("|---|---|---:|---:|---:|---:|---|")
 unknown_all = set()
-for run in sys.argv[2:]:
+for run in sys.argv[3:]:
     module, params, tag = run.split("|")
     g = json.load(open(f"{tmp}/{tag}.gates.json"))["design"]["num_cells_by_type"]
     c = json.load(open(f"{tmp}/{tag}.cmos.json"))["design"]
@@ -152,10 +185,19 @@ for run in sys.argv[2:]:
         for name, cell in mod.get("cells", {}).items():
             if cell["type"].startswith("$mem"):
                 p = cell["parameters"]
-                w, d = int(p["WIDTH"], 2), int(p["SIZE"], 2)
-                mems.append(f"{d}x{w} ({d * w} b)")
-    print(f"| {module} | {parameters(module, params)} | {cells} | {ffs} | {nand2:,.0f} | "
-          f"{int(transistors):,} | {', '.join(mems) or '-'} |")
+                mems.append((int(p["SIZE"], 2), int(p["WIDTH"], 2)))
+    rows.append({"module": module, "parameters": params, "cells": cells, "ffs": ffs, "nand2": round(nand2, 2),
+                 "transistors": int(transistors), "memories": [{"depth": d, "width": w} for d, w in mems],
+                 "ram_bits": sum(d * w for d, w in mems)})
+if as_json:
+    print(json.dumps(rows, indent=1))
+    sys.exit(0)
+print("| module | parameters | cells | FFs | NAND2-eq | transistors | memory |")
+print("|---|---|---:|---:|---:|---:|---|")
+for r in rows:
+    mems = ", ".join(f"{m['depth']}x{m['width']} ({m['depth'] * m['width']} b)" for m in r["memories"])
+    print(f"| {r['module']} | {parameters(r['module'], r['parameters'])} | {r['cells']} | {r['ffs']} | "
+          f"{r['nand2']:,.0f} | {r['transistors']:,} | {mems or '-'} |")
 print()
 print("NAND2-eq weights: NOT 0.67, NAND2/NOR2 1, AND2/OR2 1.33, XOR2/XNOR2 2, MUX2 2.33, "
       "DFF 5.67, DFF with async reset 6.67 (typical 45 nm X1 cell areas / NAND2). "

@@ -8,6 +8,7 @@ build=${1:-$here/build}
 packages=(build-essential cmake ninja-build pkg-config zlib1g-dev
   verilator libsystemc-dev libgtest-dev libopenimageio-dev openimageio-tools yosys
   libcli11-dev nlohmann-json3-dev libnifti2-dev libvolpack1-dev libassimp-dev libxml2-utils z3 ccache
+  parallel python3-matplotlib
   clang libclang-rt-14-dev)  # clang: the sanitizer and fuzzer build (docs/reliability.md)
 missing=()
 for p in "${packages[@]}"; do

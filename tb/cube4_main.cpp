@@ -24,6 +24,7 @@
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
 #include "tb/block_jobs.hpp"
+#include "tb/explore.hpp"
 #include "tb/image_io.hpp"
 #include "tb/output_files.hpp"
 #include "tb/progress.hpp"
@@ -901,11 +902,26 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   regress->add_option("--summary", rg.summary, "Markdown summary output");
   regress->add_flag("-q,--quiet", rg.quiet, "no progress on stderr");
+  tb::ExploreArgs ea;
+  CLI::App* explore = app.add_subcommand(
+      "explore", "sweep widths, p, S, clock and scenes: error, cycles, gates and simulation time per point, the "
+                 "Pareto fronts and plots (docs/explore.md)");
+  explore->add_option("sweep", ea.sweep, "sweep file (JSON, docs/explore.md)")->required();
+  explore->add_option("--out", ea.out, "results folder (default: the sweep's name + .explore, here)");
+  explore->add_option("-j,--jobs", ea.jobs, "GNU parallel's jobs at a time (default: one per core)")
+      ->check(CLI::Range(1, 256));
+  explore->add_flag("--emit-jobs", ea.emit_jobs, "write the job list (jobs.txt, one cube4 command per point) and stop");
+  explore->add_flag("--collect", ea.collect, "collect the results there are into the table, fronts and plots");
+  explore->add_option("--point", ea.point, "run one point (what each job does)")->check(CLI::Range(0, 9999));
+  explore->add_flag_callback("--no-plots", [&ea] { ea.plots = false; }, "no plots (they need python3-matplotlib)");
+  explore->add_option("--gates-cache", ea.gates_cache,
+                      "folder of yosys results per width configuration (default: ~/.cache/cube4/gates)");
+  explore->add_flag("-q,--quiet", ea.quiet, "no progress on stderr");
   const std::string cmd = argc > 1 ? argv[1] : "";
   if (argc > 1 && argv[1][0] != '-' && cmd != "render" && cmd != "info" && cmd != "regress" && cmd != "plan" &&
-      cmd != "compose") {
+      cmd != "compose" && cmd != "explore") {
     std::fprintf(stderr,
-                 "cube4: error: unknown command '%s' (commands: render, info, regress, plan, compose; see --help)\n",
+                 "cube4: error: unknown command '%s' (commands: render, info, regress, plan, compose, explore; see --help)\n",
                  argv[1]);
     return 2;
   }
@@ -920,6 +936,7 @@ int main(int argc, char** argv) {
     if (*regress) return tb::run_regress(rg, std::filesystem::canonical("/proc/self/exe").string());
     if (*plan) return run_plan(pa);
     if (*compose) return run_compose(ca);
+    if (*explore) return tb::run_explore(ea, std::filesystem::canonical("/proc/self/exe").string());
     return run_info(info_scene, info_max_memory);
   } catch (const InputError& e) {
     std::fprintf(stderr, "cube4: error: %s\n", e.what());

@@ -1,7 +1,5 @@
 // Small helpers shared by the golden-model tests.
 #pragma once
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 
 #include <filesystem>
 #include <string>
@@ -13,6 +11,7 @@
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "tb/image_error.hpp"
 
 namespace cube4::test {
 
@@ -60,19 +59,9 @@ inline golden::ImageF final_reference(const Setup& s) {
   return golden::render_reference(s.volume, s.scene, s.host.view, opt);
 }
 
-struct ImageError {
-  double psnr = 0;       // over RGB, peak 1
-  double max_error = 0;
-  double mean_error = 0;
-};
+using tb::ImageError;
 
-// RGB comparison through OpenImageIO's ImageBufAlgo::compare (what idiff uses).
-inline ImageError compare(const golden::ImageF& a, const golden::ImageF& b) {
-  const OIIO::ImageSpec spec(a.width, a.height, 4, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf ia(spec, const_cast<float*>(a.rgba.data()));
-  OIIO::ImageBuf ib(spec, const_cast<float*>(b.rgba.data()));
-  const auto r = OIIO::ImageBufAlgo::compare(ia, ib, 0.0f, 0.0f, OIIO::ROI(0, a.width, 0, a.height, 0, 1, 0, 3));
-  return {r.PSNR, r.maxerror, r.meanerror};
-}
+// RGB comparison with the figures idiff reports (tb/image_error.hpp).
+inline ImageError compare(const golden::ImageF& a, const golden::ImageF& b) { return tb::image_error(a, b); }
 
 }  // namespace cube4::test
