@@ -19,6 +19,7 @@ cat > "$tmp/scene.json" <<JSON
  "shading": true, "output": {"width": 512, "height": 512}}
 JSON
 echo "perf_block_jobs: one process, $counts blocks of $n³ at RTL..." >&2
+load0=$(cut -d' ' -f1 /proc/loadavg)
 t0=$(date +%s.%N)
 "$cube4" render "$tmp/scene.json" --model rtl --blocks "$counts" --no-check --max-memory 20000 -q \
   -o "$tmp/one.png" --baseplane "$tmp/one_bp.png" --report "$tmp/one.json"
@@ -27,16 +28,19 @@ echo "perf_block_jobs: $jobs jobs at a time..." >&2
 "$here/scripts/render_blocks.sh" "$tmp/scene.json" "$counts" "$tmp/jobs.png" --model rtl -j "$jobs" \
   --baseplane "$tmp/jobs_bp.png" --work "$tmp/work"
 t2=$(date +%s.%N)
+load2=$(cut -d' ' -f1 /proc/loadavg)
 cmp -s "$tmp/one_bp.png" "$tmp/jobs_bp.png" && same=yes || same=NO
-python3 - "$tmp/one.json" "$t0" "$t1" "$t2" "$n" "$counts" "$jobs" "$same" "$(nproc)" <<'PY' | \
+python3 - "$tmp/one.json" "$t0" "$t1" "$t2" "$n" "$counts" "$jobs" "$same" "$(nproc)" "$load0" "$load2" <<'PY' | \
   python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" block-jobs
 import json, sys, datetime
 r = json.load(open(sys.argv[1]))
 t0, t1, t2 = map(float, sys.argv[2:5])
-n, counts, jobs, same, cores = sys.argv[5:10]
+n, counts, jobs, same, cores, load0, load2 = sys.argv[5:12]
 s = r["system"]
 cycles = sum(m["simulated_cycles"] for m in s["per_machine"])
-print(f"Generated {datetime.date.today()} by `scripts/perf_block_jobs.sh {n} {counts} {jobs}` on {cores} cores.")
+print(f"Generated {datetime.date.today()} by `scripts/perf_block_jobs.sh {n} {counts} {jobs}` on {cores} cores "
+      f"(1-minute load average {load0} at the start, {load2} at the end: other work on the machine slows both runs, "
+      "the parallel one more when it leaves it fewer free cores).")
 print()
 print(f"A {n}³ sphere (shaded) at RTL, p = {s['pipelines_per_machine']}: no one machine holds it (the rings keep 256")
 print(f"voxels along the permuted x and y), so it renders as {s['machines']} blocks ({counts}); {cycles:,} machine")
