@@ -86,7 +86,7 @@ void StreamChecker::shaded(const ShadedBeat& b) {
     const int x = b.x + q;
     if (x >= plan_.nx || static_cast<int>(b.slice) >= plan_.K) continue;
     const size_t i = index(static_cast<int>(b.slice), x, b.y);
-    const golden::ShadedSample s = golden::shade_classified(plan_.r, sample_[i], gradient_[i]);
+    const golden::ShadedSample s = golden::shade_classified(plan_.r, sample_[i], 0, gradient_[i]);
     const auto l = static_cast<size_t>(q);
     if (b.red[l] != s.rgb[0] || b.green[l] != s.rgb[1] || b.blue[l] != s.rgb[2] || b.alpha[l] != s.alpha ||
         b.value[l] != s.value)
