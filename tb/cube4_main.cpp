@@ -399,11 +399,6 @@ int run_render(const RenderArgs& args) {
                      std::to_string(l.meshes.size()) + (l.meshes.size() == 1 ? " mesh" : " meshes") +
                      ") render with --model fixed, float or reference so far; the system model (--model " + a.model +
                      ") does not draw polygons yet");
-  if (system && l.scene.precision.tag_bits > 0)
-    throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
-                     ": \"precision.tag_bits\" = " + std::to_string(l.scene.precision.tag_bits) +
-                     ": voxel tags render with --model fixed, float, reference or splat so far; the system model "
-                     "(--model " + a.model + ") does not carry tags yet");
   if (l.scene.volume.kind == "den" || l.scene.volume.kind == "raw" || l.scene.volume.kind == "nifti")
     outputs.check_not_output(l.volume.source, "the volume");
   const int golden_threads = a.threads > 0 ? a.threads : golden::default_threads();

@@ -210,13 +210,14 @@ sc_core::sc_module& network_top() { return *clocked_tops().network; }
 
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
-  // Voxel tags (bela §III) are specified in golden; the voxel memory, the
-  // host interface and the unit streams do not carry them yet.
-  if (r.p.tag_bits > 0)
-    throw std::invalid_argument("precision: tag_bits = " + std::to_string(r.p.tag_bits) +
-                                ", but the system model does not carry voxel tags yet; render with --model fixed");
   const FramePlan plan(r, cfg.p);  // p, supersampling and the stream tag's slices
   if (cfg.all_tlm() && !cfg.cycle_level) return;
+  // Voxel tags (bela §III) reach the voxel memory through the host
+  // interface and the transaction-level frame; the unit streams of a
+  // cycle-level run do not carry them yet.
+  if (r.p.tag_bits > 0)
+    throw std::invalid_argument("precision: tag_bits = " + std::to_string(r.p.tag_bits) +
+                                ": a cycle-level run does not carry voxel tags yet; render with --model tlm or fixed");
   if (cfg.p > kMaxLanes)
     throw std::invalid_argument("pipelines: " + std::to_string(cfg.p) + " (a cycle-level run takes at most " +
                                 std::to_string(kMaxLanes) + "; --model tlm takes any)");
