@@ -61,7 +61,7 @@ inline constexpr PrecisionField kPrecisionFields[] = {
     {"cut_bits", &Precision::cut_bits, 16, 40, "P_CUT_BITS", "CutBits"},
     {"acc_guard_bits", &Precision::acc_guard_bits, 0, 8, "P_ACC_GUARD_BITS", "AccGuardBits"},
     // bela's four-bit tags fit; voxel_bits + tag_bits <= 16 (scene_io) bounds the classification table.
-    {"tag_bits", &Precision::tag_bits, 0, 8, "P_TAG_BITS", nullptr},
+    {"tag_bits", &Precision::tag_bits, 0, 8, "P_TAG_BITS", "VoxelTagBits"},
 };
 
 inline constexpr int kPrecisionFieldCount = sizeof kPrecisionFields / sizeof kPrecisionFields[0];

@@ -213,9 +213,13 @@ module cube4_interp_unit #(
   // Beam 0 only fills the beam delay: no samples.
   assign tri_valid = fire && !slice_start_q;
 
+  // The ring does not carry voxel tags yet: the datapath's tag path is off.
+  logic unused_vtag;
+
   cube4_interp #(
-    .VoxelBits (VoxelBits),
-    .WeightBits(WeightBits)
+    .VoxelBits   (VoxelBits),
+    .WeightBits  (WeightBits),
+    .VoxelTagBits(0)
   ) u_trilinear (
     .clk_i   (clk_i),
     .rst_ni  (rst_ni),
@@ -224,8 +228,10 @@ module cube4_interp_unit #(
     .wx_i    (wx_q),
     .wy_i    (wy_q),
     .wz_i    (wz_q),
+    .vtags_i ('0),
     .valid_o (valid_o),
-    .sample_o(sample_o)
+    .sample_o(sample_o),
+    .vtag_o  (unused_vtag)
   );
 
   // Flags and tag beside the trilinear pipeline (data: not reset). Packed:

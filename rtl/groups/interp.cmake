@@ -33,3 +33,5 @@ cube4_rtl_variant(test_rtl_interp cube4_lerp Vcube4_lerp)
 cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp SOURCES cube4_lerp.sv)
 cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp_w6 SOURCES cube4_lerp.sv PARAMS VoxelBits=8 WeightBits=6)
 cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp_w10 SOURCES cube4_lerp.sv PARAMS VoxelBits=16 WeightBits=10)
+# With 4-bit voxel tags (bela §III), at the default widths otherwise.
+cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp_t4 SOURCES cube4_lerp.sv PARAMS VoxelTagBits=4)
