@@ -269,9 +269,36 @@ TEST(System, TaggedSpheresThroughTheHostInterfaceTlm) {
     EXPECT_EQ(res.plane.rgba, golden::render_fixed(vol, regs).rgba);
     EXPECT_EQ(res.frame_cycles, sysc::frame_cycles(regs, cfg.p).latency);
     EXPECT_EQ(sysc::host_session(cfg, regs.p).machine.volume(0).tags, vol.tags);
-    sysc::SystemConfig clocked = cfg;
-    clocked.cycle_level = true;
-    EXPECT_THROW(sysc::check_system_limits(regs, clocked), std::invalid_argument);
+    sysc::SystemConfig rtl = cfg;
+    rtl.levels[static_cast<size_t>(sysc::Unit::Interp)] = Level::Rtl;
+    EXPECT_THROW(sysc::check_system_limits(regs, rtl), std::invalid_argument);
+  }
+}
+
+// The same spheres through the transaction-level units clocked beat by
+// beat: the voxel memory's words carry the tags, the interpolation unit
+// gives each sample its nearest voxel's, the gradient unit passes the
+// centre's on, the shading unit classifies and shades by it; every unit's
+// stream (tags included) and the base plane equal golden's, from all six
+// base planes.
+TEST(System, TaggedSpheresTlmCycleLevelAllBasePlanes) {
+  const char* dirs[6][2] = {{"[1, 0, 0]", "[0, 1, 0]"}, {"[-1, 0, 0]", "[0, 1, 0]"}, {"[0, 1, 0]", "[0, 0, 1]"},
+                            {"[0, -1, 0]", "[0, 0, 1]"}, {"[0, 0, 1]", "[0, 1, 0]"}, {"[0, 0, -1]", "[0, 1, 0]"}};
+  for (const auto& d : dirs) {
+    SCOPED_TRACE(d[0]);
+    Case c;
+    c.volume = R"({"synthetic": "spheres", "size": [14, 10, 9], "radius": 3.5})";
+    c.direction = d[0];
+    c.up = d[1];
+    c.transfer = R"("transfer": {"opacity": [[0, 0], [0.3, 0], [0.5, 0.6], [1, 0.8]]})";
+    c.effects = R"("shading": true, "material": {"ks": 0.4}, "precision": {"tag_bits": 2},
+                   "tags": {"label": [{"tag": 1, "box": {"min": [0, 0, 0], "max": [6, 9, 8]}},
+                                      {"tag": 2, "box": {"min": [7, 0, 0], "max": [13, 9, 8]}}],
+                            "classes": [{"tag": 1, "color": [[0, 1, 0.1, 0.1], [1, 1, 0.1, 0.1]]},
+                                        {"tag": 2, "color": [[0, 0.1, 0.1, 1], [1, 0.1, 0.1, 1]],
+                                         "material": {"kd": 0.5, "ks": 0.9}}]})";
+    run(c, 4, kTlm, true);
+    run(c, 3, kTlm, true);
   }
 }
 
