@@ -138,12 +138,18 @@ Volume block_volume(const Volume& vol, const Block& b) {
   out.spacing = vol.spacing;
   out.bits = vol.bits;
   out.source = vol.source + " block " + std::to_string(b.index);
-  out.data.resize(out.size());
-  for (int z = 0; z < out.dim[2]; ++z)
-    for (int y = 0; y < out.dim[1]; ++y) {
-      const uint16_t* src = &vol.data[vol.index(b.object_lo[0], b.object_lo[1] + y, b.object_lo[2] + z)];
-      std::copy(src, src + out.dim[0], &out.data[out.index(0, y, z)]);
-    }
+  out.tag_source = vol.tag_source;
+  // The block's voxels, and their tags with them.
+  auto copy = [&](const auto& from, auto& to) {
+    to.resize(out.size());
+    for (int z = 0; z < out.dim[2]; ++z)
+      for (int y = 0; y < out.dim[1]; ++y) {
+        const auto* src = &from[vol.index(b.object_lo[0], b.object_lo[1] + y, b.object_lo[2] + z)];
+        std::copy(src, src + out.dim[0], &to[out.index(0, y, z)]);
+      }
+  };
+  copy(vol.data, out.data);
+  if (!vol.tags.empty()) copy(vol.tags, out.tags);
   return out;
 }
 

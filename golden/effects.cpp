@@ -26,7 +26,8 @@ EffectSet effects_of(const Scene& s) {
   // No light means no reflectance maps to build; such a scene renders as
   // unshaded (parse_scene never produces one: it fills in the default light).
   e.shading = s.shading && !s.lights.empty();
-  e.specular = e.shading && s.material.ks > 0;
+  e.specular = false;
+  for (int t = 0; t < s.tag_count(); ++t) e.specular = e.specular || (e.shading && s.material_of(t).ks > 0);
   // Diffuse/specular modulation scale the shading terms, so they need |g|
   // only when those terms exist; opacity modulation needs it always.
   e.magnitude = s.gm.opacity || (e.shading && (s.gm.diffuse || s.gm.specular));
@@ -35,6 +36,7 @@ EffectSet effects_of(const Scene& s) {
   e.cut_plane = s.cut.enabled;
   e.supersampling = s.supersampling > 1;
   e.polygons = !s.polygons.empty();
+  e.tags = s.precision.tag_bits > 0;
   return e;
 }
 
@@ -44,6 +46,7 @@ std::vector<std::string> EffectSet::names() const {
       {gradient, "gradient"},   {magnitude, "magnitude"}, {shading, "shading"},
       {specular, "specular"},   {cropping, "cropping"},   {cut_plane, "cut_plane"},
       {supersampling, "supersampling"}, {polygons, "polygons"},
+      {tags, "tags"},
   };
   for (const auto& [on, name] : flags)
     if (on) out.push_back(name);

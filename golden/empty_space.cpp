@@ -80,11 +80,12 @@ SkipMap::SkipMap(const Registers& r, const BlockRanges* ranges)
     if (ranges->dim[r.perm[i]] != r.dim[i]) return;  // not this volume's ranges
   // A value may change a ray if its table α is non-zero: prefix counts of
   // such values answer "any in [lo, hi]" in two reads.
-  std::vector<uint32_t> visible_below(r.classification.size() + 1, 0);
-  for (size_t v = 0; v < r.classification.size(); ++v)
-    visible_below[v + 1] = visible_below[v] + (r.classification[v].a != 0);
+  // With tags, visible under any tag: the ranges know values only.
+  const size_t values = r.class_values();
+  std::vector<uint32_t> visible_below(values + 1, 0);
+  for (size_t v = 0; v < values; ++v) visible_below[v + 1] = visible_below[v] + r.value_visible(v);
   auto any_visible = [&](uint32_t lo, uint32_t hi) {
-    if (hi >= r.classification.size()) return true;  // beyond the table: never skipped
+    if (hi >= values) return true;  // beyond the table: never skipped
     return visible_below[hi + 1] != visible_below[lo];
   };
   // The object block holding the cell whose lower corner is permuted

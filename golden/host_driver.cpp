@@ -46,9 +46,9 @@ int64_t to_register(const Scene& s, const std::string& key, double value, double
   return static_cast<int64_t>(x);
 }
 
-uint32_t coef_register(const Scene& s, const char* key, double value, const char* reg) {
+uint32_t coef_register(const Scene& s, const std::string& key, double value, const char* reg) {
   const Precision& p = s.precision;
-  return static_cast<uint32_t>(to_register(s, std::string("material.") + key, value,
+  return static_cast<uint32_t>(to_register(s, key, value,
                                            std::ldexp(1.0, p.coef_frac_bits), 0, max_unsigned(p.coef_bits),
                                            std::string(reg) + " (precision.coef_bits, coef_frac_bits)"));
 }
@@ -58,16 +58,19 @@ uint32_t coef_register(const Scene& s, const char* key, double value, const char
 std::vector<ClassEntry> build_classification(const Scene& s, double step_ratio) {
   const Precision& p = s.precision;
   const int64_t n = int64_t{1} << p.voxel_bits;
-  std::vector<ClassEntry> lut(static_cast<size_t>(n));
-  for (int64_t i = 0; i < n; ++i) {
-    const double x = static_cast<double>(i) / (n - 1);
-    const Vec3 c = eval_color(s.color, x);
-    const double a = correct_alpha(eval_piecewise(s.opacity, x), step_ratio);
-    lut[i] = {static_cast<uint16_t>(quantise_unit(c[0], p.color_bits)),
-              static_cast<uint16_t>(quantise_unit(c[1], p.color_bits)),
-              static_cast<uint16_t>(quantise_unit(c[2], p.color_bits)),
-              static_cast<uint16_t>(quantise_unit(a, p.alpha_bits))};
-  }
+  // One table of 2^voxel_bits entries per tag, at address {tag, value}.
+  std::vector<ClassEntry> lut(static_cast<size_t>(n) * s.tag_count());
+  for (int t = 0; t < s.tag_count(); ++t)
+    for (int64_t i = 0; i < n; ++i) {
+      const double x = static_cast<double>(i) / (n - 1);
+      const Vec3 c = eval_color(s.color_of(t), x);
+      const double a = correct_alpha(eval_piecewise(s.opacity_of(t), x), step_ratio);
+      lut[class_address(static_cast<uint32_t>(t), static_cast<uint32_t>(i), p)] = {
+          static_cast<uint16_t>(quantise_unit(c[0], p.color_bits)),
+          static_cast<uint16_t>(quantise_unit(c[1], p.color_bits)),
+          static_cast<uint16_t>(quantise_unit(c[2], p.color_bits)),
+          static_cast<uint16_t>(quantise_unit(a, p.alpha_bits))};
+    }
   return lut;
 }
 
@@ -235,16 +238,26 @@ HostProgram program_host(const Scene& s, const Volume& vol) {
   r.gm_diffuse = e.shading && s.gm.diffuse;
   r.gm_specular = e.specular && s.gm.specular;
   if (e.magnitude) r.gm_lut = build_gm_lut(s);
-  if (e.shading) {
-    r.diffuse_map = build_diffuse_map(s, f);
-    r.coefs.ke = coef_register(s, "ke", s.material.ke, "KE");
-    r.coefs.kd = coef_register(s, "kd", s.material.kd, "KD");
+  if (e.shading) r.diffuse_map = build_diffuse_map(s, f);
+  if (e.specular) r.specular_map = build_specular_map(s, f);
+  // Each tag's material (only the scene's without tags); ks and the specular
+  // colour only where the specular map exists.
+  for (int t = 0; t < (e.shading ? s.tag_count() : 0); ++t) {
+    const Material& m = s.material_of(t);
+    const std::string key = s.tag_class(t) && s.tag_class(t)->material
+                                ? "tags.classes[tag " + std::to_string(t) + "].material."
+                                : std::string("material.");
+    ShadeCoefs k;
+    k.ke = coef_register(s, key + "ke", m.ke, "KE");
+    k.kd = coef_register(s, key + "kd", m.kd, "KD");
+    if (e.specular) {
+      k.ks = coef_register(s, key + "ks", m.ks, "KS");
+      for (int c = 0; c < 3; ++c) k.specular[c] = static_cast<uint32_t>(quantise_unit(m.specular_color[c], p.alpha_bits));
+    }
+    if (t == 0) r.coefs = k;
+    if (e.tags) r.tag_coefs.push_back(k);
   }
   if (e.specular) {
-    r.specular_map = build_specular_map(s, f);
-    r.coefs.ks = coef_register(s, "ks", s.material.ks, "KS");
-    for (int c = 0; c < 3; ++c)
-      r.coefs.specular[c] = static_cast<uint32_t>(quantise_unit(s.material.specular_color[c], p.alpha_bits));
     for (int c = 0; c < 3; ++c)
       r.eye[c] = static_cast<int32_t>(to_register(s, "view", f.eye_perm[c], static_cast<double>(max_signed(p.eye_bits)),
                                                   -max_signed(p.eye_bits), max_signed(p.eye_bits), "EYE"));

@@ -57,9 +57,13 @@ inline SliceControl slice_control(const Registers& r, int k) {
 // The 12-neighbourhood of a sample (plus the sample): four in its own slice,
 // and 2x2 around the re-aligned position in the slices behind and ahead
 // ([0] at (base, base), [1] x+1, [2] y+1, [3] both).
+// `tag` is the centre's (sample_tag()): it travels with the centre sample
+// through the gradient unit, and only the classification and the material
+// use it.
 struct Neighbourhood {
   uint32_t centre = 0, left = 0, right = 0, up = 0, down = 0;
   std::array<uint32_t, 4> behind{}, ahead{};
+  uint32_t tag = 0;
 };
 
 inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const Neighbourhood& n) {
@@ -71,18 +75,19 @@ inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const
   return gradient_12n(n.left, n.right, n.up, n.down, behind, ahead, r.supersampling, r.p);
 }
 
-// Magnitude, classification and shading of a sample with value `centre` and
-// gradient `g` (Gradient{} when the gradient unit is off): the shading
+// Magnitude, classification and shading of a sample with value `centre`,
+// tag `tag` and gradient `g` (Gradient{} when the gradient unit is off): the
+// classification entry is {tag, centre}'s and the material the tag's. The shading
 // unit's work (rtl/cube4_shade_unit.sv). Units the registers leave off are
 // not evaluated at all, exactly as the hardware would skip them. `faces`, if
 // given, replaces the cube-map divider by its table (same values).
-inline ShadedSample shade_classified(const Registers& r, uint32_t centre, const Gradient& g,
+inline ShadedSample shade_classified(const Registers& r, uint32_t centre, uint32_t tag, const Gradient& g,
                                      const FacePositionTable* faces = nullptr) {
   const Precision& p = r.p;
   const uint32_t one = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
   ShadedSample out;
   out.value = centre;
-  const ClassEntry& e = classify(r.classification, centre);
+  const ClassEntry& e = classify(r.classification, tag, centre, p);
   out.alpha = e.a;
   out.rgb = widen_color(e.r, e.g, e.b, p);
   uint32_t gm = one;
@@ -98,7 +103,7 @@ inline ShadedSample shade_classified(const Registers& r, uint32_t centre, const 
       const Gradient refl = reflection_vector(g, r.eye, p);
       is = reflectance_lookup(r.specular_map, coords(refl), p);
     }
-    out.rgb = phong(out.rgb, id, is, r.gm_diffuse ? gm : one, r.gm_specular ? gm : one, r.coefs, p);
+    out.rgb = phong(out.rgb, id, is, r.gm_diffuse ? gm : one, r.gm_specular ? gm : one, r.coefs_of(tag), p);
   }
   return out;
 }
@@ -125,7 +130,7 @@ inline ShadedSample crop_and_cut(const Registers& r, const SliceControl& c, int 
 inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int x, int y,
                                  const Neighbourhood& n, const FacePositionTable* faces = nullptr) {
   const Gradient g = r.gradient ? sample_gradient(r, c, n) : Gradient{};
-  return crop_and_cut(r, c, x, y, shade_classified(r, n.centre, g, faces));
+  return crop_and_cut(r, c, x, y, shade_classified(r, n.centre, n.tag, g, faces));
 }
 
 }  // namespace cube4::golden

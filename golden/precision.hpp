@@ -25,6 +25,7 @@ struct Precision {
   int eye_bits = 8;         // signed eye-vector components for the reflection vector
   int cut_bits = 32;        // signed cut-plane distance, saturated
   int acc_guard_bits = 8;   // compositing accumulator: alpha_bits + these fraction bits (VolumePro: 0)
+  int tag_bits = 0;         // voxel tag (bela §III): 0 = no tags, nothing of them simulated
 };
 
 // Every consumer of the widths as a set (the scene's "precision" keys, the
@@ -59,6 +60,8 @@ inline constexpr PrecisionField kPrecisionFields[] = {
     {"eye_bits", &Precision::eye_bits, 4, 16, "P_EYE_BITS", "EyeBits"},
     {"cut_bits", &Precision::cut_bits, 16, 40, "P_CUT_BITS", "CutBits"},
     {"acc_guard_bits", &Precision::acc_guard_bits, 0, 8, "P_ACC_GUARD_BITS", "AccGuardBits"},
+    // bela's four-bit tags fit; voxel_bits + tag_bits <= 16 (scene_io) bounds the classification table.
+    {"tag_bits", &Precision::tag_bits, 0, 8, "P_TAG_BITS", "VoxelTagBits"},
 };
 
 inline constexpr int kPrecisionFieldCount = sizeof kPrecisionFields / sizeof kPrecisionFields[0];

@@ -28,11 +28,14 @@ struct Registers {
   // Ray-offset DDA, dda_frac_bits of fraction, per sample slice.
   int64_t x_start = 0, x_step = 0, y_start = 0, y_step = 0;
   // Tables.
-  std::vector<ClassEntry> classification;  // 2^voxel_bits entries
+  std::vector<ClassEntry> classification;  // 2^(tag_bits + voxel_bits) entries, address {tag, value}
   std::vector<uint16_t> gm_lut;            // 2^magnitude_bits entries, gmlut_bits wide
   std::vector<uint32_t> diffuse_map;       // 6 * map_face_res^2, map_bits wide
   std::vector<uint32_t> specular_map;
   ShadeCoefs coefs;
+  // With tags and shading: the material of each tag, 2^tag_bits entries
+  // (entry 0 = coefs); empty otherwise, and every sample uses coefs.
+  std::vector<ShadeCoefs> tag_coefs;
   Eye eye{0, 0, 0};
   // Mode bits: decided by the scene's effect set.
   bool gradient = false, magnitude = false, shading = false, specular = false;
@@ -50,6 +53,17 @@ struct Registers {
   // (lo) and after (hi) the volume's footprint in u and v, so that polygons
   // beside the volume have rays too. Zero without polygons.
   std::array<int, 2> margin_lo{0, 0}, margin_hi{0, 0};
+
+  const ShadeCoefs& coefs_of(uint32_t tag) const { return tag_coefs.empty() ? coefs : tag_coefs[tag]; }
+  // Values per tag in the classification table (2^voxel_bits when it is whole).
+  size_t class_values() const { return classification.size() >> p.tag_bits; }
+  // Whether value v is visible (α != 0) under some tag: what value-range
+  // empty-space skipping may use without knowing the tags.
+  bool value_visible(size_t v) const {
+    for (size_t t = 0, n = class_values(); t < classification.size(); t += n)
+      if (classification[t + v].a != 0) return true;
+    return false;
+  }
 
   int sample_slices() const { return dim[2] * supersampling; }
   SliceOffset x_offset(int k) const {

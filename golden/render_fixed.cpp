@@ -37,19 +37,20 @@ class Band {
  public:
   Band(const Frame& f, int v0, int v1)
       : f_(f), r_(f.r), nx_(r_.dim[0]), ny_(r_.dim[1]), K_(r_.sample_slices()), reach_(r_.gradient ? 1 : 0),
-        iy_last_(r_.base_origin_y()), v0_(v0), v1_(v1), vox_lo_(nx_, ny_, 1), vox_hi_(nx_, ny_, 1),
-        interp_(nx_, ny_, r_.p.weight_bits), spans_(static_cast<size_t>(ny_)) {}
+        iy_last_(r_.base_origin_y()), v0_(v0), v1_(v1), tagged_(r_.p.tag_bits > 0), vox_lo_(nx_, ny_, 1),
+        vox_hi_(nx_, ny_, 1), interp_(nx_, ny_, r_.p.weight_bits), spans_(static_cast<size_t>(ny_)) {
+    if (tagged_) tag_lo_ = tag_hi_ = tag_current_ = tag_ahead_ = Plane(nx_, ny_, 1);
+  }
 
   void run(const Progress* progress) {
     const Registers& r = r_;
     const uint32_t opaque = static_cast<uint32_t>(max_unsigned(acc_bits(r.p)));
     int32_t first_visible = 0;
-    while (first_visible < static_cast<int32_t>(r.classification.size()) && r.classification[first_visible].a == 0)
-      ++first_visible;
+    while (first_visible < static_cast<int32_t>(r.class_values()) && !r.value_visible(first_visible)) ++first_visible;
     // Sample slices behind, current and ahead of the one being shaded.
     Plane behind(nx_, ny_, 1), current(nx_, ny_, 1), ahead(nx_, ny_, 1);
-    samples_of(0, current);
-    if (r.gradient) samples_of(1, ahead);
+    samples_of(0, current, tag_current_);
+    if (r.gradient) samples_of(1, ahead, tag_ahead_);
     Neighbourhood n;
     for (int k = 0; k < K_; ++k) {
       const SliceControl c = slice_control(r, k);
@@ -69,14 +70,17 @@ class Band {
       // α = 0 or full α_acc), so its gradient and shading are not computed.
       auto shade = [&](int x, int y, const RayAcc& ray, ShadedSample& s) {
         const uint32_t centre = current.at(x, y);
-        if (f_.may_skip && (r.classification[centre].a == 0 || ray.a == opaque)) return false;
+        const uint32_t tag = tagged_ ? tag_current_.at(x, y) : 0;
+        if (f_.may_skip && (classify(r.classification, tag, centre, r.p).a == 0 || ray.a == opaque)) return false;
         if (r.gradient) {
           gather_neighbourhood(behind, current, ahead, c, x, y, n);
         } else {
           n.centre = centre;
         }
+        n.tag = tag;
         s = shade_sample(r, c, x, y, n, f_.faces);
         if (f_.probe) {
+          if (tagged_) f_.probe->tagged(x, y, c, tag);
           f_.probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
           f_.probe->shaded(x, y, c, s);
         }
@@ -86,9 +90,10 @@ class Band {
       if (r.gradient) {
         std::swap(behind, current);
         std::swap(current, ahead);
-        samples_of(k + 2, ahead);
+        std::swap(tag_current_, tag_ahead_);
+        samples_of(k + 2, ahead, tag_ahead_);
       } else if (k + 1 < K_) {
-        samples_of(k + 1, current);
+        samples_of(k + 1, current, tag_current_);
       }
       if (progress && *progress) (*progress)(static_cast<double>(k + 1) / K_);
     }
@@ -114,32 +119,44 @@ class Band {
     if (k0 > k1) return {0, 0};
     return {sample_beams(k0).first, std::min(sample_beams(k1).second + 1, ny_)};
   }
-  void load(int z, Plane& out) {
+  void load(int z, Plane& out, Plane& tags) {
     const Beams b = voxel_beams(z);
     for (int y = b.first; y < b.second; ++y) spans_[static_cast<size_t>(y)] = f_.skip.voxels_needed(z, y);
     load_voxel_slice(f_.access, z, out, b.first, b.second, spans_.data());
+    if (tagged_) load_tag_slice(f_.access, z, tags, b.first, b.second, spans_.data());
   }
-  void samples_of(int k, Plane& out) {
-    if (k < 0 || k >= K_) { out.clear(); return; }
+  // Sample slice k's values into out and, with tags, its tags into tags.
+  void samples_of(int k, Plane& out, Plane& tags) {
+    if (k < 0 || k >= K_) {
+      out.clear();
+      if (tagged_) tags.clear();
+      return;
+    }
     const SliceControl c = slice_control(r_, k);
     if (c.z_voxel != loaded_z_) {
       if (c.z_voxel == loaded_z_ + 1 && loaded_z_ >= 0) {
         std::swap(vox_lo_, vox_hi_);
+        std::swap(tag_lo_, tag_hi_);
       } else {
-        load(c.z_voxel, vox_lo_);
+        load(c.z_voxel, vox_lo_, tag_lo_);
       }
-      load(c.z_voxel + 1, vox_hi_);
+      load(c.z_voxel + 1, vox_hi_, tag_hi_);
       loaded_z_ = c.z_voxel;
     }
     const Beams b = sample_beams(k);
     for (int y = b.first; y < b.second; ++y) spans_[static_cast<size_t>(y)] = f_.skip.samples_needed(k, y);
     interp_.slice(vox_lo_, vox_hi_, c, out, b.first, b.second, spans_.data());
+    if (tagged_) interp_.tags(tag_lo_, tag_hi_, c, tags, b.first, b.second, spans_.data());
   }
 
   const Frame& f_;
   const Registers& r_;
   int nx_, ny_, K_, reach_, iy_last_, v0_, v1_;
+  bool tagged_;
   Plane vox_lo_, vox_hi_;  // voxel slices z_voxel and z_voxel + 1
+  // With tags: the tags of those voxel slices and of the samples of the
+  // slice being shaded and the one ahead (empty planes without tags).
+  Plane tag_lo_, tag_hi_, tag_current_, tag_ahead_;
   SliceInterp interp_;
   std::vector<Span> spans_;
   int loaded_z_ = -1;

@@ -224,7 +224,9 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
           g = {(current.at(x + 1, y) - current.at(x - 1, y)) * gscale,
                (current.at(x, y + 1) - current.at(x, y - 1)) * gscale, (a - b) * S * gscale};
         }
-        const ShadedF sh = shade(v, g);
+        // The nearest voxel's tag, as the interpolation unit picks it (ties up).
+        const int tag = e.tags ? pv.tag_at(x + (ox.frac >= 0.5), y + (oy.frac >= 0.5), zv + (z - zv >= 0.5)) : 0;
+        const ShadedF sh = shade(v, g, tag);
         double alpha = sh.alpha;
         const Vec3& rgb = sh.rgb;
         bool visible = !e.cropping || crop_visible(x, y, zv, crop);

@@ -4,6 +4,7 @@
 // same optical model. No base plane, no shear, no tables: the accuracy
 // reference for both shear-warp renderers.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -215,9 +216,16 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
         }
         const double mag = std::sqrt(grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2]);
         const double gm = e.magnitude ? eval_piecewise(s.gm_lut, std::min(1.0, mag / gmax)) : 1.0;
-        double alpha = correct_alpha(eval_piecewise(s.opacity, v / vmax), opt.step);
+        // A tag is not interpolated: the nearest voxel's (q lies in the box).
+        int tag = 0;
+        if (e.tags) {
+          std::array<int, 3> c{};
+          for (int i = 0; i < 3; ++i) c[i] = std::clamp(static_cast<int>(std::floor(q[i] + 0.5)), 0, vol.dim[i] - 1);
+          tag = vol.tag_at(c[0], c[1], c[2]);
+        }
+        double alpha = correct_alpha(eval_piecewise(s.opacity_of(tag), v / vmax), opt.step);
         if (s.gm.opacity) alpha *= gm;
-        Vec3 rgb = eval_color(s.color, v / vmax);
+        Vec3 rgb = eval_color(s.color_of(tag), v / vmax);
         if (e.shading) {
           double id = 0, is = 0;
           if (mag > 0) {
@@ -232,9 +240,10 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
               is = L.specular({2 * ne * n[0] - eye[0], 2 * ne * n[1] - eye[1], 2 * ne * n[2] - eye[2]});
             }
           }
-          const double fd = s.material.ke + s.material.kd * id * (s.gm.diffuse ? gm : 1.0);
-          const double fs = e.specular ? s.material.ks * is * (s.gm.specular ? gm : 1.0) : 0.0;
-          for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c] * fd + s.material.specular_color[c] * fs, 0.0, 1.0);
+          const Material& m = s.material_of(tag);
+          const double fd = m.ke + m.kd * id * (s.gm.diffuse ? gm : 1.0);
+          const double fs = e.specular ? m.ks * is * (s.gm.specular ? gm : 1.0) : 0.0;
+          for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c] * fd + m.specular_color[c] * fs, 0.0, 1.0);
         }
         bool visible = !e.cropping || object_crop_visible(s.cropping, q);
         if (e.cut_plane) {

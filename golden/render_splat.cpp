@@ -83,8 +83,9 @@ ImageF render_splat(const Volume& vol, const Scene& s, const ViewFactorisation& 
     for (int y = 0; y < ny; ++y)
       for (int x = 0; x < nx; ++x) {
         const double v = pv.at(x, y, z);
+        const int tag = pv.tag_at(x, y, z);  // a splat is one voxel: its own tag
         // Transparent by classification: nothing to shade or spread.
-        if (eval_piecewise(s.opacity, v / vmax) == 0) continue;
+        if (eval_piecewise(s.opacity_of(tag), v / vmax) == 0) continue;
         if (e.cropping && !crop_visible(x, y, z, crop)) continue;
         double fac = 1;
         if (e.cut_plane) {
@@ -95,7 +96,7 @@ ImageF render_splat(const Volume& vol, const Scene& s, const ViewFactorisation& 
         if (e.gradient)
           g = {(pv.at(x + 1, y, z) - pv.at(x - 1, y, z)) * gscale, (pv.at(x, y + 1, z) - pv.at(x, y - 1, z)) * gscale,
                (pv.at(x, y, z + 1) - pv.at(x, y, z - 1)) * gscale};
-        const ShadedF sh = shade(v, g);
+        const ShadedF sh = shade(v, g, tag);
         const double alpha = sh.alpha * fac;
         if (alpha == 0) continue;
         const double X = origin[0] + x * ex[0] + y * ey[0] + z * ez[0];

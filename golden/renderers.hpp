@@ -58,6 +58,9 @@ struct RenderStats {
 struct SampleProbe {
   virtual ~SampleProbe() = default;
   virtual void sample(int x, int y, const SliceControl& c, uint32_t value, const Gradient& g) = 0;
+  // With tags: the sample's tag, just before sample() (samples without a
+  // call have tag 0).
+  virtual void tagged(int /*x*/, int /*y*/, const SliceControl& /*c*/, uint32_t /*tag*/) {}
   // The same sample after classification, shading, cropping and cut plane:
   // what the compositor receives (for compositor testbenches).
   virtual void shaded(int /*x*/, int /*y*/, const SliceControl& /*c*/, const ShadedSample& /*s*/) {}

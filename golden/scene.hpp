@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -120,6 +121,37 @@ struct MeshSpec {
   bool lit = true;      // shaded by the scene's lights (false: flat colour)
 };
 
+// ---- voxel tags (bela §III; docs/scene.md, "tags") ----
+
+// Built-in labelling: a rule gives `tag` to the voxels it selects.
+struct TagRule {
+  enum class Kind { Threshold, Box, Sphere } kind = Kind::Threshold;
+  std::string key;                       // where the scene gives it, for messages: "tags.label[1]"
+  int tag = 0;
+  std::array<double, 2> range{0, 1};     // threshold: voxel value / max value within [lo, hi]
+  std::array<int, 3> lo{0, 0, 0}, hi{0, 0, 0};  // box: inclusive voxel ranges x, y, z
+  Vec3 center{0, 0, 0};                  // sphere: voxel coordinates, distance <= radius
+  double radius = 0;
+};
+
+// A tag's own classification and material; what it does not give is the
+// scene's ("transfer", "material").
+struct TagClass {
+  std::string key;                      // where the scene gives it: "tags.classes[0]"
+  std::optional<std::vector<ColorPoint>> color;
+  std::optional<std::vector<ScalarPoint>> opacity;
+  std::optional<Material> material;     // its exponent must be the scene's (one specular map)
+};
+
+struct TagSource {
+  // Raw file, one unsigned byte per voxel, x fastest, the volume's size
+  // (path as written; relative to the scene's folder when loaded).
+  std::string file;
+  std::vector<TagRule> label;            // applied after the file, in order: a later rule wins
+  std::map<int, TagClass> classes;       // by tag
+  bool given = false;                    // the scene has "tags"
+};
+
 struct Scene {
   std::string file;  // where it was read from ("" = built in)
   VolumeSource volume;
@@ -144,6 +176,27 @@ struct Scene {
   double clock_mhz = 125;
   Precision precision;
   std::vector<MeshSpec> polygons;   // docs/scene.md, "polygons"
+  TagSource tags;                   // used when precision.tag_bits > 0
+
+  // Tags 0 .. tag_count() - 1 exist (one without tags).
+  int tag_count() const { return 1 << precision.tag_bits; }
+  const TagClass* tag_class(int tag) const {
+    const auto it = tags.classes.find(tag);
+    return precision.tag_bits > 0 && it != tags.classes.end() ? &it->second : nullptr;
+  }
+  // The transfer functions and material of samples with tag `tag`.
+  const std::vector<ColorPoint>& color_of(int tag) const {
+    const TagClass* c = tag_class(tag);
+    return c && c->color ? *c->color : color;
+  }
+  const std::vector<ScalarPoint>& opacity_of(int tag) const {
+    const TagClass* c = tag_class(tag);
+    return c && c->opacity ? *c->opacity : opacity;
+  }
+  const Material& material_of(int tag) const {
+    const TagClass* c = tag_class(tag);
+    return c && c->material ? *c->material : material;
+  }
 };
 
 // The effects a scene calls for: decides what is computed and simulated.
@@ -156,6 +209,7 @@ struct EffectSet {
   bool cut_plane = false;
   bool supersampling = false;
   bool polygons = false;       // Cube-5: the Z test and the double composition (golden/polygons.hpp)
+  bool tags = false;           // bela: voxel tags, {tag, value} classification, per-tag material
   Blend blend = Blend::Composite;
   std::vector<std::string> names() const;  // e.g. {"composite", "gradient", "shading", ...}
 };

@@ -404,9 +404,9 @@ void read_file_source(ObjectReader& r, const Node& file, VolumeSource& v) {
 // Only the keys of the chosen synthetic kind are read, so a key of another
 // kind ("radius" on "noise") is reported as unknown.
 void read_synthetic_source(ObjectReader& r, const Node& kind, VolumeSource& v) {
-  v.kind = kind.one_of({"sphere", "field", "noise", "constant", "single_voxel"});
+  v.kind = kind.one_of({"sphere", "spheres", "field", "noise", "constant", "single_voxel"});
   if (auto n = r.get("size")) v.size = n->int3(1, 1024);
-  if (v.kind == "sphere") {
+  if (v.kind == "sphere" || v.kind == "spheres") {
     if (auto n = r.get("radius")) v.radius = n->positive();
     if (auto n = r.get("center")) v.center = n->vec3();
   } else if (v.kind == "field") {
@@ -723,6 +723,78 @@ void read_polygons(const Node& n, Scene& s) {
   for (const Node& m : n.elements(0, kMaxMeshes)) s.polygons.push_back(read_mesh(m));
 }
 
+// ---- voxel tags -----------------------------------------------------------
+
+constexpr size_t kMaxTagRules = 256;
+
+TagRule read_tag_rule(const Node& n) {
+  ObjectReader r(n);
+  TagRule t;
+  t.key = n.path();
+  const auto tag = r.get("tag");
+  if (tag) t.tag = tag->int_in(0, 255);
+  const auto threshold = r.get("threshold"), box = r.get("box"), sphere = r.get("sphere");
+  r.reject_unknown();
+  if (!tag) r.fail_missing("tag", "every rule gives its voxels one");
+  if (!!threshold + !!box + !!sphere != 1)
+    n.fail("should have exactly one of \"threshold\", \"box\", \"sphere\"");
+  if (threshold) {
+    const auto e = threshold->elements(2, 2);
+    t.kind = TagRule::Kind::Threshold;
+    t.range = {e[0].number_in(0, 1), e[1].number_in(0, 1)};
+    if (t.range[1] < t.range[0]) threshold->fail("should be [lo, hi] with lo <= hi");
+  } else if (box) {
+    ObjectReader b(*box);
+    t.kind = TagRule::Kind::Box;
+    const auto lo = b.get("min"), hi = b.get("max");
+    b.reject_unknown();
+    if (!lo) b.fail_missing("min", "a box needs its first voxel");
+    if (!hi) b.fail_missing("max", "a box needs its last voxel");
+    t.lo = lo->int3(0, 1 << 20);
+    t.hi = hi->int3(0, 1 << 20);
+  } else {
+    ObjectReader b(*sphere);
+    t.kind = TagRule::Kind::Sphere;
+    const auto c = b.get("center"), rad = b.get("radius");
+    b.reject_unknown();
+    if (!c) b.fail_missing("center", "a sphere needs one (voxel coordinates)");
+    if (!rad) b.fail_missing("radius", "a sphere needs one (voxels)");
+    t.center = c->vec3();
+    t.radius = rad->positive();
+  }
+  return t;
+}
+
+// A class's material starts as the scene's (read before "tags").
+void read_tag_class(const Node& n, const Material& base, TagSource& tags) {
+  ObjectReader r(n);
+  const auto tag = r.get("tag");
+  TagClass c;
+  c.key = n.path();
+  if (auto t = r.get("color")) {
+    c.color.emplace();
+    for (const auto& row : read_table(*t, 4)) c.color->push_back({row[0], {row[1], row[2], row[3]}});
+  }
+  if (auto t = r.get("opacity")) c.opacity = read_scalar_table(*t);
+  if (auto m = r.get("material")) read_material(*m, c.material.emplace(base));
+  r.reject_unknown();
+  if (!tag) r.fail_missing("tag", "every class is some tag's");
+  const int t = tag->int_in(0, 255);
+  if (tags.classes.count(t)) tag->fail("has a class already (" + tags.classes[t].key + ")");
+  tags.classes[t] = std::move(c);
+}
+
+void read_tags(const Node& n, const Material& base, TagSource& tags) {
+  ObjectReader r(n);
+  tags.given = true;
+  if (auto f = r.get("file")) tags.file = f->string();
+  if (auto l = r.get("label"))
+    for (const Node& e : l->elements(1, kMaxTagRules)) tags.label.push_back(read_tag_rule(e));
+  if (auto c = r.get("classes"))
+    for (const Node& e : c->elements(1, 256)) read_tag_class(e, base, tags);
+  r.reject_unknown();
+}
+
 // ---- precision ------------------------------------------------------------
 
 void read_precision(const Node& n, Precision& p) {
@@ -783,6 +855,28 @@ void check_volume(const Scene& s) {
                  "lies outside \"volume.size\" = " + show_array(v.size));
 }
 
+// Tags fit precision.tag_bits; the classification table's address
+// {tag, value} has at most 16 bits (bela: 16 bits per voxel and tag).
+void check_tags(const Scene& s) {
+  const Precision& p = s.precision;
+  const TagSource& t = s.tags;
+  if (p.tag_bits > 0)
+    check_int(s, "precision.tag_bits", p.tag_bits, 0, 16 - p.voxel_bits,
+              " (\"precision.voxel_bits\" + tag_bits address the classification table, at most 16 bits)");
+  if (t.given && p.tag_bits == 0)
+    fail_value(s.file, "tags", "{...}", "needs \"precision.tag_bits\" >= 1 (it is 0: no tags)");
+  const int max = s.tag_count() - 1;
+  const std::string why = " (\"precision.tag_bits\" = " + std::to_string(p.tag_bits) + ")";
+  for (const TagRule& r : t.label) check_int(s, r.key + ".tag", r.tag, 0, max, why);
+  for (const auto& [tag, c] : t.classes) {
+    check_int(s, c.key + ".tag", tag, 0, max, why);
+    if (c.material && c.material->exponent != s.material.exponent)
+      fail_value(s.file, c.key + ".material.exponent", fmt(c.material->exponent),
+                 "differs from \"material.exponent\" = " + fmt(s.material.exponent) +
+                     " (one specular map serves every tag)");
+  }
+}
+
 void check_cut_plane(const Scene& s) {
   if (s.cut.enabled && s.cut.dmax < s.cut.dmin)
     fail_value(s.file, "cut_plane.dmax", fmt(s.cut.dmax),
@@ -827,6 +921,7 @@ Scene parse_scene(const std::string& json_text, const std::string& file_name) {
   }
   if (auto n = r.get("precision")) read_precision(*n, s.precision);
   if (auto n = r.get("polygons")) read_polygons(*n, s);
+  if (auto n = r.get("tags")) read_tags(*n, s.material, s.tags);
   // Unknown keys first: a misspelt "volume" should be reported as such.
   r.reject_unknown();
   if (!volume) r.fail_missing("volume", "every scene needs one (\"file\" or \"synthetic\")");
@@ -868,6 +963,7 @@ void finish_scene(Scene& s) {
   check_view(s);
   check_volume(s);
   check_cut_plane(s);
+  check_tags(s);
 }
 
 }  // namespace cube4::golden

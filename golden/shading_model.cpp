@@ -129,15 +129,15 @@ SampleShading::SampleShading(const Scene& s, const ViewFactorisation& f, double 
     : s_(s), f_(f), e_(effects_of(s)), lighting_(lighting_of(s, f)), vmax_(vmax),
       gmax_(max_gradient_magnitude(s.precision)), ratio_(ratio) {}
 
-ShadedF SampleShading::operator()(double v, const Vec3& g) const {
+ShadedF SampleShading::operator()(double v, const Vec3& g, int tag) const {
   const Scene& s = s_;
   const double mag = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   const double gm = e_.magnitude ? eval_piecewise(s.gm_lut, std::min(1.0, mag / gmax_)) : 1.0;
   ShadedF out;
-  out.alpha = correct_alpha(eval_piecewise(s.opacity, v / vmax_), ratio_);
+  out.alpha = correct_alpha(eval_piecewise(s.opacity_of(tag), v / vmax_), ratio_);
   if (s.gm.opacity) out.alpha *= gm;
   Vec3& rgb = out.rgb;
-  rgb = eval_color(s.color, v / vmax_);
+  rgb = eval_color(s.color_of(tag), v / vmax_);
   if (!e_.shading) return out;
   double id = 0, is = 0;
   if (mag > 0) {
@@ -149,9 +149,10 @@ ShadedF SampleShading::operator()(double v, const Vec3& g) const {
           object_direction(f_, {2 * ne * g[0] - nn * E[0], 2 * ne * g[1] - nn * E[1], 2 * ne * g[2] - nn * E[2]}));
     }
   }
-  const double fd = s.material.ke + s.material.kd * id * (s.gm.diffuse ? gm : 1.0);
-  const double fs = e_.specular ? s.material.ks * is * (s.gm.specular ? gm : 1.0) : 0.0;
-  for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c] * fd + s.material.specular_color[c] * fs, 0.0, 1.0);
+  const Material& m = s.material_of(tag);
+  const double fd = m.ke + m.kd * id * (s.gm.diffuse ? gm : 1.0);
+  const double fs = e_.specular ? m.ks * is * (s.gm.specular ? gm : 1.0) : 0.0;
+  for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c] * fd + m.specular_color[c] * fs, 0.0, 1.0);
   return out;
 }
 

@@ -68,7 +68,8 @@ class SampleShading {
   SampleShading(const Scene& s, const ViewFactorisation& f, double vmax, double ratio);
   // v: the sample's value; g: its gradient in permuted voxel space, scaled
   // as the gradient unit scales it (zero when the scene needs none).
-  ShadedF operator()(double v, const Vec3& g) const;
+  // tag: the sample's tag, choosing its transfer functions and material.
+  ShadedF operator()(double v, const Vec3& g, int tag = 0) const;
 
  private:
   const Scene& s_;

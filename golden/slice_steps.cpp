@@ -16,6 +16,11 @@ void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out, int y0, int y
     if (!spans[y].empty()) pv.load_beam(y, z, out.row(y), spans[y].begin, spans[y].end);
 }
 
+void load_tag_slice(const PermutedVolume& pv, int z, Plane& out, int y0, int y1, const Span* spans) {
+  for (int y = y0; y < y1; ++y)
+    if (!spans[y].empty()) pv.load_tag_beam(y, z, out.row(y), spans[y].begin, spans[y].end);
+}
+
 SliceInterp::SliceInterp(int nx, int ny, int weight_bits) : nx_(nx), ny_(ny), w_(weight_bits),
   tx_(static_cast<size_t>(nx) * (ny + 1)), ty_lo_(static_cast<size_t>(nx) * ny), ty_hi_(ty_lo_.size()),
   whole_(static_cast<size_t>(ny), Span{0, nx}) {}
@@ -69,6 +74,18 @@ void SliceInterp::slice(const Plane& lo, const Plane& hi, const SliceControl& c,
     } else {
       for (int x = x0; x < x1; ++x) o[x] = lerp_t<int32_t>(a[x], b[x], wz, w);
     }
+  }
+}
+
+void SliceInterp::tags(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out, int y0, int y1,
+                       const Span* spans) const {
+  // One corner serves the whole slice: the weights are the slice's.
+  const int corner = nearest_corner(c.wx, c.wy, c.wz, w_);
+  const Plane& v = corner & 4 ? hi : lo;
+  const int ux = corner & 1, uy = corner >> 1 & 1;
+  for (int y = y0; y < y1; ++y) {
+    const int32_t* a = v.row(y + uy) + ux;
+    std::copy(a + spans[y].begin, a + std::max(spans[y].begin, spans[y].end), out.row(y) + spans[y].begin);
   }
 }
 

@@ -36,6 +36,8 @@ void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out);
 // Beams y0 .. y1-1 of voxel slice z, beam y only over spans[y] (the rest of
 // the plane keeps what it held).
 void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out, int y0, int y1, const Span* spans);
+// The same voxels' tags.
+void load_tag_slice(const PermutedVolume& pv, int z, Plane& out, int y0, int y1, const Span* spans);
 
 // Interpolation unit over a whole sample slice: trilinear() for every
 // sample, computed stage by stage across the slice (x lerps of each voxel
@@ -52,6 +54,10 @@ class SliceInterp {
   void slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out);
   void slice(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out, int y0, int y1,
              const Span* spans);
+  // The samples' tags from the voxels' tags lo, hi (same ranges): each the
+  // tag of its nearest voxel, sample_tag() for every sample (tested).
+  void tags(const Plane& lo, const Plane& hi, const SliceControl& c, Plane& out, int y0, int y1,
+            const Span* spans) const;
 
  private:
   void bilinear(const Plane& v, int32_t wx, int32_t wy, std::vector<int32_t>& out, int y0, int y1,

@@ -85,10 +85,15 @@ double marschner_lobb(double x, double y, double z) {
   return clamp01((1 - std::sin(kPi * z / 2) + alpha * (1 + rho_r)) / (2 * (1 + alpha)));
 }
 
-Volume sphere(const VolumeSource& src, int bits) {
+// The radius asked for, or `fraction` of the smallest size when none is.
+double radius_of(const VolumeSource& src, double fraction) {
   if (!(src.radius >= 0) || !std::isfinite(src.radius))
     throw InputError("volume.radius: " + num(src.radius) + " must be >= 0 (0 = default)");
-  const double r = src.radius > 0 ? src.radius : 3.0 * smallest(src.size) / 8.0;
+  return src.radius > 0 ? src.radius : fraction * smallest(src.size);
+}
+
+Volume sphere(const VolumeSource& src, int bits) {
+  const double r = radius_of(src, 3.0 / 8.0);
   const Vec3 c = centre_of(src);
   Volume v;
   // Volume-sampled (Wang & Kaufman): a ramp two voxels wide across the surface
@@ -97,6 +102,21 @@ Volume sphere(const VolumeSource& src, int bits) {
                   [&](int x, int y, int z) { return clamp01(0.5 + (r - dist(x, y, z, c)) / 2); });
   v.source = "sphere " + dims_text(src.size) + " r=" + num(r);
   if (src.center) v.source += " center=(" + num(c[0]) + "," + num(c[1]) + "," + num(c[2]) + ")";
+  return v;
+}
+
+// Two spheres of radius r (default 1/4 of the smallest size) that touch at
+// the centre, their centres at c ± (r, 0, 0): the tagged scene's volume
+// (scenes/tagged_spheres.json), one value, told apart only by tags.
+Volume spheres(const VolumeSource& src, int bits) {
+  const double r = radius_of(src, 1.0 / 4.0);
+  const Vec3 c = centre_of(src);
+  const Vec3 a{c[0] - r, c[1], c[2]}, b{c[0] + r, c[1], c[2]};
+  Volume v;
+  v.data = sample(src.size, bits, [&](int x, int y, int z) {
+    return clamp01(0.5 + (r - std::min(dist(x, y, z, a), dist(x, y, z, b))) / 2);
+  });
+  v.source = "spheres " + dims_text(src.size) + " r=" + num(r);
   return v;
 }
 
@@ -177,6 +197,8 @@ Volume make_synthetic(const VolumeSource& src, int voxel_bits, bool header_only)
     v.source = src.kind + " " + dims_text(src.size);
   } else if (src.kind == "sphere")
     v = sphere(src, voxel_bits);
+  else if (src.kind == "spheres")
+    v = spheres(src, voxel_bits);
   else if (src.kind == "field")
     v = field(src, voxel_bits);
   else if (src.kind == "noise")
@@ -187,7 +209,7 @@ Volume make_synthetic(const VolumeSource& src, int voxel_bits, bool header_only)
     v = single_voxel(src, voxel_bits);
   else
     throw InputError("volume.kind: unknown volume kind '" + src.kind +
-                     "' (synthetic kinds are sphere, field, noise, constant, single_voxel)");
+                     "' (synthetic kinds are sphere, spheres, field, noise, constant, single_voxel)");
   v.dim = src.size;
   v.spacing = {1, 1, 1};
   v.bits = voxel_bits;

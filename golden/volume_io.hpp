@@ -21,6 +21,12 @@ Volume load_raw(const VolumeSource& src, const std::string& path, int voxel_bits
 Volume load_nifti(const std::string& path, const Quantisation& q, int voxel_bits, bool header_only = false);
 Volume make_synthetic(const VolumeSource& src, int voxel_bits, bool header_only = false);
 
+// The volume's tags from the scene's "tags" (file, then labelling rules in
+// order): none (v.tags empty, every tag 0) when precision.tag_bits is 0 or
+// the scene gives no source. A tag above 2^tag_bits - 1 is an InputError
+// naming the file, the voxel and the tag.
+void load_tags(const Scene& s, Volume& v, const std::string& scene_dir);
+
 // Where Debian's libvolpack1-dev puts the MRI head (the default scene's volume).
 std::string default_brainsmall_path();
 

@@ -9,6 +9,13 @@
 // (x + (i & 1), y + (i >> 1 & 1), z + (i >> 2)); each lerp rounds half up
 // back to VoxelBits (cube4_lerp). Weights are in [0, 2^WeightBits].
 //
+// Voxel tags (bela §III; VoxelTagBits > 0): tag i of vtags_i is voxel i's;
+// vtag_o is the sample's, that of its nearest voxel, golden sample_tag():
+// per axis the upper voxel when the weight is at least half,
+// w >= 2^(WeightBits-1), so a tie goes up. Tags are labels: selected, not
+// interpolated, and delayed to leave with their sample. With
+// VoxelTagBits = 0 there is no tag hardware; vtag_o is 0.
+//
 // Latency: 3 cycles, fully pipelined (one new input set per clock):
 //   stage 1 registers the four x lerps, stage 2 the two y lerps, stage 3
 //   the z lerp (sample_o is driven by the stage-3 register).
@@ -20,11 +27,14 @@
 //   VoxelBits  - voxel and sample width (golden Precision::voxel_bits, 12)
 //   WeightBits - weight fraction bits; weight ports are WeightBits+1 wide
 //                (Precision::weight_bits, 8)
+//   VoxelTagBits - voxel tag width (Precision::tag_bits, 0: none); the tag
+//                ports are at least one bit wide
 `include "cube4_pkg.sv"
 
 module cube4_interp #(
   parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
-  parameter int unsigned WeightBits = cube4_pkg::WeightBits
+  parameter int unsigned WeightBits = cube4_pkg::WeightBits,
+  parameter int unsigned VoxelTagBits = cube4_pkg::VoxelTagBits
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -33,8 +43,10 @@ module cube4_interp #(
   input  logic [WeightBits:0]    wx_i,
   input  logic [WeightBits:0]    wy_i,
   input  logic [WeightBits:0]    wz_i,
+  input  logic [8*(VoxelTagBits > 0 ? VoxelTagBits : 1)-1:0] vtags_i,
   output logic                   valid_o,
-  output logic [VoxelBits-1:0]   sample_o
+  output logic [VoxelBits-1:0]   sample_o,
+  output logic [(VoxelTagBits > 0 ? VoxelTagBits : 1)-1:0] vtag_o
 );
 
   localparam int unsigned Latency = 3;
@@ -113,5 +125,22 @@ module cube4_interp #(
     z_q <= z_d;
   end
   assign sample_o = z_q;
+
+  // The nearest voxel's tag, chosen as the voxels enter and delayed with
+  // the lerps (golden sample_tag()).
+  if (VoxelTagBits > 0) begin : g_vtag
+    localparam logic [WeightBits:0] Half = (WeightBits + 1)'(1) << (WeightBits - 1);
+    logic [2:0] corner;
+    logic [Latency*VoxelTagBits-1:0] vtag_q;
+    assign corner = {wz_i >= Half, wy_i >= Half, wx_i >= Half};
+    always_ff @(posedge clk_i) begin
+      vtag_q <= {vtag_q[(Latency-1)*VoxelTagBits-1:0], vtags_i[corner*VoxelTagBits +: VoxelTagBits]};
+    end
+    assign vtag_o = vtag_q[Latency*VoxelTagBits-1 -: VoxelTagBits];
+  end else begin : g_no_vtag
+    logic unused_vtags;
+    assign unused_vtags = ^vtags_i;
+    assign vtag_o = '0;
+  end
 
 endmodule

@@ -7,7 +7,8 @@
 // next partial beam (the wrap; zero after a beam's last partial beam). The
 // stream control (valid, flags, weights, tag) is common and fans out to every
 // pipeline, where it travels with the data; voxel_i carries one voxel per
-// pipeline. Each pipeline emits the samples of its own columns:
+// pipeline (the memory word {voxel tag, value} with voxel tags). Each
+// pipeline emits the samples of its own columns:
 // sample_o[k] = S(j*p + k, y) of the pass, with its own valid and flags (all
 // pipelines run in lock step). Stream format, latency (4 cycles without
 // stalls; last sample 4 cycles after the last input) and preconditions: see
@@ -20,10 +21,12 @@
 // Parameters:
 //   NumPipes              - p, pipelines (>= 1)
 //   VoxelBits, WeightBits - widths (Precision defaults 12, 8)
-//   TagBits               - tag travelling with the data
+//   TagBits               - stream-control tag travelling with the data
+//   VoxelTagBits          - voxel tag width (bela §III; 0: none, vtag_o 0)
 //   MaxDim                - largest nx and ny the delay storage holds
 //   BeamDepth, SliceDepth - (derived) per-pipeline beam delay and slice store
 //                           entries: ceil(MaxDim / p) and MaxDim * that
+//   WordBits, VTagPortBits - (derived) voxel word and vtag_o lane widths
 `include "cube4_pkg.sv"
 
 module cube4_interp_ring #(
@@ -32,33 +35,38 @@ module cube4_interp_ring #(
   parameter int unsigned  WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned  TagBits    = 8,
   parameter int unsigned  MaxDim     = cube4_pkg::MaxDim,
+  parameter int unsigned  VoxelTagBits = cube4_pkg::VoxelTagBits,
   localparam int unsigned BeamDepth  = (MaxDim + NumPipes - 1) / NumPipes,
-  localparam int unsigned SliceDepth = MaxDim * BeamDepth
+  localparam int unsigned SliceDepth = MaxDim * BeamDepth,
+  localparam int unsigned WordBits     = VoxelBits + VoxelTagBits,
+  localparam int unsigned VTagPortBits = VoxelTagBits > 0 ? VoxelTagBits : 1
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
-  // Voxel stream: common control, one voxel per pipeline ([k*VoxelBits +:]).
+  // Voxel stream: common control, one voxel word per pipeline ([k*WordBits +:]).
   input  logic                          valid_i,
   input  logic                          beam_start_i,
   input  logic                          beam_end_i,
   input  logic                          slice_start_i,
   input  logic                          slice_end_i,
-  input  logic [NumPipes*VoxelBits-1:0] voxel_i,
+  input  logic [NumPipes*WordBits-1:0]  voxel_i,
   input  logic [WeightBits:0]           wx_i,
   input  logic [WeightBits:0]           wy_i,
   input  logic [WeightBits:0]           wz_i,
   input  logic [TagBits-1:0]            tag_i,
-  // Sample streams, pipeline k at bit k / [k*VoxelBits +:] / [k*TagBits +:].
+  // Sample streams, pipeline k at bit k / [k*VoxelBits +:] /
+  // [k*VTagPortBits +:] / [k*TagBits +:].
   output logic [NumPipes-1:0]           valid_o,
   output logic [NumPipes-1:0]           beam_start_o,
   output logic [NumPipes-1:0]           beam_end_o,
   output logic [NumPipes-1:0]           slice_start_o,
   output logic [NumPipes-1:0]           slice_end_o,
   output logic [NumPipes*VoxelBits-1:0] sample_o,
+  output logic [NumPipes*VTagPortBits-1:0] vtag_o,
   output logic [NumPipes*TagBits-1:0]   tag_o
 );
 
-  localparam int unsigned LinkBits = 4 * VoxelBits;
+  localparam int unsigned LinkBits = 4 * WordBits;
 
   // Links as packed vectors (yosys 0.23: no unpacked wire arrays).
   logic [NumPipes*LinkBits-1:0] link, link_now;
@@ -79,7 +87,8 @@ module cube4_interp_ring #(
       .TagBits   (TagBits),
       .BeamDepth (BeamDepth),
       .SliceDepth(SliceDepth),
-      .WrapIn    (Last)
+      .WrapIn    (Last),
+      .VoxelTagBits(VoxelTagBits)
     ) u_unit (
       .clk_i        (clk_i),
       .rst_ni       (rst_ni),
@@ -88,7 +97,7 @@ module cube4_interp_ring #(
       .beam_end_i   (beam_end_i),
       .slice_start_i(slice_start_i),
       .slice_end_i  (slice_end_i),
-      .voxel_i      (voxel_i[k*VoxelBits +: VoxelBits]),
+      .voxel_i      (voxel_i[k*WordBits +: WordBits]),
       .wx_i         (wx_i),
       .wy_i         (wy_i),
       .wz_i         (wz_i),
@@ -102,6 +111,7 @@ module cube4_interp_ring #(
       .slice_start_o(slice_start_o[k]),
       .slice_end_o  (slice_end_o[k]),
       .sample_o     (sample_o[k*VoxelBits +: VoxelBits]),
+      .vtag_o       (vtag_o[k*VTagPortBits +: VTagPortBits]),
       .tag_o        (tag_o[k*TagBits +: TagBits])
     );
   end

@@ -52,12 +52,19 @@
 //
 // Parameters:
 //   VoxelBits, WeightBits - as cube4_interp (Precision defaults 12, 8)
-//   TagBits               - width of the tag that travels with the data
+//   TagBits               - width of the stream-control tag that travels
+//                           with the data (not the voxel tags)
+//   VoxelTagBits          - voxel tag width (bela §III; 0: none): voxel_i is
+//                           the memory word {tag, value}, stored and linked
+//                           whole; vtag_o is each sample's nearest voxel's
+//                           tag (cube4_interp), 0 without tags
 //   BeamDepth             - beam delay entries: max partial beams per beam
 //   SliceDepth            - slice store entries: max ny * partial beams
 //   WrapIn                - 1 for pipeline p-1: link_i is pipeline 0's
 //                           link_now_o (masked to zero at a beam's end)
-//   LinkBits              - (derived) width of a link: four voxels,
+//   WordBits              - (derived) voxel word width, VoxelBits + VoxelTagBits
+//   VTagPortBits          - (derived) vtag_o width, at least one bit
+//   LinkBits              - (derived) width of a link: four voxel words,
 //                           [0] front y, [1] front y+1, [2] back y, [3] back y+1
 `include "cube4_pkg.sv"
 
@@ -68,7 +75,10 @@ module cube4_interp_unit #(
   parameter int unsigned  BeamDepth  = 64,
   parameter int unsigned  SliceDepth = 16384,
   parameter bit           WrapIn     = 1'b0,
-  localparam int unsigned LinkBits   = 4 * VoxelBits
+  parameter int unsigned  VoxelTagBits = cube4_pkg::VoxelTagBits,
+  localparam int unsigned WordBits     = VoxelBits + VoxelTagBits,
+  localparam int unsigned VTagPortBits = VoxelTagBits > 0 ? VoxelTagBits : 1,
+  localparam int unsigned LinkBits     = 4 * WordBits
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -78,7 +88,7 @@ module cube4_interp_unit #(
   input  logic                  beam_end_i,
   input  logic                  slice_start_i,
   input  logic                  slice_end_i,
-  input  logic [VoxelBits-1:0]  voxel_i,
+  input  logic [WordBits-1:0]   voxel_i,
   input  logic [WeightBits:0]   wx_i,
   input  logic [WeightBits:0]   wy_i,
   input  logic [WeightBits:0]   wz_i,
@@ -94,10 +104,14 @@ module cube4_interp_unit #(
   output logic                  slice_start_o,
   output logic                  slice_end_o,
   output logic [VoxelBits-1:0]  sample_o,
+  output logic [VTagPortBits-1:0] vtag_o,
   output logic [TagBits-1:0]    tag_o
 );
 
-  localparam int unsigned V             = VoxelBits;
+  // Storage and links hold whole voxel words {tag, value}: a tag moves
+  // exactly as its value does, so the tag path needs no control of its own.
+  localparam int unsigned V             = WordBits;
+  localparam int unsigned T             = VoxelTagBits;
   // Latency of cube4_interp (its header): the flags and the tag travel
   // beside it in a shift register of this length.
   localparam int unsigned TriLatency    = 3;
@@ -201,21 +215,33 @@ module cube4_interp_unit #(
   // -------------------------------------------------------------------------
   // Trilinear interpolation of the eight voxels: this column gives the even
   // voxels (x), the neighbour's the odd ones (x+1).
+  // Each word splits into its value (low VoxelBits) and tag (above).
   logic [LinkBits-1:0]    nb;
-  logic [8*V-1:0]         voxels;
+  logic [8*V-1:0]         words;
+  logic [8*VoxelBits-1:0] voxels;
+  logic [8*VTagPortBits-1:0] vtags;
   logic                   tri_valid;
 
   assign nb = (WrapIn && beam_end_q) ? '0 : link_i;
   for (genvar l = 0; l < 4; l++) begin : g_voxels
-    assign voxels[(2*l)*V +: V]   = col_q[l*V +: V];
-    assign voxels[(2*l+1)*V +: V] = nb[l*V +: V];
+    assign words[(2*l)*V +: V]   = col_q[l*V +: V];
+    assign words[(2*l+1)*V +: V] = nb[l*V +: V];
+  end
+  for (genvar i = 0; i < 8; i++) begin : g_split
+    assign voxels[i*VoxelBits +: VoxelBits] = words[i*V +: VoxelBits];
+    if (T > 0) begin : g_tag
+      assign vtags[i*VTagPortBits +: VTagPortBits] = words[i*V + VoxelBits +: VTagPortBits];
+    end else begin : g_no_tag
+      assign vtags[i*VTagPortBits +: VTagPortBits] = '0;
+    end
   end
   // Beam 0 only fills the beam delay: no samples.
   assign tri_valid = fire && !slice_start_q;
 
   cube4_interp #(
-    .VoxelBits (VoxelBits),
-    .WeightBits(WeightBits)
+    .VoxelBits   (VoxelBits),
+    .WeightBits  (WeightBits),
+    .VoxelTagBits(VoxelTagBits)
   ) u_trilinear (
     .clk_i   (clk_i),
     .rst_ni  (rst_ni),
@@ -224,8 +250,10 @@ module cube4_interp_unit #(
     .wx_i    (wx_q),
     .wy_i    (wy_q),
     .wz_i    (wz_q),
+    .vtags_i (vtags),
     .valid_o (valid_o),
-    .sample_o(sample_o)
+    .sample_o(sample_o),
+    .vtag_o  (vtag_o)
   );
 
   // Flags and tag beside the trilinear pipeline (data: not reset). Packed:

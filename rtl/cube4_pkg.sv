@@ -48,6 +48,7 @@ package cube4_pkg;
   localparam int unsigned EyeBits        /*verilator public*/ = 8;
   localparam int unsigned CutBits        /*verilator public*/ = 32;
   localparam int unsigned AccGuardBits   /*verilator public*/ = 8;
+  localparam int unsigned VoxelTagBits   /*verilator public*/ = 0;    // bela's voxel tags: none
 
   // Hardware choices without a golden counterpart (docs/registers.md gives
   // the register widths they set).

@@ -38,7 +38,17 @@
 // (cube_coord divider); SideBits (side_i travels to side_o with the sample,
 // Latency cycles, for the system's per-sample position and tag);
 // HasShading (0: no shading hardware, for machines and scenes without it;
-// shading_i is then ignored and the unit equals golden with shading off).
+// shading_i is then ignored and the unit equals golden with shading off);
+// VoxelTagBits (golden tag_bits; 0: no tag hardware).
+//
+// Voxel tags (bela §III, VoxelTagBits > 0): vtag_i, the sample's tag, travels
+// with it to the classifier, which reads its table at {tag, sample}
+// (golden class_address); the tag leaves the classifier with the colour and
+// reads the tag's material, {ke, kd, ks, spec r, g, b} (ke in the top bits),
+// from a RAM of 2^VoxelTagBits entries with its own host write port
+// (golden Registers::coefs_of(tag), the MATERIAL window). The material
+// replaces ke_i .. spec_blue_i, each coefficient timed to the Phong stage
+// that uses it. Without tags the mat_* and vtag_i ports are unused.
 `include "cube4_pkg.sv"
 
 module cube4_shade #(
@@ -59,7 +69,8 @@ module cube4_shade #(
   parameter int unsigned SideBits        = 1,
   // 0: no reflectance maps, reflection or Phong hardware: the colour is the
   // classified colour (golden with shading off), same latency.
-  parameter bit          HasShading      = 1'b1
+  parameter bit          HasShading      = 1'b1,
+  parameter int unsigned VoxelTagBits    = cube4_pkg::VoxelTagBits
 ) (
   input  logic                                   clk_i,
   input  logic                                   rst_ni,
@@ -83,7 +94,7 @@ module cube4_shade #(
   // Host write ports: classification ({r, g, b, a}), GmLUT, and the
   // diffuse and specular maps (map_index() addresses).
   input  logic                                   class_we_i,
-  input  logic [VoxelBits-1:0]                   class_waddr_i,
+  input  logic [VoxelTagBits+VoxelBits-1:0]      class_waddr_i,
   input  logic [3*ColorBits+AlphaBits-1:0]       class_wdata_i,
   input  logic                                   gmlut_we_i,
   input  logic [MagnitudeBits-1:0]               gmlut_waddr_i,
@@ -94,6 +105,10 @@ module cube4_shade #(
   input  logic                                   smap_we_i,
   input  logic [$clog2(6*MapFaceRes*MapFaceRes)-1:0] smap_waddr_i,
   input  logic [MapBits-1:0]                     smap_wdata_i,
+  // Host write port: each tag's material (with tags only).
+  input  logic                                   mat_we_i,
+  input  logic [(VoxelTagBits > 0 ? VoxelTagBits : 1)-1:0] mat_waddr_i,
+  input  logic [3*CoefBits+3*AlphaBits-1:0]      mat_wdata_i,
   // Sample stream.
   input  logic                                   valid_i,
   input  logic [VoxelBits-1:0]                   sample_i,
@@ -101,6 +116,7 @@ module cube4_shade #(
   input  logic signed [GradientBits-1:0]         grad_y_i,
   input  logic signed [GradientBits-1:0]         grad_z_i,
   input  logic [MagnitudeBits-1:0]               grad_mag_i,
+  input  logic [(VoxelTagBits > 0 ? VoxelTagBits : 1)-1:0] vtag_i,
   output logic                                   valid_o,
   output logic [AlphaBits-1:0]                   red_o,
   output logic [AlphaBits-1:0]                   green_o,
@@ -123,6 +139,7 @@ module cube4_shade #(
   localparam int unsigned ClassDelay = PhongIn - LatClass;
   localparam int unsigned Latency    = PhongIn + LatPhong;
   localparam int unsigned A          = AlphaBits;
+  localparam int unsigned VT         = VoxelTagBits > 0 ? VoxelTagBits : 1;
 
   /////////////////////////////////////////////
   // Classification, timed to meet Id and Is //
@@ -159,8 +176,26 @@ module cube4_shade #(
 
   logic         class_valid;
   logic [A-1:0] class_red, class_green, class_blue, class_alpha, gm;
+  logic [VT-1:0] class_vtag_in, class_vtag;
+
+  // The tag meets the sample at the classifier's tap.
+  if (VoxelTagBits > 0) begin : g_vtag_delay
+    logic [ClassDelay*VT-1:0] vtag_delay_q;
+    always_ff @(posedge clk_i) begin : vtag_delay
+      vtag_delay_q[0 +: VT] <= vtag_i;
+      for (int unsigned k = 1; k < ClassDelay; k++) begin
+        vtag_delay_q[k*VT +: VT] <= vtag_delay_q[(k-1)*VT +: VT];
+      end
+    end
+    assign class_vtag_in = vtag_delay_q[(ClassDelay-1)*VT +: VT];
+  end else begin : g_no_vtag_delay
+    logic unused_vtag_in;
+    assign unused_vtag_in = ^vtag_i;
+    assign class_vtag_in = '0;
+  end
 
   cube4_shade_classify #(
+    .VoxelTagBits  (VoxelTagBits),
     .VoxelBits     (VoxelBits),
     .MagnitudeBits (MagnitudeBits),
     .ColorBits     (ColorBits),
@@ -180,12 +215,14 @@ module cube4_shade #(
     .valid_i    (class_valid_delay_q[ClassDelay-1]),
     .sample_i   (sample_delay_q[(ClassDelay-1)*VoxelBits +: VoxelBits]),
     .grad_mag_i (mag_delay_q[(ClassDelay-1)*MagnitudeBits +: MagnitudeBits]),
+    .vtag_i     (class_vtag_in),
     .valid_o    (class_valid),
     .red_o      (class_red),
     .green_o    (class_green),
     .blue_o     (class_blue),
     .alpha_o    (class_alpha),
-    .gm_o       (gm)
+    .gm_o       (gm),
+    .vtag_o     (class_vtag)
   );
 
   //////////////////////////////////////////////////////
@@ -339,10 +376,39 @@ module cube4_shade #(
     // Modes as coefficients (see the header): shading off = identity.
     localparam logic [CoefBits-1:0] CoefOne = CoefBits'(64'd1 << CoefFracBits);
 
+    // The sample's material: the frame registers, or with tags its tag's,
+    // read as the sample enters Phong (class_vtag comes with the colour):
+    // ke, kd, ks for Phong's stage 2, the specular colour a cycle later for
+    // its stage 3.
+    logic [CoefBits-1:0] ke_sel, kd_sel, ks_sel;
+    logic [A-1:0]        spec_red_sel, spec_green_sel, spec_blue_sel;
+    if (VoxelTagBits > 0) begin : g_material
+      localparam int unsigned MatBits = 3 * CoefBits + 3 * A;
+      logic [MatBits-1:0] mat_mem [2**VoxelTagBits];
+      logic [MatBits-1:0] mat_q;
+      logic [3*A-1:0]     spec_q;
+      always_ff @(posedge clk_i) begin : mat_write
+        if (mat_we_i) mat_mem[mat_waddr_i] <= mat_wdata_i;
+      end
+      always_ff @(posedge clk_i) begin : mat_read
+        mat_q  <= mat_mem[class_vtag];
+        spec_q <= mat_q[3*A-1:0];
+      end
+      assign {ke_sel, kd_sel, ks_sel} = mat_q[MatBits-1 -: 3*CoefBits];
+      assign {spec_red_sel, spec_green_sel, spec_blue_sel} = spec_q;
+      logic unused_frame_coefs;
+      assign unused_frame_coefs = ^{ke_i, kd_i, ks_i, spec_red_i, spec_green_i, spec_blue_i};
+    end else begin : g_frame_material
+      assign {ke_sel, kd_sel, ks_sel} = {ke_i, kd_i, ks_i};
+      assign {spec_red_sel, spec_green_sel, spec_blue_sel} = {spec_red_i, spec_green_i, spec_blue_i};
+      logic unused_material;
+      assign unused_material = ^{mat_we_i, mat_waddr_i, mat_wdata_i, class_vtag};
+    end
+
     logic [CoefBits-1:0] ke_eff, kd_eff, ks_eff;
-    assign ke_eff = shading_i ? ke_i : CoefOne;
-    assign kd_eff = shading_i ? kd_i : '0;
-    assign ks_eff = (shading_i && specular_i) ? ks_i : '0;
+    assign ke_eff = shading_i ? ke_sel : CoefOne;
+    assign kd_eff = shading_i ? kd_sel : '0;
+    assign ks_eff = (shading_i && specular_i) ? ks_sel : '0;
 
     logic [A-1:0] gd, gs;
     assign gd = gm_diffuse_i ? gm : {A{1'b1}};
@@ -360,9 +426,9 @@ module cube4_shade #(
       .ke_i         (ke_eff),
       .kd_i         (kd_eff),
       .ks_i         (ks_eff),
-      .spec_red_i,
-      .spec_green_i,
-      .spec_blue_i,
+      .spec_red_i   (spec_red_sel),
+      .spec_green_i (spec_green_sel),
+      .spec_blue_i  (spec_blue_sel),
       .valid_i      (smap_valid),
       .red_i        (class_red),
       .green_i      (class_green),
@@ -407,7 +473,8 @@ module cube4_shade #(
     assign unused_shading_inputs = ^{shading_i, specular_i, gm_diffuse_i, gm_specular_i, ke_i, kd_i, ks_i,
                                      spec_red_i, spec_green_i, spec_blue_i, eye_x_i, eye_y_i, eye_z_i,
                                      dmap_we_i, dmap_waddr_i, dmap_wdata_i, smap_we_i, smap_waddr_i,
-                                     smap_wdata_i, grad_x_i, grad_y_i, grad_z_i, gm};
+                                     smap_wdata_i, grad_x_i, grad_y_i, grad_z_i, gm,
+                                     mat_we_i, mat_waddr_i, mat_wdata_i, class_vtag};
   end
 
   // Alpha waits for phong.

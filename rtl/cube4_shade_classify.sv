@@ -1,13 +1,18 @@
 // cube4_shade_classify: classification and gradient-magnitude modulation of
 // opacity (VolumePro §3.4), bit-exact with golden/units/shade_classify.hpp and the
 // classification part of golden shade_sample():
-//   entry  = classification[sample]                    (classify)
+//   entry  = classification[{vtag, sample}]            (classify, class_address)
 //   gm     = magnitude ? gm_unit(GmLUT[|g|]) : one       (gm_unit = expand_bits)
 //   alpha  = gm_opacity ? modulate_alpha(entry.a, gm) : entry.a   (mul_frac)
 //   rgb    = widen_color(entry.r, entry.g, entry.b)     (expand_bits)
 // Outputs the widened colour, alpha, and gm (alpha_bits unit) for Phong.
 //
-// Tables: the classification RAM (2^VoxelBits x (3*ColorBits+AlphaBits),
+// Voxel tags (bela §III; VoxelTagBits > 0): the sample's tag vtag_i widens
+// the table's address to {tag, sample}; vtag_o is vtag_i delayed with the
+// sample, for the tag's material in Phong. VoxelTagBits = 0: no tag
+// hardware, vtag_o is 0.
+//
+// Tables: the classification RAM (2^(VoxelTagBits+VoxelBits) x (3*ColorBits+AlphaBits),
 // word {r, g, b, a}, r in the top bits) and the GmLUT RAM
 // (2^MagnitudeBits x GmlutBits), each with its own host write port and one
 // synchronous read port (read by the sample, resp. by |g|). A write and a
@@ -20,7 +25,7 @@
 // valid_o. Only the valid registers are reset.
 //
 // Parameters (defaults = golden Precision): VoxelBits, MagnitudeBits,
-// ColorBits, AlphaBits, GmlutBits.
+// ColorBits, AlphaBits, GmlutBits, VoxelTagBits (tag_bits).
 `include "cube4_pkg.sv"
 
 module cube4_shade_classify #(
@@ -28,7 +33,8 @@ module cube4_shade_classify #(
   parameter int unsigned MagnitudeBits = cube4_pkg::MagnitudeBits,
   parameter int unsigned ColorBits     = cube4_pkg::ColorBits,
   parameter int unsigned AlphaBits     = cube4_pkg::AlphaBits,
-  parameter int unsigned GmlutBits     = cube4_pkg::GmlutBits
+  parameter int unsigned GmlutBits     = cube4_pkg::GmlutBits,
+  parameter int unsigned VoxelTagBits  = cube4_pkg::VoxelTagBits
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -37,7 +43,7 @@ module cube4_shade_classify #(
   input  logic                                 gm_opacity_i,
   // Host write ports.
   input  logic                                 class_we_i,
-  input  logic [VoxelBits-1:0]                 class_waddr_i,
+  input  logic [VoxelTagBits+VoxelBits-1:0]    class_waddr_i,
   input  logic [3*ColorBits+AlphaBits-1:0]     class_wdata_i,
   input  logic                                 gmlut_we_i,
   input  logic [MagnitudeBits-1:0]             gmlut_waddr_i,
@@ -46,16 +52,19 @@ module cube4_shade_classify #(
   input  logic                                 valid_i,
   input  logic [VoxelBits-1:0]                 sample_i,
   input  logic [MagnitudeBits-1:0]             grad_mag_i,
+  input  logic [(VoxelTagBits > 0 ? VoxelTagBits : 1)-1:0] vtag_i,
   output logic                                 valid_o,
   output logic [AlphaBits-1:0]                 red_o,
   output logic [AlphaBits-1:0]                 green_o,
   output logic [AlphaBits-1:0]                 blue_o,
   output logic [AlphaBits-1:0]                 alpha_o,
-  output logic [AlphaBits-1:0]                 gm_o
+  output logic [AlphaBits-1:0]                 gm_o,
+  output logic [(VoxelTagBits > 0 ? VoxelTagBits : 1)-1:0] vtag_o
 );
 
   localparam int unsigned EntryBits   = 3 * ColorBits + AlphaBits;
-  localparam int unsigned ClassDepth  = 2 ** VoxelBits;
+  localparam int unsigned AddrBits    = VoxelTagBits + VoxelBits;
+  localparam int unsigned ClassDepth  = 2 ** AddrBits;
   localparam int unsigned GmlutDepth  = 2 ** MagnitudeBits;
   localparam int unsigned ProdBits    = 2 * AlphaBits + 1;
 
@@ -78,8 +87,24 @@ module cube4_shade_classify #(
   logic [GmlutBits-1:0] gmlut_q;
   logic                 valid_q;
 
+  // The table address: {tag, sample} with tags, the sample without.
+  logic [AddrBits-1:0] class_raddr;
+  if (VoxelTagBits > 0) begin : g_vtag
+    logic [2*VoxelTagBits-1:0] vtag_q;
+    assign class_raddr = {vtag_i, sample_i};
+    always_ff @(posedge clk_i) begin : vtag_regs
+      vtag_q <= {vtag_q[VoxelTagBits-1:0], vtag_i};
+    end
+    assign vtag_o = vtag_q[2*VoxelTagBits-1 -: VoxelTagBits];
+  end else begin : g_no_vtag
+    logic unused_vtag;
+    assign unused_vtag = ^vtag_i;
+    assign class_raddr = sample_i;
+    assign vtag_o = '0;
+  end
+
   always_ff @(posedge clk_i) begin : read_regs
-    entry_q <= class_mem[sample_i];
+    entry_q <= class_mem[class_raddr];
     gmlut_q <= gmlut_mem[grad_mag_i];
   end
 

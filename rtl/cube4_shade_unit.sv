@@ -162,7 +162,8 @@ module cube4_shade_unit #(
     .EyeBits         (EyeBits),
     .DivBitsPerStage (DivBitsPerStage),
     .SideBits        (SideBits),
-    .HasShading      (HasShading)
+    .HasShading      (HasShading),
+    .VoxelTagBits    (0)  // the ring's streams do not carry voxel tags yet
   ) u_shader (
     .clk_i,
     .rst_ni,
@@ -193,12 +194,16 @@ module cube4_shade_unit #(
     .smap_we_i,
     .smap_waddr_i,
     .smap_wdata_i,
+    .mat_we_i   (1'b0),
+    .mat_waddr_i('0),
+    .mat_wdata_i('0),
     .valid_i    (mag_valid),
     .sample_i   (sh_sample),
     .grad_x_i   (sh_gx),
     .grad_y_i   (sh_gy),
     .grad_z_i   (sh_gz),
     .grad_mag_i (magnitude),
+    .vtag_i     ('0),
     .valid_o,
     .red_o,
     .green_o,

@@ -169,6 +169,7 @@ std::string scene_dir(const std::string& scene_path) {
 
 void load_volume(Loaded& l, const std::string& scene_path, bool header_only) {
   l.volume = golden::load_volume(l.scene.volume, l.scene.precision.voxel_bits, scene_dir(scene_path), header_only);
+  golden::load_tags(l.scene, l.volume, scene_dir(scene_path));
   // The meshes (once load() has them) widen the base plane: polygon margins.
   l.host = golden::program_host(l.scene, l.volume, l.meshes);
 }

@@ -35,4 +35,22 @@ constexpr uint32_t trilinear(const std::array<uint32_t, 8>& v, uint32_t wx, uint
   return static_cast<uint32_t>(lerp(front, back, wz, weight_bits));
 }
 
+// Voxel tags (bela §III) are labels, not quantities: a sample is never
+// given a blend of tags but the tag of one of its eight voxels, the nearest.
+// Per axis the upper voxel is nearer when the weight is at least half
+// (w >= 2^(W-1)); at exactly half (a tie) the upper voxel wins, i.e. the
+// one further along the permuted axis. In hardware: the weight's top bit.
+constexpr int upper_corner(uint32_t w, int weight_bits) { return w >= (1u << (weight_bits - 1)) ? 1 : 0; }
+
+// Index into trilinear()'s v[8] of the voxel nearest to the sample.
+constexpr int nearest_corner(uint32_t wx, uint32_t wy, uint32_t wz, int weight_bits) {
+  return upper_corner(wx, weight_bits) | upper_corner(wy, weight_bits) << 1 | upper_corner(wz, weight_bits) << 2;
+}
+
+// The sample's tag: that of its nearest voxel; t[i] beside v[i].
+constexpr uint32_t sample_tag(const std::array<uint32_t, 8>& t, uint32_t wx, uint32_t wy, uint32_t wz,
+                              int weight_bits) {
+  return t[static_cast<size_t>(nearest_corner(wx, wy, wz, weight_bits))];
+}
+
 }  // namespace cube4::golden

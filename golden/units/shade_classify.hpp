@@ -15,8 +15,20 @@ struct ClassEntry {
   uint16_t a = 0;                // alpha_bits
 };
 
+// The table's address is {tag, sample} (bela §III: "look-up-tables
+// designate unshaded RGBA values according to tag and voxel value"): with
+// tag_bits = 0 it is the sample alone, as in VolumePro.
+constexpr uint32_t class_address(uint32_t tag, uint32_t sample, const Precision& p) {
+  return tag << p.voxel_bits | sample;
+}
+
 inline const ClassEntry& classify(const std::vector<ClassEntry>& lut, uint32_t sample) {
   return lut[sample];
+}
+
+inline const ClassEntry& classify(const std::vector<ClassEntry>& lut, uint32_t tag, uint32_t sample,
+                                  const Precision& p) {
+  return lut[class_address(tag, sample, p)];
 }
 
 // GmLUT value (gmlut_bits) widened to alpha_bits, the unit every product uses.

@@ -24,6 +24,10 @@ cube4_rtl_variant(test_rtl_interp cube4_interp_ring Vcube4_interp_ring_p2 SOURCE
   PARAMS NumPipes=2 MaxDim=16)
 cube4_rtl_variant(test_rtl_interp cube4_interp_ring Vcube4_interp_ring_p5 SOURCES ${_interp_sources}
   PARAMS NumPipes=5 MaxDim=12)
+# With 4-bit voxel tags (bela §III): the words {tag, value} through storage
+# and links, a tag per sample.
+cube4_rtl_variant(test_rtl_interp cube4_interp_ring Vcube4_interp_ring_t4 SOURCES ${_interp_sources}
+  PARAMS NumPipes=4 MaxDim=16 VoxelTagBits=4)
 # The delay RAM alone: a depth that is no power of two, and a single entry.
 cube4_rtl_variant(test_rtl_interp cube4_delay_ram Vcube4_delay_ram_d13 PARAMS Width=10 MaxDepth=13)
 cube4_rtl_variant(test_rtl_interp cube4_delay_ram Vcube4_delay_ram_d1 PARAMS Width=10 MaxDepth=1)
@@ -33,3 +37,5 @@ cube4_rtl_variant(test_rtl_interp cube4_lerp Vcube4_lerp)
 cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp SOURCES cube4_lerp.sv)
 cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp_w6 SOURCES cube4_lerp.sv PARAMS VoxelBits=8 WeightBits=6)
 cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp_w10 SOURCES cube4_lerp.sv PARAMS VoxelBits=16 WeightBits=10)
+# With 4-bit voxel tags (bela §III), at the default widths otherwise.
+cube4_rtl_variant(test_rtl_interp cube4_interp Vcube4_interp_t4 SOURCES cube4_lerp.sv PARAMS VoxelTagBits=4)

@@ -28,6 +28,9 @@ cube4_rtl_test(test_rtl_shade
 foreach(u ${_shade_units})
   cube4_rtl_variant(test_rtl_shade ${u} V${u})
 endforeach()
+# The classifier with 2-bit voxel tags (bela §III).
+cube4_rtl_variant(test_rtl_shade cube4_shade_classify Vcube4_shade_classify_t2 PARAMS VoxelTagBits=2)
+cube4_rtl_variant(test_rtl_shade cube4_shade Vcube4_shade_t2 SOURCES ${_shade_sources} PARAMS VoxelTagBits=2)
 
 # cube4_shade at other widths (tb/rtl/test_shade.cpp holds the same values):
 # wide: odd colour/alpha/GmLUT ratios, a 5x5 map face, 3 quotient bits per

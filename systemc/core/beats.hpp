@@ -29,11 +29,13 @@ struct VoxelBeat {
 };
 
 // Interpolation -> gradient: samples S(j*p + k, y) of a pass, beams 0 .. ny-1.
+// vtag: each sample's voxel tag (bela §III), 0 without tags.
 struct SampleBeat {
   bool valid = false;
   BeamFlags f;
   uint64_t tag = 0;
   std::array<uint16_t, kMaxLanes> sample{};
+  std::array<uint8_t, kMaxLanes> vtag{};
 };
 
 // Gradient -> shading: the centre sample, its gradient and its position.
@@ -44,6 +46,7 @@ struct GradientBeat {
   uint32_t slice = 0;  // sample slice k
   std::array<uint16_t, kMaxLanes> sample{};
   std::array<int16_t, kMaxLanes> gx{}, gy{}, gz{};
+  std::array<uint8_t, kMaxLanes> vtag{};  // the centre sample's voxel tag
 };
 
 // Shading -> compositing: shaded samples before cropping and the cut plane.

@@ -16,15 +16,21 @@ void Machine::set_volume_dims(int k, int nx, int ny, int nz) {
   golden::Volume& v = volumes_[static_cast<size_t>(k)];
   v.dim = {nx, ny, nz};
   v.data.assign(v.size(), 0);
+  if (tag_bits_ > 0) v.tags.assign(v.size(), 0);
   v.source = "host interface, subvolume " + std::to_string(k);
 }
 
 void Machine::write_voxel(int k, int x, int y, int z, uint16_t v) {
   golden::Volume& vol = volumes_[static_cast<size_t>(k)];
-  vol.data[vol.index(x, y, z)] = v;
+  const size_t i = vol.index(x, y, z);
+  vol.data[i] = static_cast<uint16_t>(v & vol.max_value());
+  if (tag_bits_ > 0) vol.tags[i] = static_cast<uint8_t>(v >> vol.bits);
 }
 
-uint16_t Machine::read_voxel(int k, int x, int y, int z) const { return volumes_[static_cast<size_t>(k)].at(x, y, z); }
+uint16_t Machine::read_voxel(int k, int x, int y, int z) const {
+  const golden::Volume& vol = volumes_[static_cast<size_t>(k)];
+  return static_cast<uint16_t>(vol.at(x, y, z) | vol.tag_at(x, y, z) << vol.bits);
+}
 
 void Machine::start_frame(const golden::Registers& regs, int k) {
   error_ = nullptr;
@@ -83,7 +89,7 @@ Hosted& hosted(const SystemConfig& cfg, const golden::Precision& p, int max_dim)
           "host interface: this process has simulated frames without it already, and SystemC adds no module once "
           "it runs; render through the host interface first, or in a process of its own");
     h.hw = hw;
-    h.machine = std::make_unique<Machine>(cfg, p.voxel_bits);
+    h.machine = std::make_unique<Machine>(cfg, p.voxel_bits, p.tag_bits);
     h.host = std::make_unique<HostInterface>("host", HostConfig{hw, sc_core::sc_time(30, sc_core::SC_NS)}, *h.machine);
     h.bus = std::make_unique<HostBus>("host_bus");
     h.bus->socket.bind(h.host->socket);

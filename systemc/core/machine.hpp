@@ -17,7 +17,10 @@ namespace cube4::sysc {
 
 class Machine final : public HostBackend {
  public:
-  Machine(const SystemConfig& cfg, int voxel_bits) : cfg_(cfg) {
+  // A voxel memory word is {tag, value}: tag_bits above voxel_bits (bela's
+  // "bits per voxel and tag"); the machine keeps them as golden::Volume's
+  // data and tags.
+  Machine(const SystemConfig& cfg, int voxel_bits, int tag_bits = 0) : cfg_(cfg), tag_bits_(tag_bits) {
     for (golden::Volume& v : volumes_) v.bits = voxel_bits;
   }
 
@@ -43,6 +46,7 @@ class Machine final : public HostBackend {
 
  private:
   SystemConfig cfg_;
+  int tag_bits_;
   std::array<golden::Volume, regmap::kSubvolumes> volumes_;
   golden::Progress progress_;
   std::optional<SystemResult> last_;

@@ -9,15 +9,23 @@ namespace cube4::sysc {
 namespace {
 
 struct Collector final : golden::SampleProbe {
-  Collector(const FramePlan& p, std::vector<uint16_t>& s, std::vector<golden::Gradient>& g) : plan(p), samples(s), grads(g) {}
+  Collector(const FramePlan& p, std::vector<uint16_t>& s, std::vector<golden::Gradient>& g, std::vector<uint8_t>& t)
+      : plan(p), samples(s), grads(g), tags(t) {}
+  size_t index(int x, int y, const golden::SliceControl& c) const {
+    return (static_cast<size_t>(c.k) * plan.ny + static_cast<size_t>(y)) * plan.nx + static_cast<size_t>(x);
+  }
+  void tagged(int x, int y, const golden::SliceControl& c, uint32_t tag) override {
+    tags[index(x, y, c)] = static_cast<uint8_t>(tag);
+  }
   void sample(int x, int y, const golden::SliceControl& c, uint32_t value, const golden::Gradient& g) override {
-    const size_t i = (static_cast<size_t>(c.k) * plan.ny + static_cast<size_t>(y)) * plan.nx + static_cast<size_t>(x);
+    const size_t i = index(x, y, c);
     samples[i] = static_cast<uint16_t>(value);
     grads[i] = g;
   }
   const FramePlan& plan;
   std::vector<uint16_t>& samples;
   std::vector<golden::Gradient>& grads;
+  std::vector<uint8_t>& tags;
 };
 
 std::string str(std::initializer_list<int64_t> v) {
@@ -36,8 +44,8 @@ std::string str(std::initializer_list<int64_t> v) {
 
 StreamChecker::StreamChecker(const FramePlan& plan, const golden::Volume& vol)
     : plan_(plan), sample_(static_cast<size_t>(plan.nx) * plan.ny * plan.K),
-      gradient_(sample_.size()) {
-  Collector c(plan, sample_, gradient_);
+      gradient_(sample_.size()), vtag_(sample_.size(), 0) {
+  Collector c(plan, sample_, gradient_, vtag_);
   plane_ = golden::render_fixed(vol, plan.r, nullptr, {}, &c);
 }
 
@@ -54,9 +62,10 @@ void StreamChecker::samples(const SampleBeat& b) {
     for (int q = 0; q < plan_.p; ++q) {
       const int x = sample_j_ * plan_.p + q;
       if (x >= plan_.nx) continue;
-      const uint16_t want = sample_[index(k, x, sample_y_)];
-      if (b.sample[static_cast<size_t>(q)] != want)
-        mismatch(Unit::Interp, k, x, sample_y_, str({want}), str({b.sample[static_cast<size_t>(q)]}));
+      const size_t i = index(k, x, sample_y_);
+      const auto l = static_cast<size_t>(q);
+      if (b.sample[l] != sample_[i] || b.vtag[l] != vtag_[i])
+        mismatch(Unit::Interp, k, x, sample_y_, str({sample_[i], vtag_[i]}), str({b.sample[l], b.vtag[l]}));
     }
   }
   ++sample_j_;
@@ -74,9 +83,9 @@ void StreamChecker::gradients(const GradientBeat& b) {
     const size_t i = index(static_cast<int>(b.slice), x, b.y);
     const golden::Gradient& g = gradient_[i];
     const auto l = static_cast<size_t>(q);
-    if (b.sample[l] != sample_[i] || b.gx[l] != g.x || b.gy[l] != g.y || b.gz[l] != g.z)
-      mismatch(Unit::Gradient, static_cast<int>(b.slice), x, b.y, str({sample_[i], g.x, g.y, g.z}),
-               str({b.sample[l], b.gx[l], b.gy[l], b.gz[l]}));
+    if (b.sample[l] != sample_[i] || b.gx[l] != g.x || b.gy[l] != g.y || b.gz[l] != g.z || b.vtag[l] != vtag_[i])
+      mismatch(Unit::Gradient, static_cast<int>(b.slice), x, b.y, str({sample_[i], g.x, g.y, g.z, vtag_[i]}),
+               str({b.sample[l], b.gx[l], b.gy[l], b.gz[l], b.vtag[l]}));
   }
 }
 
@@ -86,7 +95,7 @@ void StreamChecker::shaded(const ShadedBeat& b) {
     const int x = b.x + q;
     if (x >= plan_.nx || static_cast<int>(b.slice) >= plan_.K) continue;
     const size_t i = index(static_cast<int>(b.slice), x, b.y);
-    const golden::ShadedSample s = golden::shade_classified(plan_.r, sample_[i], gradient_[i]);
+    const golden::ShadedSample s = golden::shade_classified(plan_.r, sample_[i], vtag_[i], gradient_[i]);
     const auto l = static_cast<size_t>(q);
     if (b.red[l] != s.rgb[0] || b.green[l] != s.rgb[1] || b.blue[l] != s.rgb[2] || b.alpha[l] != s.alpha ||
         b.value[l] != s.value)

@@ -33,6 +33,7 @@ class StreamChecker {
   const FramePlan& plan_;
   std::vector<uint16_t> sample_;
   std::vector<golden::Gradient> gradient_;
+  std::vector<uint8_t> vtag_;  // each sample's voxel tag (all 0 without tags)
   golden::BasePlane plane_;
   std::array<std::optional<Mismatch>, kUnits> first_{};
   int sample_y_ = 0, sample_j_ = 0;

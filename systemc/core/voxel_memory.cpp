@@ -15,7 +15,8 @@ VoxelMemory::VoxelMemory(const golden::Volume& v, int pipes) {
   last_access_.assign(static_cast<size_t>(pipes), 0);
   for (int z = 0; z < v.dim[2]; ++z)
     for (int y = 0; y < v.dim[1]; ++y)
-      for (int x = 0; x < v.dim[0]; ++x) write(x, y, z, v.at(x, y, z));
+      for (int x = 0; x < v.dim[0]; ++x)  // the word {tag, value} (docs/registers.md, "Tags")
+        write(x, y, z, static_cast<uint16_t>(v.at(x, y, z) | v.tag_at(x, y, z) << v.bits));
 }
 
 void VoxelMemory::write(int x, int y, int z, uint16_t value) {

@@ -18,7 +18,8 @@ struct HostBackend {
   // subvolumes keep theirs. Called before the first voxel access of k or a
   // START that renders k after its VOL_DIM changed.
   virtual void set_volume_dims(int k, int nx, int ny, int nz) = 0;
-  // One voxel of subvolume k at object coordinates, value < 2^voxel_bits.
+  // One voxel memory word of subvolume k at object coordinates: {tag,
+  // value}, the tag above voxel_bits, < 2^(voxel_bits + tag_bits).
   // Never while busy().
   virtual void write_voxel(int k, int x, int y, int z, uint16_t v) = 0;
   virtual uint16_t read_voxel(int k, int x, int y, int z) const = 0;

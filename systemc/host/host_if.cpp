@@ -31,6 +31,7 @@ uint64_t region_base(Region r) {
     case Region::GmLut: return rm::kGmLutBase;
     case Region::Diffuse: return rm::kDiffuseBase;
     case Region::Specular: return rm::kSpecularBase;
+    case Region::Material: return rm::kMaterialBase;
     case Region::Base: return rm::kBaseBase;
     case Region::Volume: return rm::kVolumeBase;
     case Region::Slab: return rm::kSlabBase;
@@ -279,7 +280,7 @@ HostInterface::Outcome HostInterface::write_volume(uint64_t addr, const uint32_t
   const std::array<int, 3> d = regs_.volume_dims(k);
   if (d[0] == 0 || d[1] == 0 || d[2] == 0) return fail(ErrorCode::VolumeDimsUnset, addr);
   const uint64_t voxels = uint64_t(d[0]) * d[1] * d[2];
-  const uint32_t max = (uint32_t{1} << config_.hw.precision.voxel_bits) - 1;
+  const uint32_t max = rm::voxel_word_max(config_.hw.precision);  // {tag, value}
   const uint64_t first = (addr - rm::kVolumeBase) / 2;
   for (unsigned i = 0; i < n; ++i) {
     const uint64_t v = first + 2 * uint64_t{i};
@@ -315,7 +316,7 @@ HostInterface::Outcome HostInterface::access_slab(bool write, uint64_t addr, uin
   for (int i = 0; i < 3; ++i)
     if (s[i] < 1 || o[i] + s[i] > d[i]) return fail(ErrorCode::SlabOutOfVolume, addr);
   const uint64_t voxels = uint64_t(s[0]) * s[1] * s[2];
-  const uint32_t max = (uint32_t{1} << config_.hw.precision.voxel_bits) - 1;
+  const uint32_t max = rm::voxel_word_max(config_.hw.precision);  // {tag, value}
   const uint64_t first = (addr - rm::kSlabBase) / 2;
   for (unsigned i = 0; i < n; ++i) {
     const uint64_t v = first + 2 * uint64_t{i};

@@ -150,11 +150,17 @@ void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol
                                            " voxels, its dimensions say " + std::to_string(vol.size()));
   check(k >= 0 && k < rm::kSubvolumes, "subvolume " + std::to_string(k) + " is not one of 0.." +
                                            std::to_string(rm::kSubvolumes - 1));
+  check(vol.tags.empty() || vol.tags.size() == vol.size(),
+        "the volume holds " + std::to_string(vol.tags.size()) + " tags, its dimensions say " + std::to_string(vol.size()));
   write_word(target, rm::kVolIndex, static_cast<uint32_t>(k), delay);
   const uint32_t dims[3] = {static_cast<uint32_t>(vol.dim[0]), static_cast<uint32_t>(vol.dim[1]),
                             static_cast<uint32_t>(vol.dim[2])};
   write_words(target, rm::kVolDim, dims, 3, delay);
-  const std::vector<uint32_t> words = pack_voxels(vol.data);
+  // The voxel memory words: {tag, value}, the tag above the value's bits.
+  std::vector<uint16_t> voxels = vol.data;
+  for (size_t i = 0; i < vol.tags.size(); ++i)
+    voxels[i] = static_cast<uint16_t>(voxels[i] | uint32_t{vol.tags[i]} << vol.bits);
+  const std::vector<uint32_t> words = pack_voxels(voxels);
   write_words(target, rm::kVolumeBase, words.data(), words.size(), delay);
 }
 
@@ -213,6 +219,13 @@ void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_
   write_words(target, rm::kGmLutBase, gm.data(), gm.size(), delay);
   write_words(target, rm::kDiffuseBase, regs.diffuse_map.data(), regs.diffuse_map.size(), delay);
   write_words(target, rm::kSpecularBase, regs.specular_map.data(), regs.specular_map.size(), delay);
+  std::vector<uint32_t> m(rm::kMaterialWords * regs.tag_coefs.size(), 0);
+  for (size_t t = 0; t < regs.tag_coefs.size(); ++t) {
+    const golden::ShadeCoefs& k = regs.tag_coefs[t];
+    const uint32_t entry[6] = {k.ke, k.kd, k.ks, k.specular[0], k.specular[1], k.specular[2]};
+    std::copy(entry, entry + 6, &m[rm::kMaterialWords * t]);
+  }
+  write_words(target, rm::kMaterialBase, m.data(), m.size(), delay);
 }
 
 std::vector<RegisterBlock> register_blocks(const golden::Registers& r) {
@@ -247,6 +260,7 @@ void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const go
   check_table(regs.gm_lut.size(), rm::gm_entries(a), regs.magnitude, "gm_lut");
   check_table(regs.diffuse_map.size(), rm::map_entries(a), regs.shading, "diffuse_map");
   check_table(regs.specular_map.size(), rm::map_entries(a), regs.specular, "specular_map");
+  check_table(regs.tag_coefs.size(), rm::material_entries(a), regs.shading, "tag_coefs");
 
   load_volume_over_tlm(target, vol, delay);
   write_tables_over_tlm(target, regs, delay);

@@ -61,6 +61,7 @@ void RegisterFile::reset() {
   r.gm_lut.assign(rm::gm_entries(hw_.precision), 0);
   r.diffuse_map.assign(rm::map_entries(hw_.precision), 0);
   r.specular_map.assign(rm::map_entries(hw_.precision), 0);
+  r.tag_coefs.assign(rm::material_entries(hw_.precision), golden::ShadeCoefs{});
 }
 
 uint64_t RegisterFile::table_bytes(rm::Region r) const {
@@ -70,6 +71,7 @@ uint64_t RegisterFile::table_bytes(rm::Region r) const {
     case rm::Region::GmLut: return 4 * gm_entries(p);
     case rm::Region::Diffuse:
     case rm::Region::Specular: return 4 * map_entries(p);
+    case rm::Region::Material: return 4 * rm::kMaterialWords * rm::material_entries(p);
     default: return 0;
   }
 }
@@ -99,9 +101,31 @@ ErrorCode RegisterFile::check_table(rm::Region r, uint64_t addr, uint32_t v) con
       if (addr - base >= table_bytes(r)) return ErrorCode::Unmapped;
       return fits_unsigned(v, p.map_bits) ? ErrorCode::None : ErrorCode::FieldRange;
     }
+    case rm::Region::Material: {
+      if (addr - rm::kMaterialBase >= table_bytes(r)) return ErrorCode::Unmapped;
+      // ke, kd, ks: coef_bits; the specular colour: alpha_bits; the rest zero.
+      const uint64_t word = (addr - rm::kMaterialBase) / 4 % rm::kMaterialWords;
+      const int bits = word < 3 ? p.coef_bits : word < 6 ? p.alpha_bits : 0;
+      return fits_unsigned(v, bits) ? ErrorCode::None : ErrorCode::FieldRange;
+    }
     default: return ErrorCode::Unmapped;
   }
 }
+
+namespace {
+
+// Word `word` of a MATERIAL window entry (6, 7: none).
+uint32_t* material_word(golden::ShadeCoefs& k, uint64_t word) {
+  switch (word) {
+    case 0: return &k.ke;
+    case 1: return &k.kd;
+    case 2: return &k.ks;
+    case 3: case 4: case 5: return &k.specular[word - 3];
+    default: return nullptr;
+  }
+}
+
+}  // namespace
 
 ErrorCode RegisterFile::check_register(uint64_t a, uint32_t v) const {
   const rm::Register* reg = rm::register_at(a);
@@ -146,6 +170,11 @@ void RegisterFile::write(uint64_t addr, uint32_t v) {
     case rm::Region::GmLut: values_.regs.gm_lut[(addr - rm::kGmLutBase) / 4] = static_cast<uint16_t>(v); return;
     case rm::Region::Diffuse: values_.regs.diffuse_map[(addr - rm::kDiffuseBase) / 4] = v; return;
     case rm::Region::Specular: values_.regs.specular_map[(addr - rm::kSpecularBase) / 4] = v; return;
+    case rm::Region::Material: {
+      const uint64_t off = (addr - rm::kMaterialBase) / 4;
+      if (uint32_t* w = material_word(values_.regs.tag_coefs[off / rm::kMaterialWords], off % rm::kMaterialWords)) *w = v;
+      return;
+    }
     default: return;
   }
 }
@@ -189,6 +218,14 @@ ErrorCode RegisterFile::read(uint64_t addr, uint32_t& v) const {
       if (addr - rm::kSpecularBase >= table_bytes(r)) return ErrorCode::Unmapped;
       v = values_.regs.specular_map[(addr - rm::kSpecularBase) / 4];
       return ErrorCode::None;
+    case rm::Region::Material: {
+      if (addr - rm::kMaterialBase >= table_bytes(r)) return ErrorCode::Unmapped;
+      const uint64_t off = (addr - rm::kMaterialBase) / 4;
+      golden::ShadeCoefs k = values_.regs.tag_coefs[off / rm::kMaterialWords];
+      const uint32_t* w = material_word(k, off % rm::kMaterialWords);
+      v = w ? *w : 0;
+      return ErrorCode::None;
+    }
     default: return ErrorCode::Unmapped;
   }
 }
@@ -198,6 +235,7 @@ golden::Registers RegisterFile::decoded() const {
   if (!r.magnitude) r.gm_lut.clear();
   if (!r.shading) r.diffuse_map.clear();
   if (!r.specular) r.specular_map.clear();
+  if (!r.shading) r.tag_coefs.clear();  // as program_host: the materials shade
   return r;
 }
 

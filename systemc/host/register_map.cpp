@@ -151,6 +151,13 @@ std::string describe_address(uint64_t a) {
     case Region::GmLut: name = indexed("GMLUT", (a - kGmLutBase) / 4, ""); break;
     case Region::Diffuse: name = indexed("DIFFUSE_MAP", (a - kDiffuseBase) / 4, ""); break;
     case Region::Specular: name = indexed("SPECULAR_MAP", (a - kSpecularBase) / 4, ""); break;
+    case Region::Material: {
+      static const char* const word[kMaterialWords] = {".ke", ".kd", ".ks", ".spec_r", ".spec_g", ".spec_b", ".zero",
+                                                       ".zero"};
+      const uint64_t off = a - kMaterialBase;
+      name = indexed("MATERIAL", off / (4 * kMaterialWords), word[off / 4 % kMaterialWords]);
+      break;
+    }
     case Region::Base: {
       const uint64_t off = a - kBaseBase;
       name = indexed("BASE_PLANE", off / 8, (off & 4) ? ".ba" : ".rg");

@@ -147,7 +147,15 @@ constexpr void set_mode(golden::Registers& r, uint64_t v) {
   r.window_enabled = v & kModeWindow;
 }
 
-constexpr size_t class_entries(const golden::Precision& p) { return size_t{1} << p.voxel_bits; }
+// The classification table's address is {tag, value} (golden class_address).
+constexpr size_t class_entries(const golden::Precision& p) { return size_t{1} << (p.voxel_bits + p.tag_bits); }
+// One material per tag with tags (golden Registers::tag_coefs), none without.
+constexpr size_t material_entries(const golden::Precision& p) { return p.tag_bits ? size_t{1} << p.tag_bits : 0; }
+// A voxel memory word is {tag, value}: the tag above voxel_bits (bela's
+// "bits per voxel and tag"; scene_io keeps the pair within 16 bits).
+constexpr uint32_t voxel_word_max(const golden::Precision& p) {
+  return (uint32_t{1} << (p.voxel_bits + p.tag_bits)) - 1;
+}
 constexpr size_t gm_entries(const golden::Precision& p) { return size_t{1} << p.magnitude_bits; }
 constexpr size_t map_entries(const golden::Precision& p) { return size_t{6} * p.map_face_res * p.map_face_res; }
 
@@ -204,7 +212,7 @@ inline constexpr Register kListed[] = {
     {"ID_VOXEL_BITS", 0x050, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
      CUBE4_REG_HW(hw.precision.voxel_bits), "VoxelBits", "`voxel_bits`"},
     {"ID_CLASS_ENTRIES", 0x054, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
-     CUBE4_REG_HW(class_entries(hw.precision)), "", "2^`voxel_bits`"},
+     CUBE4_REG_HW(class_entries(hw.precision)), "", "2^(`voxel_bits` + `tag_bits`): address {tag, value}"},
     {"ID_GMLUT_ENTRIES", 0x058, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
      CUBE4_REG_HW(gm_entries(hw.precision)), "", "2^`magnitude_bits`"},
     {"ID_MAP_ENTRIES", 0x05C, Block::Identification, Access::R, 1, bits(32), Sign::Unsigned, Rule::Width,
@@ -503,6 +511,9 @@ constexpr uint64_t kGmLutSize = 0x0004'0000;
 constexpr uint64_t kDiffuseBase = 0x0020'0000; // one word per entry, golden map_index order
 constexpr uint64_t kSpecularBase = 0x0022'0000;
 constexpr uint64_t kMapSize = 0x0002'0000;     // 6 * 64^2 entries
+constexpr uint64_t kMaterialBase = 0x0024'0000; // 8 words per tag: ke, kd, ks, spec r, g, b, two zero words
+constexpr uint64_t kMaterialSize = 0x0000'2000; // 256 tags
+constexpr int kMaterialWords = 8;
 constexpr uint64_t kBaseBase = 0x0800'0000;    // 8 bytes per pixel: {r|g<<16, b|a<<16}, row-major
 constexpr uint64_t kBaseSize = 0x0800'0000;
 constexpr uint64_t kVolumeBase = 0x1'0000'0000;  // two voxels per word, x fastest
@@ -510,7 +521,7 @@ constexpr uint64_t kVolumeSize = 0x1'0000'0000;
 constexpr uint64_t kSlabBase = 0x2'0000'0000;    // the slab's voxels, two per word, x fastest
 constexpr uint64_t kSlabSize = 0x1'0000'0000;
 
-enum class Region { None, Registers, Class, GmLut, Diffuse, Specular, Base, Volume, Slab };
+enum class Region { None, Registers, Class, GmLut, Diffuse, Specular, Material, Base, Volume, Slab };
 
 constexpr Region region_of(uint64_t a) {
   if (a < kRegisterSpace) return Region::Registers;
@@ -518,6 +529,7 @@ constexpr Region region_of(uint64_t a) {
   if (a >= kGmLutBase && a - kGmLutBase < kGmLutSize) return Region::GmLut;
   if (a >= kDiffuseBase && a - kDiffuseBase < kMapSize) return Region::Diffuse;
   if (a >= kSpecularBase && a - kSpecularBase < kMapSize) return Region::Specular;
+  if (a >= kMaterialBase && a - kMaterialBase < kMaterialSize) return Region::Material;
   if (a >= kBaseBase && a - kBaseBase < kBaseSize) return Region::Base;
   if (a >= kVolumeBase && a - kVolumeBase < kVolumeSize) return Region::Volume;
   if (a >= kSlabBase && a - kSlabBase < kSlabSize) return Region::Slab;

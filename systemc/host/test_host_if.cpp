@@ -160,6 +160,13 @@ struct IdleInitiator : sc_core::sc_module {
   explicit IdleInitiator(sc_core::sc_module_name n) : sc_core::sc_module(n) {}
 };
 
+golden::Precision tag_precision() {
+  golden::Precision p;
+  p.voxel_bits = 8;
+  p.tag_bits = 2;
+  return p;
+}
+
 // Modules can be built only before the first sc_start: one set for the
 // whole process.
 struct Env {
@@ -168,11 +175,16 @@ struct Env {
   TestBackend backend8;
   // A small voxel memory: two 32³ subvolumes fill it.
   HostInterface host8{"host8", HostConfig{HardwareParams{narrow_precision(), 3, 32, 2 * 32 * 32 * 32}}, backend8};
+  // Voxel tags (bela §III): 8-bit values, 2-bit tags.
+  TestBackend backend_tags;
+  HostInterface host_tags{"host_tags", HostConfig{HardwareParams{tag_precision(), 2, 16}}, backend_tags};
   HostThread thread{"thread"};
   IdleInitiator idle{"idle"};
+  IdleInitiator idle_tags{"idle_tags"};
   Env() {
     thread.socket.bind(host.socket);
     idle.socket.bind(host8.socket);
+    idle_tags.socket.bind(host_tags.socket);
   }
 };
 
@@ -380,6 +392,39 @@ golden::Registers random_registers(const golden::Precision& p, std::mt19937_64& 
 }  // namespace
 
 // ---- Identification and status ---------------------------------------------------
+
+// Voxel tags: the voxel words carry {tag, value}, the CLASS window is
+// addressed by {tag, value}, the MATERIAL window holds one entry per tag.
+TEST(HostInterface, TaggedVoxelWordsClassAndMaterialWindows) {
+  Env& e = env();
+  fresh(e.host_tags, e.backend_tags);
+  HostInterface& h = e.host_tags;
+  EXPECT_EQ(read(h, rm::kIdClassEntries), 1024u);  // 2^(8 + 2)
+  ASSERT_EQ(write(h, rm::kVolDim, {2, 1, 1}), tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(write(h, rm::kVolumeBase, {0x03FF | 0x0400u << 16}), tlm::TLM_GENERIC_ERROR_RESPONSE);  // a word past 10 bits
+  EXPECT_EQ(read(h, rm::kLastError), static_cast<uint32_t>(ErrorCode::FieldRange));
+  ASSERT_EQ(write(h, rm::kVolumeBase, {0x02FF | 0x0105u << 16}), tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(e.backend_tags.volumes[0].data, (std::vector<uint16_t>{0x02FF, 0x0105}));  // words as written
+  EXPECT_EQ(write(h, rm::kClassBase + 8 * 1023 + 4, {7}), tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(write(h, rm::kClassBase + 8 * 1024, {0}), tlm::TLM_ADDRESS_ERROR_RESPONSE);
+  // MATERIAL: tag 3's ke (coef_bits 10), its specular blue (alpha_bits 16), its reserved words.
+  const uint64_t tag3 = rm::kMaterialBase + 4 * rm::kMaterialWords * 3;
+  EXPECT_EQ(write(h, tag3, {0x3FF}), tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(write(h, tag3, {0x400}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(write(h, tag3 + 4 * 5, {0xFFFF}), tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(write(h, tag3 + 4 * 6, {1}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(write(h, tag3 + 4 * rm::kMaterialWords, {0}), tlm::TLM_ADDRESS_ERROR_RESPONSE);  // four tags
+  EXPECT_EQ(read(h, tag3), 0x3FFu);
+  EXPECT_EQ(rm::describe_address(tag3 + 4 * 5), "MATERIAL[3].spec_b (0x240074)");
+  EXPECT_TRUE(h.decoded().tag_coefs.empty()) << "without MODE.shading the materials are not the frame's";
+  ASSERT_EQ(write(h, rm::kMode, {rm::kModeShading | rm::kModeGradient}), tlm::TLM_OK_RESPONSE);
+  const golden::Registers r = h.decoded();
+  ASSERT_EQ(r.tag_coefs.size(), 4u);
+  EXPECT_EQ(r.tag_coefs[3].ke, 0x3FFu);
+  EXPECT_EQ(r.tag_coefs[3].specular[2], 0xFFFFu);
+  EXPECT_EQ(r.classification[1023].a, 7u);
+  ASSERT_EQ(write(h, rm::kCtrl, {rm::kCtrlReset}), tlm::TLM_OK_RESPONSE);
+}
 
 TEST(HostInterface, IdentificationAndPrecisionReportTheHardware) {
   Env& e = env();

@@ -13,7 +13,7 @@ namespace rm = regmap;
 // on clk_i: BUSY while cycles remain.
 class Accelerator::Backend final : public HostBackend {
  public:
-  Backend(const SystemConfig& cfg, int voxel_bits) : machine_(cfg, voxel_bits) {}
+  Backend(const SystemConfig& cfg, const golden::Precision& p) : machine_(cfg, p.voxel_bits, p.tag_bits) {}
 
   void set_volume_dims(int k, int nx, int ny, int nz) override { machine_.set_volume_dims(k, nx, ny, nz); }
   void write_voxel(int k, int x, int y, int z, uint16_t v) override { machine_.write_voxel(k, x, y, z, v); }
@@ -60,7 +60,7 @@ Accelerator::Accelerator(sc_core::sc_module_name name, const AcceleratorConfig& 
       clk_i("clk_i"),
       rst_ni("rst_ni"),
       irq_o("irq_o"),
-      backend_(std::make_unique<Backend>(system_config(config), config.hw.precision.voxel_bits)) {
+      backend_(std::make_unique<Backend>(system_config(config), config.hw.precision)) {
   host_ = std::make_unique<HostInterface>("host", HostConfig{config.hw, config.bus_period}, *backend_);
   socket.bind(host_->socket);
   // One process drives irq_o: the clock edge, or the reset (asynchronous).

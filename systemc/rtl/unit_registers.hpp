@@ -89,8 +89,29 @@ void load_table(We& we, Addr& addr, int addr_bits, Data& data, int data_bits, co
 // The classification table (cube4_shade_classify and up).
 template <class M, class Tick>
 void load_class_table(M& m, const golden::Precision& p, const std::vector<golden::ClassEntry>& table, Tick&& tick) {
-  load_table(m.class_we_i, m.class_waddr_i, p.voxel_bits, m.class_wdata_i, 3 * p.color_bits + p.alpha_bits, table,
+  // The address is {tag, value} (golden class_address).
+  load_table(m.class_we_i, m.class_waddr_i, p.voxel_bits + p.tag_bits, m.class_wdata_i, 3 * p.color_bits + p.alpha_bits, table,
              [&p](const golden::ClassEntry& e) { return class_word(e, p); }, tick);
+}
+
+// Each tag's material (cube4_shade with VoxelTagBits > 0, golden
+// Registers::tag_coefs): {ke, kd, ks, spec r, g, b}, ke in the top bits.
+template <class M, class Tick>
+void load_materials(M& m, const golden::Precision& p, const std::vector<golden::ShadeCoefs>& mats, Tick&& tick) {
+  const int a = p.alpha_bits, c = p.coef_bits;
+  for (size_t t = 0; t < mats.size(); ++t) {
+    const golden::ShadeCoefs& k = mats[t];
+    m.mat_we_i = 1;
+    put_bits(m.mat_waddr_i, 0, p.tag_bits, t);
+    put_bits(m.mat_wdata_i, 0, a, k.specular[2]);
+    put_bits(m.mat_wdata_i, a, a, k.specular[1]);
+    put_bits(m.mat_wdata_i, 2 * a, a, k.specular[0]);
+    put_bits(m.mat_wdata_i, 3 * a, c, k.ks);
+    put_bits(m.mat_wdata_i, 3 * a + c, c, k.kd);
+    put_bits(m.mat_wdata_i, 3 * a + 2 * c, c, k.ke);
+    tick();
+  }
+  m.mat_we_i = 0;
 }
 
 // The GmLUT (cube4_shade_classify and up).

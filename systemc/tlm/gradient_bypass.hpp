@@ -22,6 +22,7 @@ class GradientBypass final : public GradientIf {
     out.y = y_;
     out.slice = plan_.tag_slice(in.tag);
     out.sample = in.sample;
+    out.vtag = in.vtag;
     ++j_;
     if (in.f.beam_end) {
       j_ = 0;

@@ -3,7 +3,8 @@
 namespace cube4::sysc {
 
 TlmGradient::TlmGradient(const FramePlan& plan)
-    : plan_(plan), behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1) {}
+    : plan_(plan), behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1),
+      tags_current_(plan.nx, plan.ny, 1), tags_ahead_(plan.nx, plan.ny, 1) {}
 
 void TlmGradient::emit_current() {
   const golden::SliceControl& c = plan_.slices[static_cast<size_t>(current_slice_)];
@@ -23,6 +24,7 @@ void TlmGradient::emit_current() {
         const golden::Gradient g = golden::sample_gradient(plan_.r, c, n);
         const auto i = static_cast<size_t>(k);
         b.sample[i] = static_cast<uint16_t>(n.centre);
+        b.vtag[i] = static_cast<uint8_t>(tags_current_.at(x, y));
         b.gx[i] = static_cast<int16_t>(g.x);
         b.gy[i] = static_cast<int16_t>(g.y);
         b.gz[i] = static_cast<int16_t>(g.z);
@@ -37,7 +39,9 @@ void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
     int32_t* row = ahead_.row(y_);
     for (int k = 0; k < plan_.p; ++k) {
       const int x = j_ * plan_.p + k;
-      if (x < plan_.nx) row[x] = in.sample[static_cast<size_t>(k)];
+      if (x >= plan_.nx) continue;
+      row[x] = in.sample[static_cast<size_t>(k)];
+      tags_ahead_.row(y_)[x] = in.vtag[static_cast<size_t>(k)];
     }
     ++j_;
     if (in.f.beam_end) {
@@ -46,15 +50,20 @@ void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
     }
     if (in.f.slice_end && in.f.beam_end) {
       const bool zero = plan_.tag_zero_slice(in.tag);
-      if (zero) ahead_.clear();
+      if (zero) {
+        ahead_.clear();
+        tags_ahead_.clear();
+      }
       if (current_slice_ >= 0) emit_current();
       std::swap(behind_, current_);
       std::swap(current_, ahead_);
+      std::swap(tags_current_, tags_ahead_);
       current_slice_ = static_cast<int>(plan_.tag_slice(in.tag));
       if (zero) {  // the frame's end: the next slice is the first of a frame
         current_slice_ = -1;
         behind_.clear();
         current_.clear();
+        tags_current_.clear();
       }
     }
   }

@@ -21,6 +21,9 @@ class TlmGradient final : public GradientIf {
   void emit_current();
   const FramePlan& plan_;
   golden::Plane behind_, current_, ahead_;
+  // The voxel tags of the current and ahead slices' samples (the centre's
+  // tag travels with it; no tag of a neighbour is used).
+  golden::Plane tags_current_, tags_ahead_;
   int current_slice_ = -1;  // none yet in this frame
   int y_ = 0, j_ = 0;
   std::deque<GradientBeat> out_;

@@ -4,16 +4,26 @@ namespace cube4::sysc {
 
 TlmInterp::TlmInterp(const FramePlan& plan)
     : plan_(plan), pass_(plan.nx, plan.ny, 1), store_(plan.nx, plan.ny, 1), samples_(plan.nx, plan.ny, 1),
-      interp_(plan.nx, plan.ny, plan.r.p.weight_bits) {}
+      tagged_(plan.r.p.tag_bits > 0), interp_(plan.nx, plan.ny, plan.r.p.weight_bits) {
+  if (tagged_) {
+    pass_tags_ = store_tags_ = sample_tags_ = golden::Plane(plan.nx, plan.ny, 1);
+    whole_.assign(static_cast<size_t>(plan.ny), golden::Span{0, plan.nx});
+  }
+}
 
 void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
   if (in.valid) {
     if (in.f.slice_start && in.f.beam_start) y_ = 0;
     if (y_ < plan_.ny) {
+      // The voxel word {tag, value}: the value in its voxel_bits, the tag above.
+      const int bits = plan_.r.p.voxel_bits;
       int32_t* row = pass_.row(y_);
       for (int k = 0; k < plan_.p; ++k) {
         const int x = j_ * plan_.p + k;
-        if (x < plan_.nx) row[x] = in.voxel[static_cast<size_t>(k)];
+        if (x >= plan_.nx) continue;
+        const uint32_t word = in.voxel[static_cast<size_t>(k)];
+        row[x] = static_cast<int32_t>(word & ((1u << bits) - 1u));
+        if (tagged_) pass_tags_.row(y_)[x] = static_cast<int32_t>(word >> bits);
       }
     }
     ++j_;
@@ -28,8 +38,12 @@ void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
       c.wx = in.wx;
       c.wy = in.wy;
       c.wz = in.wz;
-      if (in.wz == 0) std::swap(store_, pass_);
+      if (in.wz == 0) {
+        std::swap(store_, pass_);
+        std::swap(store_tags_, pass_tags_);
+      }
       interp_.slice(store_, pass_, c, samples_);
+      if (tagged_) interp_.tags(store_tags_, pass_tags_, c, sample_tags_, 0, plan_.ny, whole_.data());
       for (int y = 0; y < plan_.ny; ++y)
         for (int j = 0; j < plan_.B; ++j) {
           SampleBeat b;
@@ -39,6 +53,7 @@ void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
           for (int k = 0; k < plan_.p; ++k) {
             const int x = j * plan_.p + k;
             b.sample[static_cast<size_t>(k)] = x < plan_.nx ? static_cast<uint16_t>(samples_.at(x, y)) : 0;
+            if (tagged_ && x < plan_.nx) b.vtag[static_cast<size_t>(k)] = static_cast<uint8_t>(sample_tags_.at(x, y));
           }
           out_.push_back(b);
         }

@@ -22,6 +22,11 @@ class TlmInterp final : public InterpIf {
  private:
   const FramePlan& plan_;
   golden::Plane pass_, store_, samples_;
+  // With voxel tags: the tags of the same voxels and samples (the voxel
+  // words' upper bits), and the spans of a whole slice.
+  bool tagged_;
+  golden::Plane pass_tags_, store_tags_, sample_tags_;
+  std::vector<golden::Span> whole_;
   golden::SliceInterp interp_;
   int y_ = 0, j_ = 0;
   std::deque<SampleBeat> out_;

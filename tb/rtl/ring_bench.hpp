@@ -191,6 +191,7 @@ const F& cached_frame(const std::string& key, Build&& build) {
 struct SampleFrame : RingFrame {
   std::unique_ptr<golden::PermutedVolume> pv;  // refers to vol
   std::vector<uint32_t> samples;               // [(k * ny + y) * nx + x]
+  std::vector<uint32_t> vtags;                 // the samples' voxel tags (bela §III), same index
   std::vector<golden::Gradient> gradients;
   size_t index(int k, int y, int x) const { return (static_cast<size_t>(k) * ny + y) * nx + x; }
 };
@@ -215,17 +216,30 @@ struct SampleCollect : golden::SampleProbe {
         !same(e.behind_y, c.behind_y) || !same(e.ahead_x, c.ahead_x) || !same(e.ahead_y, c.ahead_y))
       control_ok = false;
   }
+  void tagged(int x, int y, const golden::SliceControl& c, uint32_t tag) override {
+    f.vtags[f.index(c.k, y, x)] = tag;
+  }
 };
 
 // A noise volume of `size` seen along `dir`, unshaded, with the gradient
 // unit on or off: the scenes of the interpolation and gradient rings.
+// vtag_bits > 0: with voxel tags of that width (bela §III), labelled by
+// value bands and a box so that neighbouring voxels' tags differ.
 inline const SampleFrame& sample_frame(const std::string& name, const std::array<int, 3>& size,
                                        const std::array<double, 3>& dir, const std::array<double, 3>& up, int S,
-                                       int seed, bool gradient) {
+                                       int seed, bool gradient, int vtag_bits = 0) {
   std::ostringstream js;
   js << R"({"volume": {"synthetic": "noise", "size": [)" << size[0] << ", " << size[1] << ", " << size[2]
      << R"(], "seed": )" << seed << R"(}, "view": )" << direction_json(dir, up) << R"(, "supersampling": )" << S
-     << R"(, "shading": false})";
+     << R"(, "shading": false)";
+  if (vtag_bits > 0) {
+    const int top = (1 << vtag_bits) - 1;
+    js << R"(, "precision": {"tag_bits": )" << vtag_bits << R"(}, "tags": {"label": [)"
+       << R"({"tag": 1, "threshold": [0, 0.3]}, )"
+       << R"({"tag": )" << top << R"(, "threshold": [0.3, 0.6]}, )"
+       << R"({"tag": )" << (top + 1) / 2 << R"(, "box": {"min": [0, 0, 0], "max": [2, 3, 1]}}]})";
+  }
+  js << "}";
   const std::string json = js.str();
   return cached_frame<SampleFrame>(json + (gradient ? " gradient" : ""), [&](SampleFrame& f) {
     std::ostringstream n;
@@ -236,6 +250,7 @@ inline const SampleFrame& sample_frame(const std::string& name, const std::array
     EXPECT_EQ(f.pv->dim(), f.regs.dim);
     f.samples.assign(static_cast<size_t>(f.K) * f.ny * f.nx, 0);
     f.gradients.assign(f.samples.size(), golden::Gradient{});
+    f.vtags.assign(f.samples.size(), 0);
     SampleCollect probe(f);
     golden::render_fixed(f.vol, f.regs, nullptr, {}, &probe);
     for (int c : probe.count)
@@ -285,6 +300,7 @@ struct VoxelStreamOptions {
   int max_gap = 3;    // 1 .. max_gap idle cycles each time
   bool junk = false;  // random voxels in the zero beam and the zero pass, random weights in the zero pass
                       // (one set for the pass: the interpolation unit's stream keeps a pass's weights)
+  int vtag_bits = 0;  // voxel tag width: the stream's voxels are the words {tag, value} (bela §III)
 };
 
 // A partial beam of samples the interpolation ring emits (every pipeline
@@ -328,7 +344,8 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
                                 const VoxelStreamOptions& opt, Random& rng) {
   VoxelStream s;
   auto idle = [&](int n) {
-    for (int i = 0; i < n; ++i) s.beats.push_back(junk_voxel_beat(rng, plans.front().p, voxel_bits, tag_bits));
+    for (int i = 0; i < n; ++i)
+      s.beats.push_back(junk_voxel_beat(rng, plans.front().p, voxel_bits + opt.vtag_bits, tag_bits));
     s.idle += static_cast<uint64_t>(n);
   };
   std::vector<PassSample> due;  // with the index of the beat that produces them
@@ -355,8 +372,10 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
           b.wz = st.wz;
           b.tag = pass_tag;
           for (int q = 0; q < p; ++q) {
-            uint32_t v = st.reads ? f.pv->at(j * p + q, y, st.voxel_slice) : 0;  // zero outside the volume
-            if (opt.junk && (y == plan.ny || zero)) v = static_cast<uint32_t>(rng.bits(voxel_bits));
+            const int x = j * p + q;  // zero outside the volume
+            uint32_t v = st.reads ? f.pv->at(x, y, st.voxel_slice) : 0;
+            if (st.reads && opt.vtag_bits > 0) v |= uint32_t{f.pv->tag_at(x, y, st.voxel_slice)} << voxel_bits;
+            if (opt.junk && (y == plan.ny || zero)) v = static_cast<uint32_t>(rng.bits(voxel_bits + opt.vtag_bits));
             b.voxel[static_cast<size_t>(q)] = static_cast<uint16_t>(v);
           }
           s.beats.push_back(b);

@@ -19,6 +19,7 @@
 #include "Vcube4_interp.h"
 #include "Vcube4_interp_w10.h"
 #include "Vcube4_interp_w6.h"
+#include "Vcube4_interp_t4.h"
 #include "golden/units/interp.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
@@ -140,6 +141,74 @@ void test_trilinear(const char* unit, int V, int W) {
     std::printf("  %s V=%d W=%d: %llu directed+random, %llu with gaps\n", unit, V, W,
                 static_cast<unsigned long long>(sb.checked()), static_cast<unsigned long long>(gaps.checked()));
   }
+  m->final();
+}
+
+// Voxel tags (bela §III): the sample's tag is its nearest voxel's, golden
+// sample_tag(), delayed with the sample; every corner, every weight around
+// the half (the tie goes up) and the ends, then a million random sets.
+struct TagIn {
+  TriIn tri;
+  std::array<uint32_t, 8> t{};
+  Fields fields() const {
+    Fields f = tri.fields();
+    for (int i = 0; i < 8; ++i) f.push_back({"t" + std::to_string(i), t[i]});
+    return f;
+  }
+};
+struct TagOut {
+  uint32_t sample = 0, tag = 0;
+  bool operator==(const TagOut& o) const { return sample == o.sample && tag == o.tag; }
+  Fields fields() const { return {{"sample", sample}, {"tag", tag}}; }
+};
+
+TEST(RtlInterp, VoxelTagsTakeTheNearestVoxels) {
+  constexpr int V = 12, W = 8, T = 4;
+  const uint32_t vmax = (1u << V) - 1, wmax = 1u << W, tmax = (1u << T) - 1;
+  Random rng(77);
+  auto random_in = [&] {
+    TagIn in;
+    for (auto& x : in.tri.v) x = static_cast<uint32_t>(rng.edgy(vmax, 0.05));
+    for (auto& x : in.t) x = static_cast<uint32_t>(rng.bits(T));
+    in.tri.wx = rng.edgy(wmax), in.tri.wy = rng.edgy(wmax), in.tri.wz = rng.edgy(wmax);
+    return in;
+  };
+  std::vector<TagIn> directed;
+  const uint32_t wc[] = {0, 1, wmax / 2 - 1, wmax / 2, wmax / 2 + 1, wmax - 1, wmax};
+  for (uint32_t wx : wc)
+    for (uint32_t wy : wc)
+      for (uint32_t wz : wc) {
+        TagIn in = random_in();
+        for (int i = 0; i < 8; ++i) in.t[i] = i == 0 ? tmax : static_cast<uint32_t>(i);
+        in.tri.wx = wx, in.tri.wy = wy, in.tri.wz = wz;
+        directed.push_back(in);
+      }
+  auto drive = [&](Vcube4_interp_t4& m, const TagIn& in) {
+    for (int i = 0; i < 8; ++i) put_bits(m.voxels_i, i * V, V, in.tri.v[i]);
+    m.wx_i = in.tri.wx;
+    m.wy_i = in.tri.wy;
+    m.wz_i = in.tri.wz;
+    uint64_t tags = 0;
+    for (int i = 0; i < 8; ++i) tags |= uint64_t{in.t[i]} << (T * i);
+    m.vtags_i = static_cast<uint32_t>(tags);
+  };
+  auto golden = [&](const TagIn& in) {
+    return TagOut{g::trilinear(in.tri.v, in.tri.wx, in.tri.wy, in.tri.wz, W),
+                  g::sample_tag(in.t, in.tri.wx, in.tri.wy, in.tri.wz, W)};
+  };
+  auto read = [](Vcube4_interp_t4& m) { return TagOut{static_cast<uint32_t>(m.sample_o), static_cast<uint32_t>(m.vtag_o)}; };
+  auto m = std::make_unique<Vcube4_interp_t4>();
+  const long nd = static_cast<long>(directed.size());
+  Scoreboard<TagIn, TagOut> sb("cube4_interp_t4", kInterpLatency);
+  auto gen = [&](long i) { return i >= 0 && i < nd ? directed[i] : random_in(); };
+  run_stream(*m, sb, nd + kRandom, 1.0, rng, gen, drive, golden, read, kInterpLatency);
+  EXPECT_TRUE(sb.ok()) << sb.report();
+  Scoreboard<TagIn, TagOut> gaps("cube4_interp_t4 (valid gaps)", kInterpLatency);
+  run_stream(*m, gaps, kRandomGaps, cube4::rtl::kGapValid, rng, [&](long) { return random_in(); }, drive, golden, read,
+             kInterpLatency);
+  EXPECT_TRUE(gaps.ok()) << gaps.report();
+  std::printf("  cube4_interp_t4: %llu directed+random, %llu with gaps\n", static_cast<unsigned long long>(sb.checked()),
+              static_cast<unsigned long long>(gaps.checked()));
   m->final();
 }
 

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -29,6 +30,7 @@
 #include "Vcube4_interp_ring_p1.h"
 #include "Vcube4_interp_ring_p2.h"
 #include "Vcube4_interp_ring_p5.h"
+#include "Vcube4_interp_ring_t4.h"
 #include "golden/pipeline.hpp"
 #include "systemc/rtl/unit_streams.hpp"
 #include "tb/rtl/ring_bench.hpp"
@@ -43,6 +45,9 @@ using namespace cube4::rtl;  // the shared bench: rtl_check.hpp, ring_bench.hpp
 // Ring parameters, as in rtl/groups/interp.cmake.
 constexpr int kVoxelBits = 12;  // ring defaults
 constexpr int kTagBits = 8;
+// The ring with 4-bit voxel tags: p = 4, MaxDim = 16.
+constexpr int kVoxelTagBits = 4;
+constexpr RingParams kRingT4{4, 16};
 
 
 // ===========================================================================
@@ -125,8 +130,8 @@ TEST(RtlDelayRam, MatchesModelDepth1) { test_delay_ram<Vcube4_delay_ram_d1>("cub
 // The ring against the golden renderer.
 
 const SampleFrame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
-                         const std::array<double, 3>& up, int S, int seed) {
-  return sample_frame(name, size, dir, up, S, seed, /*gradient=*/false);
+                         const std::array<double, 3>& up, int S, int seed, int vtag_bits = 0) {
+  return sample_frame(name, size, dir, up, S, seed, /*gradient=*/false, vtag_bits);
 }
 
 struct RunResult {
@@ -145,8 +150,10 @@ VoxelStream make_stream(const std::vector<const SampleFrame*>& frames, int p, co
                       kVoxelBits, kTagBits, opt, rng);
 }
 
+// vtag_bits: the ring's VoxelTagBits; its samples' tags are then checked too.
 template <class M>
-RunResult run_ring(M& m, int p, const std::vector<const SampleFrame*>& frames, const VoxelStream& s, Random& rng) {
+RunResult run_ring(M& m, int p, const std::vector<const SampleFrame*>& frames, const VoxelStream& s, Random& rng,
+                   int vtag_bits) {
   RunResult r;
   cube4::rtl::reset(m);
   auto fail = [&](uint64_t cycle, int pipe, const PassSample* e, const std::string& what, const std::string& detail) {
@@ -157,8 +164,9 @@ RunResult run_ring(M& m, int p, const std::vector<const SampleFrame*>& frames, c
   size_t ei = 0;
   const uint64_t end = s.beats.size() + 2 * kInterpLatency;
   for (uint64_t cycle = 0; cycle < end; ++cycle) {
-    const sysc::VoxelBeat b = cycle < s.beats.size() ? s.beats[cycle] : junk_voxel_beat(rng, p, kVoxelBits, kTagBits);
-    drive_interp_stream(m, b, p, kVoxelBits, kTagBits);
+    const int word_bits = kVoxelBits + vtag_bits;
+    const sysc::VoxelBeat b = cycle < s.beats.size() ? s.beats[cycle] : junk_voxel_beat(rng, p, word_bits, kTagBits);
+    drive_interp_stream(m, b, p, word_bits, kTagBits);
     cube4::rtl::settle(m);
 
     const PassSample* e = ei < s.samples.size() && s.samples[ei].cycle == cycle ? &s.samples[ei] : nullptr;
@@ -172,8 +180,12 @@ RunResult run_ring(M& m, int p, const std::vector<const SampleFrame*>& frames, c
       const bool bs = get_bits(m.beam_start_o, k, 1), be = get_bits(m.beam_end_o, k, 1);
       const bool ss = get_bits(m.slice_start_o, k, 1), se = get_bits(m.slice_end_o, k, 1);
       const uint64_t tag = get_bits(m.tag_o, k * kTagBits, kTagBits);
+      // Without tag hardware the lane is one bit, always 0.
+      const int lane = vtag_bits > 0 ? vtag_bits : 1;
+      const uint32_t exp_vtag = x < f.nx ? f.vtags[f.index(e->k, e->y, x)] : 0;
+      const auto vtag = static_cast<uint32_t>(get_bits(m.vtag_o, k * lane, lane));
       if (got != exp || bs != e->f.beam_start || be != e->f.beam_end || ss != e->f.slice_start ||
-          se != e->f.slice_end || tag != e->tag) {
+          se != e->f.slice_end || tag != e->tag || vtag != exp_vtag) {
         std::ostringstream d;
         d << "expected: sample=" << exp << " beam_start=" << e->f.beam_start << " beam_end=" << e->f.beam_end
           << " slice_start=" << e->f.slice_start << " slice_end=" << e->f.slice_end << " tag=" << e->tag
@@ -204,7 +216,7 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
   Random rng(salt);
   const VoxelStream s = make_stream(frames, rp.p, opt, rng);
   auto m = std::make_unique<M>();
-  const RunResult r = run_ring(*m, rp.p, frames, s, rng);
+  const RunResult r = run_ring(*m, rp.p, frames, s, rng, opt.vtag_bits);
   m->final();
   EXPECT_TRUE(r.ok) << r.report;
   if (!r.ok) return;
@@ -310,6 +322,32 @@ TEST(RtlInterpRing, RandomScenes) {
   }
   std::printf("  %ld random scenes, each through p = 1, 2, 4, 5: %llu golden samples matched\n", n,
               static_cast<unsigned long long>(samples));
+}
+
+// Voxel tags (bela §III): every view, S = 1, 2, 3, with and without stalls
+// and junk, through the ring with 4-bit tags; each sample's tag is golden's
+// (its nearest voxel's, the SampleProbe's tagged()). Neighbouring voxels'
+// tags differ (value bands of a noise volume), so a wrong corner shows.
+TEST(RtlInterpRing, VoxelTagsTakeTheNearestVoxels) {
+  Timer t("voxel tags");
+  uint64_t samples = 0;
+  for (size_t v = 0; v < kViews.size(); ++v)
+    for (int S : {1, 2, 3}) {
+      const SampleFrame& f = frame(kViews[v].name, kSizes[(v + S) % kSizes.size()], kViews[v].dir, kViews[v].up, S,
+                                   static_cast<int>(60 + v), kVoxelTagBits);
+      // The labelling gives the samples several tags (else the test proves little).
+      std::set<uint32_t> seen(f.vtags.begin(), f.vtags.end());
+      EXPECT_GE(seen.size(), 3u) << f.name << ": the samples' tags hardly differ";
+      for (bool stalls : {false, true}) {
+        VoxelStreamOptions opt;
+        opt.stall = stalls ? 0.3 : 0;
+        opt.junk = stalls;
+        opt.vtag_bits = kVoxelTagBits;
+        check_ring<Vcube4_interp_ring_t4>(kRingT4, {&f}, opt, 700 + 10 * v + S + (stalls ? 5 : 0), &samples);
+        if (::testing::Test::HasFailure()) return;
+      }
+    }
+  std::printf("  %llu golden samples and tags matched\n", static_cast<unsigned long long>(samples));
 }
 
 // A larger volume through the default ring (p = 4, 256^3 storage), every

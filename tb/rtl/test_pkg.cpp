@@ -34,7 +34,7 @@ constexpr PackageWidth kPackageWidths[] = {
     {"MapBits", Pkg::MapBits},           {"MapFracBits", Pkg::MapFracBits},
     {"CoefBits", Pkg::CoefBits},         {"CoefFracBits", Pkg::CoefFracBits},
     {"EyeBits", Pkg::EyeBits},           {"CutBits", Pkg::CutBits},
-    {"AccGuardBits", Pkg::AccGuardBits},
+    {"AccGuardBits", Pkg::AccGuardBits}, {"VoxelTagBits", Pkg::VoxelTagBits},
 };
 
 TEST(RtlPackage, DefaultsAreGoldens) {

@@ -25,6 +25,8 @@
 #include <vector>
 
 #include "Vcube4_shade_classify.h"
+#include "Vcube4_shade_classify_t2.h"
+#include "Vcube4_shade_t2.h"
 #include "Vcube4_shade_cube_coord.h"
 #include "Vcube4_shade_phong.h"
 #include "Vcube4_shade_reflectance.h"
@@ -224,34 +226,45 @@ const char* kShadedSphere =
 // ===========================================================================
 // cube4_shade_classify
 // ===========================================================================
+// `tag`: the sample's voxel tag (bela §III), 0 without tags; vtag is it
+// delayed with the sample.
 struct ClassIn {
   uint32_t sample = 0, mag = 0;
   bool magnitude = false, gm_opacity = false;
+  uint32_t tag = 0;
   Fields fields() const {
-    return {{"sample", sample}, {"grad_mag", mag}, {"magnitude", magnitude}, {"gm_opacity", gm_opacity}};
+    return {{"sample", sample}, {"grad_mag", mag}, {"magnitude", magnitude}, {"gm_opacity", gm_opacity}, {"tag", tag}};
   }
 };
 struct ClassOut {
-  uint32_t r = 0, gr = 0, b = 0, a = 0, gm = 0;
+  uint32_t r = 0, gr = 0, b = 0, a = 0, gm = 0, vtag = 0;
   bool operator==(const ClassOut& o) const {
-    return r == o.r && gr == o.gr && b == o.b && a == o.a && gm == o.gm;
+    return r == o.r && gr == o.gr && b == o.b && a == o.a && gm == o.gm && vtag == o.vtag;
   }
-  Fields fields() const { return {{"red", r}, {"green", gr}, {"blue", b}, {"alpha", a}, {"gm", gm}}; }
+  Fields fields() const { return {{"red", r}, {"green", gr}, {"blue", b}, {"alpha", a}, {"gm", gm}, {"vtag", vtag}}; }
 };
 
-class ClassifyBench : public Bench<Vcube4_shade_classify, ClassIn, ClassOut> {
+// M: cube4_shade_classify verilated with p's widths (tag_bits: VoxelTagBits).
+template <class M = Vcube4_shade_classify>
+class ClassifyBench : public Bench<M, ClassIn, ClassOut> {
+  using Base = Bench<M, ClassIn, ClassOut>;
+  using Base::m;
+  using Base::drain;
+  using Base::step;
+
  public:
   static constexpr int kLatency = 2;
-  ClassifyBench() : Bench("cube4_shade_classify", kLatency) {
+  explicit ClassifyBench(const g::Precision& precision = kP, const char* unit = "cube4_shade_classify")
+      : Base(unit, kLatency), p(precision) {
     m->class_we_i = 0;
     m->gmlut_we_i = 0;
-    start();
+    this->start();
   }
   void load(const std::vector<g::ClassEntry>& cls, const std::vector<uint16_t>& gm) {
     drain();
     table = cls;
     gmlut = gm;
-    auto tick = [this] { idle(); };
+    auto tick = [this] { this->idle(); };
     rtl::load_class_table(*m, p, cls, tick);
     rtl::load_gm_lut(*m, p, gm, tick);
   }
@@ -260,11 +273,11 @@ class ClassifyBench : public Bench<Vcube4_shade_classify, ClassIn, ClassOut> {
     m->magnitude_i = magnitude;
     m->gm_opacity_i = gm_opacity;
   }
-  void sample(bool valid, uint32_t sample, uint32_t mag) {
-    step(valid, {sample, mag, static_cast<bool>(m->magnitude_i), static_cast<bool>(m->gm_opacity_i)});
+  void sample(bool valid, uint32_t sample, uint32_t mag, uint32_t tag = 0) {
+    step(valid, {sample, mag, static_cast<bool>(m->magnitude_i), static_cast<bool>(m->gm_opacity_i), tag});
   }
 
-  g::Precision p = kP;
+  g::Precision p;
   std::vector<g::ClassEntry> table;
   std::vector<uint16_t> gmlut;
 
@@ -272,25 +285,26 @@ class ClassifyBench : public Bench<Vcube4_shade_classify, ClassIn, ClassOut> {
   void drive(const ClassIn& in) override {
     put(m->sample_i, in.sample, p.voxel_bits);
     put(m->grad_mag_i, in.mag, p.magnitude_bits);
+    m->vtag_i = in.tag;
   }
   ClassOut read() override {
     return {static_cast<uint32_t>(m->red_o), static_cast<uint32_t>(m->green_o),
             static_cast<uint32_t>(m->blue_o), static_cast<uint32_t>(m->alpha_o),
-            static_cast<uint32_t>(m->gm_o)};
+            static_cast<uint32_t>(m->gm_o),  static_cast<uint32_t>(m->vtag_o)};
   }
   // As golden shade_sample() composes them.
   ClassOut golden(const ClassIn& in) override {
     const uint32_t one = static_cast<uint32_t>(g::max_unsigned(p.alpha_bits));
-    const g::ClassEntry& e = g::classify(table, in.sample);
+    const g::ClassEntry& e = g::classify(table, in.tag, in.sample, p);
     const uint32_t gm = in.magnitude ? g::gm_unit(gmlut[in.mag], p) : one;
     const uint32_t alpha = in.gm_opacity ? g::modulate_alpha(e.a, gm, p) : e.a;
     const g::Rgb rgb = g::widen_color(e.r, e.g, e.b, p);
-    return {rgb[0], rgb[1], rgb[2], alpha, gm};
+    return {rgb[0], rgb[1], rgb[2], alpha, gm, in.tag};
   }
 };
 
 std::vector<g::ClassEntry> random_class_table(Random& rnd, const g::Precision& p) {
-  std::vector<g::ClassEntry> t(size_t{1} << p.voxel_bits);
+  std::vector<g::ClassEntry> t(size_t{1} << (p.voxel_bits + p.tag_bits));
   const int64_t cmax = g::max_unsigned(p.color_bits), amax = g::max_unsigned(p.alpha_bits);
   for (auto& e : t) {
     e.r = static_cast<uint16_t>(rnd.edgy(cmax, 0.2));
@@ -309,7 +323,7 @@ std::vector<uint16_t> random_gmlut(Random& rnd, const g::Precision& p) {
 TEST(RtlShadeClassify, EveryAlphaTimesEveryGmLutValue) {
   // Identity tables: sample i has alpha i, |g| = j reads GmLUT value j, so
   // the exhaustive (sample, |g|) sweep covers every product of the modulation.
-  ClassifyBench b;
+  ClassifyBench<> b;
   const g::Precision& p = b.p;
   std::vector<g::ClassEntry> cls(size_t{1} << p.voxel_bits);
   for (size_t i = 0; i < cls.size(); ++i)
@@ -329,10 +343,10 @@ TEST(RtlShadeClassify, EveryAlphaTimesEveryGmLutValue) {
   std::printf("classify exhaustive: %llu vectors\n", static_cast<unsigned long long>(b.vectors));
 }
 
-TEST(RtlShadeClassify, RandomTablesAndModes) {
-  ClassifyBench b;
+// A million random samples (and tags, with tags) over random tables and modes.
+template <class M>
+void classify_random(ClassifyBench<M>& b, Random& rnd) {
   const g::Precision& p = b.p;
-  Random rnd(102);
   const long n = rtl::vector_count(1000000);
   const long block = 20000;
   for (long done = 0; done < n;) {
@@ -341,16 +355,54 @@ TEST(RtlShadeClassify, RandomTablesAndModes) {
     const Gaps gaps = random_gaps(rnd);
     for (long i = 0; i < block && done < n; ++i) {
       const bool v = gaps.valid(rnd);
-      b.sample(v, static_cast<uint32_t>(rnd.bits(p.voxel_bits)), static_cast<uint32_t>(rnd.bits(p.magnitude_bits)));
+      const auto sample = static_cast<uint32_t>(rnd.bits(p.voxel_bits));
+      const auto mag = static_cast<uint32_t>(rnd.bits(p.magnitude_bits));
+      b.sample(v, sample, mag, p.tag_bits > 0 ? static_cast<uint32_t>(rnd.bits(p.tag_bits)) : 0);
       done += v;
     }
   }
-  EXPECT_TRUE(b.result());
   EXPECT_GE(b.vectors, static_cast<uint64_t>(n));
 }
 
+TEST(RtlShadeClassify, RandomTablesAndModes) {
+  ClassifyBench<> b;
+  Random rnd(102);
+  classify_random(b, rnd);
+  EXPECT_TRUE(b.result());
+}
+
+// Voxel tags (bela §III): 2-bit tags widen the table to {tag, sample}; a
+// million random samples of random tags over random tables and modes, and
+// the tagged spheres' table as the host driver builds it.
+g::Precision tagged_precision() {
+  g::Precision p = kP;
+  p.tag_bits = 2;
+  return p;
+}
+
+TEST(RtlShadeClassify, VoxelTagsAddressTheirOwnEntries) {
+  ClassifyBench<Vcube4_shade_classify_t2> b(tagged_precision(), "cube4_shade_classify_t2");
+  const g::Precision& p = b.p;
+  Random rnd(104);
+  classify_random(b, rnd);
+  // Two classes of their own and the scene's for tags 0 and 3.
+  const g::Scene s = g::parse_scene(R"({"volume": {"synthetic": "spheres", "size": [16, 16, 16]},
+      "precision": {"tag_bits": 2}, "tags": {"classes": [
+        {"tag": 1, "color": [[0, 1, 0.15, 0.1], [1, 1, 0.15, 0.1]]},
+        {"tag": 2, "color": [[0, 0.1, 0.2, 0.9], [1, 0.1, 0.2, 0.9]], "opacity": [[0, 0], [0.5, 0.9], [1, 0.9]]}]}})",
+                                    "tagged spheres");
+  g::Volume vol = g::make_synthetic(s.volume, s.precision.voxel_bits);
+  const g::HostProgram h = g::program_host(s, vol);
+  ASSERT_EQ(h.regs.p.tag_bits, p.tag_bits);
+  b.load(h.regs.classification, std::vector<uint16_t>(size_t{1} << p.magnitude_bits, 0));
+  b.modes(false, false);
+  for (uint32_t t = 0; t < 4; ++t)
+    for (uint32_t v = 0; v < (1u << p.voxel_bits); ++v) b.sample(true, v, 0, t);
+  EXPECT_TRUE(b.result());
+}
+
 TEST(RtlShadeClassify, HostDriverTables) {
-  ClassifyBench b;
+  ClassifyBench<> b;
   const g::HostProgram h = sphere_program(kShadedSphere);
   ASSERT_TRUE(h.regs.magnitude && h.regs.gm_opacity);
   b.load(h.regs.classification, h.regs.gm_lut);
@@ -873,7 +925,7 @@ struct ShaderIn {
             {"ks", k.ks},                  {"spec_red", k.specular[0]},
             {"spec_green", k.specular[1]}, {"spec_blue", k.specular[2]},
             {"eye_x", eye[0]},             {"eye_y", eye[1]},
-            {"eye_z", eye[2]}};
+            {"eye_z", eye[2]},             {"tag", n.tag}};
   }
 };
 struct ShadedOut {
@@ -918,6 +970,7 @@ class ShaderBench : public Bench<M, ShaderIn, ShadedOut> {
     if (r.gm_lut != regs.gm_lut) rtl::load_gm_lut(m, p, regs.gm_lut, tick);
     if (r.diffuse_map != regs.diffuse_map) rtl::load_map(m, p, rtl::Map::Diffuse, regs.diffuse_map, tick);
     if (r.specular_map != regs.specular_map) rtl::load_map(m, p, rtl::Map::Specular, regs.specular_map, tick);
+    if (p.tag_bits > 0) rtl::load_materials(m, p, regs.tag_coefs, tick);
     r = regs;
     r.crop_enabled = false;
     r.cut_enabled = false;
@@ -935,7 +988,7 @@ class ShaderBench : public Bench<M, ShaderIn, ShadedOut> {
     if (r.gradient) in.grad = g::sample_gradient(r, c, n);
     in.mag = g::gradient_magnitude(in.grad, p);
     in.modes = modes;
-    in.k = r.coefs;
+    in.k = r.coefs_of(n.tag);
     in.eye = r.eye;
     this->step(valid, in);
   }
@@ -954,6 +1007,7 @@ class ShaderBench : public Bench<M, ShaderIn, ShadedOut> {
     put(m.grad_y_i, in.grad.y, p.gradient_bits);
     put(m.grad_z_i, in.grad.z, p.gradient_bits);
     put(m.grad_mag_i, in.mag, p.magnitude_bits);
+    if (p.tag_bits > 0) put(m.vtag_i, in.n.tag, p.tag_bits);
   }
   ShadedOut read() override {
     M& m = *this->m;
@@ -997,9 +1051,19 @@ g::Neighbourhood random_neighbourhood(Random& rnd, const g::Precision& p) {
     for (uint32_t* v : {&n.left, &n.right, &n.up, &n.down}) *v = static_cast<uint32_t>(rnd.bits(p.voxel_bits));
     for (auto& v : n.behind) v = static_cast<uint32_t>(rnd.bits(p.voxel_bits));
     for (auto& v : n.ahead) v = static_cast<uint32_t>(rnd.bits(p.voxel_bits));
+    if (p.tag_bits > 0) n.tag = static_cast<uint32_t>(rnd.bits(p.tag_bits));
     return n;
   }
-  return neighbourhood_for(random_gradient(rnd, p), sample, p);
+  g::Neighbourhood n = neighbourhood_for(random_gradient(rnd, p), sample, p);
+  if (p.tag_bits > 0) n.tag = static_cast<uint32_t>(rnd.bits(p.tag_bits));
+  return n;
+}
+
+// With tags: a material per tag, entry 0 the frame registers' (as the host driver sets them).
+void random_materials(Random& rnd, g::Registers& r) {
+  r.tag_coefs.clear();
+  for (int t = 0; r.p.tag_bits > 0 && t < (1 << r.p.tag_bits); ++t)
+    r.tag_coefs.push_back(t == 0 ? r.coefs : random_coefs(rnd, r.p));
 }
 
 // Random tables and frame registers; modes from `bits` (ShaderIn::modes order).
@@ -1011,6 +1075,7 @@ g::Registers random_registers(Random& rnd, const g::Precision& p, uint32_t bits)
   r.diffuse_map = random_map(rnd, p);
   r.specular_map = random_map(rnd, p);
   r.coefs = random_coefs(rnd, p);
+  random_materials(rnd, r);
   r.eye = random_eye(rnd, p);
   r.gradient = bits & 1;
   r.magnitude = bits >> 1 & 1;
@@ -1036,6 +1101,7 @@ void shader_random(const std::string& name, const g::Precision& p, int div_bits,
       regs = random_registers(rnd, p, 0);
     } else {
       regs.coefs = random_coefs(rnd, p);
+      random_materials(rnd, regs);
       regs.eye = random_eye(rnd, p);
     }
     const uint32_t bits = combo % 8 == 7 ? 0x7Fu : static_cast<uint32_t>(rnd.bits(7));
@@ -1060,6 +1126,12 @@ void shader_random(const std::string& name, const g::Precision& p, int div_bits,
 
 TEST(RtlShade, RandomTablesAndModes) {
   shader_random<Vcube4_shade>("cube4_shade", kP, 2, rtl::vector_count(1000000));
+}
+
+// Voxel tags (bela §III): 2-bit tags, random per sample, address their own
+// classification entries and shade with their own material.
+TEST(RtlShade, VoxelTagsClassifyAndShadeByTheirTag) {
+  shader_random<Vcube4_shade_t2>("cube4_shade (2-bit tags)", tagged_precision(), 2, rtl::vector_count(1000000));
 }
 
 // Without shading hardware (HasShading = 0, what the system uses for scenes

@@ -50,6 +50,7 @@ struct Programmed {
 inline Programmed program(const Case& c) {
   const golden::Scene scene = golden::parse_scene(scene_json(c), "test_system.json");
   Programmed f{golden::load_volume(scene.volume, scene.precision.voxel_bits, CUBE4_SOURCE_DIR), {}};
+  golden::load_tags(scene, f.vol, CUBE4_SOURCE_DIR);
   f.regs = golden::program_host(scene, f.vol).regs;
   return f;
 }

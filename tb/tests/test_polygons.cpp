@@ -379,7 +379,7 @@ std::string plane(int axis, golden::Vec3 centre, double size, const std::string&
 
 // The one sample of the constant volume, as the compositor receives it.
 golden::ShadedSample the_sample(const Hybrid& h) {
-  return golden::shade_classified(h.host.regs, h.volume.at(0, 0, 0), golden::Gradient{});
+  return golden::shade_classified(h.host.regs, h.volume.at(0, 0, 0), 0, golden::Gradient{});
 }
 
 // The pixel a mesh's fragments have: its colour and opacity, quantised.

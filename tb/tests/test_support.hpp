@@ -28,6 +28,7 @@ inline Setup setup_parsed(golden::Scene scene, const std::string& dir) {
   Setup s;
   s.scene = std::move(scene);
   s.volume = golden::load_volume(s.scene.volume, s.scene.precision.voxel_bits, dir);
+  golden::load_tags(s.scene, s.volume, dir);
   s.meshes = golden::load_meshes(s.scene, dir);
   s.host = golden::program_host(s.scene, s.volume, s.meshes);
   return s;

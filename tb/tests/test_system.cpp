@@ -240,6 +240,68 @@ TEST(System, ThroughTheHostInterface) {
   EXPECT_GT(bus, 0.0) << "the host bus time is annotated";
 }
 
+// Voxel tags (bela §III) through the host interface at transaction level:
+// the volume window carries {tag, value} words into the voxel memory, the
+// CLASS window the {tag, value} table and the MATERIAL window each tag's
+// coefficients; two touching spheres told apart only by their tags, from
+// all six base planes, equal golden's, in golden's cycles. A cycle-level run
+// refuses tags so far.
+TEST(System, TaggedSpheresThroughTheHostInterfaceTlm) {
+  if (!sysc::host_interface_available(4))
+    GTEST_SKIP() << "this process cannot build the host interface for p = 4 any more (ctest runs each test alone)";
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.levels = kTlm;
+  const std::string dir = std::string(CUBE4_SOURCE_DIR) + "/scenes";
+  for (int view = 0; view < 6; ++view) {
+    const int axis = view / 2;
+    SCOPED_TRACE("base plane " + std::to_string(view));
+    golden::Scene sc = golden::load_scene(dir + "/tagged_spheres.json");
+    golden::Vec3 d{0, 0, 0};
+    d[axis] = view % 2 ? -1 : 1;
+    sc.view.direction = d;
+    sc.view.up = axis == 1 ? golden::Vec3{0, 0, 1} : golden::Vec3{0, 1, 0};
+    golden::Volume vol = golden::load_volume(sc.volume, sc.precision.voxel_bits, dir);
+    golden::load_tags(sc, vol, dir);
+    ASSERT_FALSE(vol.tags.empty());
+    const golden::Registers regs = golden::program_host(sc, vol).regs;
+    const sysc::SystemResult res = sysc::render_through_host(regs, vol, cfg, {});
+    EXPECT_EQ(res.plane.rgba, golden::render_fixed(vol, regs).rgba);
+    EXPECT_EQ(res.frame_cycles, sysc::frame_cycles(regs, cfg.p).latency);
+    EXPECT_EQ(sysc::host_session(cfg, regs.p).machine.volume(0).tags, vol.tags);
+    sysc::SystemConfig rtl = cfg;
+    rtl.levels[static_cast<size_t>(sysc::Unit::Interp)] = Level::Rtl;
+    EXPECT_THROW(sysc::check_system_limits(regs, rtl), std::invalid_argument);
+  }
+}
+
+// The same spheres through the transaction-level units clocked beat by
+// beat: the voxel memory's words carry the tags, the interpolation unit
+// gives each sample its nearest voxel's, the gradient unit passes the
+// centre's on, the shading unit classifies and shades by it; every unit's
+// stream (tags included) and the base plane equal golden's, from all six
+// base planes.
+TEST(System, TaggedSpheresTlmCycleLevelAllBasePlanes) {
+  const char* dirs[6][2] = {{"[1, 0, 0]", "[0, 1, 0]"}, {"[-1, 0, 0]", "[0, 1, 0]"}, {"[0, 1, 0]", "[0, 0, 1]"},
+                            {"[0, -1, 0]", "[0, 0, 1]"}, {"[0, 0, 1]", "[0, 1, 0]"}, {"[0, 0, -1]", "[0, 1, 0]"}};
+  for (const auto& d : dirs) {
+    SCOPED_TRACE(d[0]);
+    Case c;
+    c.volume = R"({"synthetic": "spheres", "size": [14, 10, 9], "radius": 3.5})";
+    c.direction = d[0];
+    c.up = d[1];
+    c.transfer = R"("transfer": {"opacity": [[0, 0], [0.3, 0], [0.5, 0.6], [1, 0.8]]})";
+    c.effects = R"("shading": true, "material": {"ks": 0.4}, "precision": {"tag_bits": 2},
+                   "tags": {"label": [{"tag": 1, "box": {"min": [0, 0, 0], "max": [6, 9, 8]}},
+                                      {"tag": 2, "box": {"min": [7, 0, 0], "max": [13, 9, 8]}}],
+                            "classes": [{"tag": 1, "color": [[0, 1, 0.1, 0.1], [1, 1, 0.1, 0.1]]},
+                                        {"tag": 2, "color": [[0, 0.1, 0.1, 1], [1, 0.1, 0.1, 1]],
+                                         "material": {"kd": 0.5, "ks": 0.9}}]})";
+    run(c, 4, kTlm, true);
+    run(c, 3, kTlm, true);
+  }
+}
+
 // Subvolumes (VolumePro §4.2) at RTL: two volumes resident in voxel memory,
 // a 4-D animation of one of them by slab writes between frames (a bright
 // box moving through the noise) without reloading the rest, and the other
