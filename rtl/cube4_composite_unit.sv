@@ -253,7 +253,10 @@ module cube4_composite_unit #(
     .CutInvShift(CutInvShift),
     .PosBits    (PosBits),
     .CutCoefBits(CutCoefBits),
-    .HasCutPlane(HasCutPlane)
+    .HasCutPlane(HasCutPlane),
+    // The ray storage does not carry polygons yet (front and back images,
+    // Z per ray, the slab decoders: issue 12 point 4): no polygon hardware.
+    .HasPolygons(1'b0)
   ) u_composite (
     .clk_i            (clk_i),
     .rst_ni           (rst_ni),
@@ -282,6 +285,13 @@ module cube4_composite_unit #(
     .cut_falloff_i    (cut_falloff_i),
     .cut_inv_falloff_i(cut_inv_falloff_i),
     .cut_keep_inside_i(cut_keep_inside_i),
+    .poly_enabled_i   (1'b0),
+    .slice_k_i        ('0),
+    .ray_z_i          ('0),
+    .slab_red_i       ('0),
+    .slab_green_i     ('0),
+    .slab_blue_i      ('0),
+    .slab_alpha_i     ('0),
     .valid_i          (valid_i),
     .red_i            (red_i),
     .green_i          (green_i),

@@ -31,6 +31,8 @@ cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_narrow
 cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_volumepro PARAMS AlphaBits=12 AccGuardBits=0)
 # Without cut-plane hardware (the system's variant for scenes without one).
 cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_nocut PARAMS HasCutPlane=0)
+# Without polygon hardware (the system's variant for scenes without polygons).
+cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_nopoly PARAMS HasPolygons=0)
 # The unit's checker alone (tb/rtl/test_composite_sva.cpp drives its
 # ray-store order invariant into a violation, which the unit cannot produce).
 cube4_rtl_variant(test_rtl_composite cube4_composite_unit_sva Vcube4_composite_unit_sva)

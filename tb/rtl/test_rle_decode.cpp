@@ -22,11 +22,9 @@
 #include <vector>
 
 #include "Vcube4_rle_decode.h"
-#include "golden/polygons.hpp"
 #include "golden/rle_buffer.hpp"
-#include "golden/scene_io.hpp"
 #include "golden/units/rle_decode.hpp"
-#include "golden/volume_io.hpp"
+#include "tb/rtl/hybrid_scene.hpp"
 #include "tb/rtl/rtl_check.hpp"
 #include "tb/rtl/sva_check.hpp"
 
@@ -337,13 +335,10 @@ TEST(RtlRleDecode, AFragmentExactlyOnASlabBoundary) {
           "polygons": [{"shape": "plane", "size": [30, 30],
                         "transform": {"rotate": [0, 0, 0], "translate": [4.5, 4.5, 4.0]},
                         "color": [0.1, 0.3, 1], "opacity": 0.4, "lit": false}]})";
-  const g::Scene s = g::parse_scene(json, "test_rle_decode scene");
-  const g::Volume vol = g::load_volume(s.volume, s.precision.voxel_bits, ".");
-  const std::vector<g::Mesh> meshes = g::load_meshes(s, ".");
-  const g::HostProgram h = g::program_host(s, vol, meshes);
-  const g::PolygonFrame f = g::rasterise_polygons(s, meshes, h);
+  const rtl::HybridScene hs = rtl::hybrid_scene(json, "test_rle_decode scene");
+  const g::PolygonFrame& f = hs.frame;
   ASSERT_EQ(f.counts.in_slabs, 100u) << "the plane's fragments lie in the slabs";
-  const double depth = h.view.to_permuted({4.5, 4.5, 4.0})[2] * s.supersampling;  // 4 (or 5 if z is flipped)
+  const double depth = hs.host.view.to_permuted({4.5, 4.5, 4.0})[2] * hs.scene.supersampling;  // 4 (or 5 if z is flipped)
   ASSERT_EQ(depth, std::round(depth));
   const size_t boundary = static_cast<size_t>(depth) - 1;
   std::vector<RleBench> lanes(4);
