@@ -173,11 +173,6 @@ module cube4_composite #(
   localparam int unsigned RampBits = CutBits + InvBits + 1;          // product + rounding
   localparam int unsigned Latency  = 7;
 
-  // golden to_acc(): a unit value widened by bit replication, 1.0 -> 1.0.
-  function automatic logic [AB-1:0] to_acc(input logic [A-1:0] v);
-    to_acc = (AB'(v) << G) | (AB'(v) >> (A - G));
-  endfunction
-
 
   logic [Latency-2:0] valid_q;  // stages 1..6
 
@@ -363,10 +358,11 @@ module cube4_composite #(
   // keeps premultiplied colour <= alpha (a no-op when G = 0).
   logic [AB-1:0]   pre_limit;
   logic [3*AB-1:0] pre_product, premultiplied;  // blue at [0 +: AB], green, red
-  assign pre_limit = to_acc(cut_alpha_q);
+  cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_alpha_acc (.pixel_i(cut_alpha_q), .acc_o(pre_limit));
   for (genvar ch = 0; ch < 3; ch++) begin : g_premultiply
     logic [AB-1:0] colour;
-    assign colour = to_acc(rgb_q[4*3*A + ch*A +: A]);
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_colour_acc (
+      .pixel_i(rgb_q[4*3*A + ch*A +: A]), .acc_o(colour));
     cube4_mul_frac #(.XBits(AB), .FBits(A)) u_product (
       .x_i(colour), .f_i(cut_alpha_q), .y_o(pre_product[ch*AB +: AB]));
     assign premultiplied[ch*AB +: AB] =
@@ -439,11 +435,13 @@ module cube4_composite #(
     // behind the ray, by the node in over mode (the polygon frame's blend
     // is composite). A blank pixel (or polygons off) adds nothing: the ray
     // passes unchanged, its MIP value and selected bit included.
+    logic [4*AB-1:0] slab_acc;  // red at [3*AB +: AB], green, blue, alpha
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_red   (.pixel_i(slab_red_i),   .acc_o(slab_acc[3*AB +: AB]));
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_green (.pixel_i(slab_green_i), .acc_o(slab_acc[2*AB +: AB]));
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_blue  (.pixel_i(slab_blue_i),  .acc_o(slab_acc[AB +: AB]));
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_alpha (.pixel_i(slab_alpha_i), .acc_o(slab_acc[0 +: AB]));
     logic [AB-1:0] slab_red, slab_green, slab_blue, slab_alpha;
-    assign slab_red   = poly_enabled_i ? to_acc(slab_red_i)   : '0;
-    assign slab_green = poly_enabled_i ? to_acc(slab_green_i) : '0;
-    assign slab_blue  = poly_enabled_i ? to_acc(slab_blue_i)  : '0;
-    assign slab_alpha = poly_enabled_i ? to_acc(slab_alpha_i) : '0;
+    assign {slab_red, slab_green, slab_blue, slab_alpha} = poly_enabled_i ? slab_acc : '0;
 
     cube4_compose_node #(
       .VoxelBits(VoxelBits), .AlphaBits(AlphaBits), .AccGuardBits(AccGuardBits), .Latency(1)

@@ -1,6 +1,9 @@
 // cube4_rle_decode_sva: the word source's contract of cube4_rle_decode's
 // header, as assertions bound to every decoder:
-//   a_avail_in_range   - avail_i counts the window's words: at most 5;
+//   a_avail_in_range   - avail_i counts the window's words: at most 5 (in
+//                        the cycles the decoder may read it: start_i or
+//                        next_i; an unused decoder's source may show
+//                        anything);
 //   a_source_advances  - within a line (no start_i) the source moves by
 //                        exactly the words the decoder consumed in the
 //                        cycle before: the words it still shows are the
@@ -20,6 +23,7 @@ module cube4_rle_decode_sva #(
   input logic           clk_i,
   input logic           rst_ni,
   input logic           start_i,
+  input logic           next_i,
   input logic [5*W-1:0] window_i,
   input logic [2:0]     avail_i,
   input logic [2:0]     consume_o
@@ -60,7 +64,7 @@ module cube4_rle_decode_sva #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni) begin
-      a_avail_in_range: assert (avail_i <= 3'd5)
+      a_avail_in_range: assert (!(start_i || next_i) || avail_i <= 3'd5)
         else $error("cube4_rle_decode: cycle %0d: avail_i %0d: a window holds five words", cycle, avail_i);
       // (After an out-of-range count, which a_avail_in_range reported, the
       // window has no defined advance.)
