@@ -20,18 +20,22 @@
 // them, colours saturated. Overlay and underlay are this node with one
 // input held at a layer pixel (a register or an image memory).
 //
-// Latency (valid_i to valid_o): Latency cycles, 2 (default) or 1.
+// Latency (valid_i to valid_o): Latency cycles, 2 (default), 1 or 0.
 //   Latency 2: 1: transparency, the four products, base select (registered)
 //              2: add, saturate (output registers)
 //   Latency 1: the same logic with no register between the products and the
 //              add (the compositor's blend stage: the accumulator loop of one
 //              cycle, cube4_composite).
+//   Latency 0: no register at all: the node feeds another in the same cycle
+//              (the compositor's blend stage with polygons, whose result a
+//              second node composites over the slab pixel before the
+//              register: Cube-5's double composition, cube4_composite).
 // Fully pipelined, one pixel per clock. Handshake: valid-only; valid_i
 // travels with the data to valid_o. Only the valid registers are reset.
 // blend_mode_i is a frame register: change it only with no pixel in flight.
 //
 // Parameters (defaults = golden Precision): VoxelBits, AlphaBits,
-// AccGuardBits (<= AlphaBits); Latency (1 or 2).
+// AccGuardBits (<= AlphaBits); Latency (0, 1 or 2).
 `include "cube4_pkg.sv"
 
 module cube4_compose_node #(
@@ -125,25 +129,33 @@ module cube4_compose_node #(
     add_sat = sum[AB] ? {AB{1'b1}} : sum[AB-1:0];
   endfunction
 
-  always_ff @(posedge clk_i) begin : out_regs
-    red_o      <= add_sat(base[PixBits-1 -: AB], inc[3*AB +: AB]);
-    green_o    <= add_sat(base[PixBits-1-AB -: AB], inc[2*AB +: AB]);
-    blue_o     <= add_sat(base[PixBits-1-2*AB -: AB], inc[AB +: AB]);
-    // Never wraps: the increment is at most the transparency (mul_frac(t, f) <= t).
-    alpha_o    <= base[PixBits-1-3*AB -: AB] + inc[0 +: AB];
-    value_o    <= base[1 +: VoxelBits];
-    selected_o <= base[0];
-  end
+  logic [PixBits-1:0] out_d;
+  assign out_d = {add_sat(base[PixBits-1 -: AB], inc[3*AB +: AB]),
+                  add_sat(base[PixBits-1-AB -: AB], inc[2*AB +: AB]),
+                  add_sat(base[PixBits-1-2*AB -: AB], inc[AB +: AB]),
+                  // Never wraps: the increment is at most the transparency (mul_frac(t, f) <= t).
+                  base[PixBits-1-3*AB -: AB] + inc[0 +: AB],
+                  base[1 +: VoxelBits],
+                  base[0]};
 
-  logic [Latency-1:0] valid_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin : valid_regs
-    if (!rst_ni) begin
-      valid_q <= '0;
-    end else begin
-      valid_q[0] <= valid_i;
-      for (int unsigned k = 1; k < Latency; k++) valid_q[k] <= valid_q[k-1];
+  if (Latency == 0) begin : g_comb_out
+    assign {red_o, green_o, blue_o, alpha_o, value_o, selected_o} = out_d;
+    assign valid_o = valid_i;
+  end else begin : g_out_regs
+    always_ff @(posedge clk_i) begin : out_regs
+      {red_o, green_o, blue_o, alpha_o, value_o, selected_o} <= out_d;
     end
+
+    logic [Latency-1:0] valid_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin : valid_regs
+      if (!rst_ni) begin
+        valid_q <= '0;
+      end else begin
+        valid_q[0] <= valid_i;
+        for (int unsigned k = 1; k < Latency; k++) valid_q[k] <= valid_q[k-1];
+      end
+    end
+    assign valid_o = valid_q[Latency-1];
   end
-  assign valid_o = valid_q[Latency-1];
 
 endmodule

@@ -11,6 +11,15 @@
 //     alpha   = cut_alpha(alpha, f)          (mul_frac)
 //     visible &= f != 0
 //   acc' = blend(mode, acc, {rgb, alpha, value, visible})
+// With polygons (HasPolygons and poly_enabled_i; Cube-5 §5, golden
+// composite_polygon.hpp), the Z test and the double composition:
+//   visible &= sample_before_z(k, z)        (k << ZFracBits < z)
+//   acc' = ray_over_pixel(blend(composite, acc, sample), slab)
+// i.e. golden double_composite(acc, sample, before_z, slab): the sample
+// first, then the slab pixel behind it (widened by to_acc), each by a
+// compositing node rounding once per channel; a blank slab pixel leaves the
+// blend's result exactly. A hidden sample is an invisible one: over adds
+// nothing (golden composites it not at all; the value is the same).
 // blend: front-to-back (mode 0, and 3), MIP (1), MinIP (2); an invisible
 // sample leaves the accumulator unchanged. Both blends use the premultiplied
 // colour premultiply(c, alpha) (AlphaBits + AccGuardBits wide, golden
@@ -28,7 +37,9 @@
 //                                                   2: d = sum, saturated
 //   3: outside distance and comparisons             4: ramp (the wide product)
 //   5: cut factor and cut_alpha                     6: premultiplied colour
-//   7: blend with acc_*_i (driven in cycle 6): cube4_compose_node, Latency 1
+//   7: blend with acc_*_i (driven in cycle 6): cube4_compose_node, Latency 1;
+//      with polygons the same node at Latency 0 and a second node over the
+//      slab pixel slab_*_i (driven in cycle 6 too), one register after both
 // Fully pipelined, one sample per clock. Handshake: valid-only; valid_i
 // travels with the data to valid_o (acc_*_i carries no valid of its own; it
 // is ignored in cycles whose sample was not valid). Only the valid registers
@@ -48,6 +59,19 @@
 // PosBits, CutCoefBits;
 // HasCutPlane (0: no cut-plane hardware, cut_enabled_i is ignored; equals
 // golden with cut_enabled false; same latency).
+// HasPolygons (0: no Z test and no second node, poly_enabled_i, slice_k_i,
+// ray_z_i and slab_*_i are ignored; equals golden without a PolygonFrame;
+// same latency). With it the accumulator loop is two nodes deep (two
+// multiplies and two adds in one cycle), the price of keeping the loop at
+// one cycle, which the ray storage of cube4_composite_unit relies on.
+//
+// Polygon registers and inputs (docs/rtl-composite.md, "Polygons"):
+//   poly_enabled_i: frame register; the blend mode must then be composite
+//     (golden refuses polygons with MIP/MinIP).
+//   slice_k_i (SliceBits), ray_z_i (ZBits): with the sample: its sample
+//     slice k and its ray's depth Z (kZBits, kZFracBits).
+//   slab_*_i (AlphaBits): the slab pixel behind the sample, premultiplied,
+//     with the accumulator (AccDelay cycles after the sample).
 `include "cube4_pkg.sv"
 
 module cube4_composite #(
@@ -61,7 +85,12 @@ module cube4_composite #(
   parameter int unsigned CutCoefBits = cube4_pkg::CutCoefBits,
   // 0: no cut-plane hardware (stages 1..5 keep their timing, the factor is
   // one); for machines and scenes without a cut plane (docs/rtl-composite.md).
-  parameter bit          HasCutPlane = 1'b1
+  parameter bit          HasCutPlane = 1'b1,
+  // 0: no polygon hardware (no Z test, one node); for scenes without polygons.
+  parameter bit          HasPolygons = 1'b1,
+  parameter int unsigned ZBits       = cube4_pkg::ZBits,
+  parameter int unsigned ZFracBits   = cube4_pkg::ZFracBits,
+  parameter int unsigned SliceBits   = cube4_pkg::SliceBits
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -94,6 +123,15 @@ module cube4_composite #(
   input  logic [CutBits-1:0]                   cut_falloff_i,
   input  logic [AlphaBits+CutInvShift-1:0]     cut_inv_falloff_i,
   input  logic                                 cut_keep_inside_i,
+  // Frame register: polygons (Cube-5), and per sample its slice and its
+  // ray's depth; the slab pixel behind it comes with the accumulator.
+  input  logic                                 poly_enabled_i,
+  input  logic [SliceBits-1:0]                 slice_k_i,
+  input  logic [ZBits-1:0]                     ray_z_i,
+  input  logic [AlphaBits-1:0]                 slab_red_i,
+  input  logic [AlphaBits-1:0]                 slab_green_i,
+  input  logic [AlphaBits-1:0]                 slab_blue_i,
+  input  logic [AlphaBits-1:0]                 slab_alpha_i,
   // Shaded sample and its position (x, y, z_voxel, slice weights).
   input  logic                                 valid_i,
   input  logic [AlphaBits-1:0]                 red_i,
@@ -135,11 +173,6 @@ module cube4_composite #(
   localparam int unsigned RampBits = CutBits + InvBits + 1;          // product + rounding
   localparam int unsigned Latency  = 7;
 
-  // golden to_acc(): a unit value widened by bit replication, 1.0 -> 1.0.
-  function automatic logic [AB-1:0] to_acc(input logic [A-1:0] v);
-    to_acc = (AB'(v) << G) | (AB'(v) >> (A - G));
-  endfunction
-
 
   logic [Latency-2:0] valid_q;  // stages 1..6
 
@@ -159,6 +192,18 @@ module cube4_composite #(
                      (window_y_lo_i <= y_i) && (y_i <= window_y_hi_i) &&
                      (window_z_lo_i <= z_i) && (z_i <= window_z_hi_i);
 
+  // The Z test (golden sample_before_z): k << ZFracBits < Z; a sample at
+  // the surface's depth is hidden.
+  logic before_z;
+  if (HasPolygons) begin : g_z_test
+    localparam int unsigned KzBits = (SliceBits + ZFracBits > ZBits) ? SliceBits + ZFracBits : ZBits;
+    assign before_z = !poly_enabled_i || (KzBits'({slice_k_i, ZFracBits'(0)}) < KzBits'(ray_z_i));
+  end else begin : g_no_z_test
+    assign before_z = 1'b1;
+    logic unused_z_inputs;
+    assign unused_z_inputs = ^{poly_enabled_i, slice_k_i, ray_z_i};
+  end
+
   logic [3:0]                 visible1_q;  // crop visibility, stages 1..4
   // Colour (stages 1..5), alpha (1..4) and value (1..6) delay lines,
   // stage k at [(k-1)*Width +: Width].
@@ -167,7 +212,7 @@ module cube4_composite #(
   logic [6*VoxelBits-1:0]     value_q;
 
   always_ff @(posedge clk_i) begin : stage1_regs
-    visible1_q[0] <= crop_visible && (!window_enabled_i || in_window);
+    visible1_q[0] <= crop_visible && (!window_enabled_i || in_window) && before_z;
     rgb_q[0 +: 3*A]           <= {red_i, green_i, blue_i};
     alpha_q[0 +: A]           <= alpha_i;
     value_q[0 +: VoxelBits]   <= value_i;
@@ -313,10 +358,11 @@ module cube4_composite #(
   // keeps premultiplied colour <= alpha (a no-op when G = 0).
   logic [AB-1:0]   pre_limit;
   logic [3*AB-1:0] pre_product, premultiplied;  // blue at [0 +: AB], green, red
-  assign pre_limit = to_acc(cut_alpha_q);
+  cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_alpha_acc (.pixel_i(cut_alpha_q), .acc_o(pre_limit));
   for (genvar ch = 0; ch < 3; ch++) begin : g_premultiply
     logic [AB-1:0] colour;
-    assign colour = to_acc(rgb_q[4*3*A + ch*A +: A]);
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_colour_acc (
+      .pixel_i(rgb_q[4*3*A + ch*A +: A]), .acc_o(colour));
     cube4_mul_frac #(.XBits(AB), .FBits(A)) u_product (
       .x_i(colour), .f_i(cut_alpha_q), .y_o(pre_product[ch*AB +: AB]));
     assign premultiplied[ch*AB +: AB] =
@@ -347,8 +393,17 @@ module cube4_composite #(
   assign back_blue  = pre_visible_q ? pre_blue_q  : '0;
   assign back_alpha = pre_visible_q ? pre_alpha_q : '0;
 
+  // With polygons the blend node is combinational and a second node puts
+  // the slab pixel behind its result before the output register: one cycle
+  // still, two nodes deep.
+  localparam int unsigned BlendLatency = HasPolygons ? 0 : 1;
+
+  logic          blend_valid, blend_selected;
+  logic [AB-1:0] blend_red, blend_green, blend_blue, blend_alpha;
+  logic [VoxelBits-1:0] blend_value;
+
   cube4_compose_node #(
-    .VoxelBits(VoxelBits), .AlphaBits(AlphaBits), .AccGuardBits(AccGuardBits), .Latency(1)
+    .VoxelBits(VoxelBits), .AlphaBits(AlphaBits), .AccGuardBits(AccGuardBits), .Latency(BlendLatency)
   ) u_blend (
     .clk_i,
     .rst_ni,
@@ -366,14 +421,61 @@ module cube4_composite #(
     .back_alpha_i     (back_alpha),
     .back_value_i     (value_q[5*VoxelBits +: VoxelBits]),
     .back_selected_i  (pre_visible_q),
-    .valid_o,
-    .red_o,
-    .green_o,
-    .blue_o,
-    .alpha_o,
-    .value_o,
-    .selected_o
+    .valid_o          (blend_valid),
+    .red_o            (blend_red),
+    .green_o          (blend_green),
+    .blue_o           (blend_blue),
+    .alpha_o          (blend_alpha),
+    .value_o          (blend_value),
+    .selected_o       (blend_selected)
   );
+
+  if (HasPolygons) begin : g_slab
+    // golden ray_over_pixel(ray, slab): the slab pixel widened by to_acc,
+    // behind the ray, by the node in over mode (the polygon frame's blend
+    // is composite). A blank pixel (or polygons off) adds nothing: the ray
+    // passes unchanged, its MIP value and selected bit included.
+    logic [4*AB-1:0] slab_acc;  // red at [3*AB +: AB], green, blue, alpha
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_red   (.pixel_i(slab_red_i),   .acc_o(slab_acc[3*AB +: AB]));
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_green (.pixel_i(slab_green_i), .acc_o(slab_acc[2*AB +: AB]));
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_blue  (.pixel_i(slab_blue_i),  .acc_o(slab_acc[AB +: AB]));
+    cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_slab_alpha (.pixel_i(slab_alpha_i), .acc_o(slab_acc[0 +: AB]));
+    logic [AB-1:0] slab_red, slab_green, slab_blue, slab_alpha;
+    assign {slab_red, slab_green, slab_blue, slab_alpha} = poly_enabled_i ? slab_acc : '0;
+
+    cube4_compose_node #(
+      .VoxelBits(VoxelBits), .AlphaBits(AlphaBits), .AccGuardBits(AccGuardBits), .Latency(1)
+    ) u_slab (
+      .clk_i,
+      .rst_ni,
+      .blend_mode_i     (cube4_pkg::BlendComposite),
+      .valid_i          (blend_valid),
+      .front_red_i      (blend_red),
+      .front_green_i    (blend_green),
+      .front_blue_i     (blend_blue),
+      .front_alpha_i    (blend_alpha),
+      .front_value_i    (blend_value),
+      .front_selected_i (blend_selected),
+      .back_red_i       (slab_red),
+      .back_green_i     (slab_green),
+      .back_blue_i      (slab_blue),
+      .back_alpha_i     (slab_alpha),
+      .back_value_i     ('0),
+      .back_selected_i  (1'b0),
+      .valid_o,
+      .red_o,
+      .green_o,
+      .blue_o,
+      .alpha_o,
+      .value_o,
+      .selected_o
+    );
+  end else begin : g_no_slab
+    assign {valid_o, red_o, green_o, blue_o, alpha_o, value_o, selected_o} =
+        {blend_valid, blend_red, blend_green, blend_blue, blend_alpha, blend_value, blend_selected};
+    logic unused_slab_inputs;
+    assign unused_slab_inputs = ^{slab_red_i, slab_green_i, slab_blue_i, slab_alpha_i};
+  end
 
   // Stages 1..6 (the node holds the last valid register).
   always_ff @(posedge clk_i or negedge rst_ni) begin : valid_regs

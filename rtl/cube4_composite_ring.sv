@@ -18,6 +18,11 @@
 // the stream pads the last partial beam with samples of any value (columns
 // x >= nx), which are never emitted.
 //
+// Polygons (HasPolygons, poly_enabled_i): every pipeline gets its samples'
+// ray data (Z, front and back pixels) with them and reads its own slab
+// lines through its run-length decoder (cube4_composite_unit,
+// docs/rtl-composite.md, "Polygons"); slice_k_i is common.
+//
 // Handshake: valid-only, no back-pressure. Reset: control only.
 //
 // Parameters:
@@ -25,6 +30,7 @@
 //   VoxelBits, WeightBits, AlphaBits, AccGuardBits,
 //   CutBits, CutInvShift, PosBits,
 //   CutCoefBits, HasCutPlane          - as cube4_composite
+//   HasPolygons, ZBits, SliceBits     - as cube4_composite_unit
 //   MaxDim                            - largest nx and ny the ray storage holds
 //   BeamDepth, SliceDepth             - (derived) per-pipeline ray beam delay
 //                                       and ray slice store entries:
@@ -42,6 +48,9 @@ module cube4_composite_ring #(
   parameter int unsigned  PosBits     = cube4_pkg::PosBits,
   parameter int unsigned  CutCoefBits = cube4_pkg::CutCoefBits,
   parameter bit           HasCutPlane = 1'b1,
+  parameter bit           HasPolygons = 1'b1,
+  parameter int unsigned  ZBits       = cube4_pkg::ZBits,
+  parameter int unsigned  SliceBits   = cube4_pkg::SliceBits,
   parameter int unsigned  MaxDim      = cube4_pkg::MaxDim,
   localparam int unsigned BeamDepth   = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth  = MaxDim * BeamDepth
@@ -74,6 +83,8 @@ module cube4_composite_ring #(
   input  logic [CutBits-1:0]               cut_falloff_i,
   input  logic [AlphaBits+CutInvShift-1:0] cut_inv_falloff_i,
   input  logic                             cut_keep_inside_i,
+  // Frame register: polygons.
+  input  logic                             poly_enabled_i,
   // Frame values sampled with valid_i.
   input  logic [PosBits-1:0]               nx_i,
   input  logic [PosBits-1:0]               last_ix_i,
@@ -103,6 +114,22 @@ module cube4_composite_ring #(
   input  logic [NumPipes*AlphaBits-1:0]    blue_i,
   input  logic [NumPipes*AlphaBits-1:0]    alpha_i,
   input  logic [NumPipes*VoxelBits-1:0]    value_i,
+  // Polygons: the slice (common), per pipeline its sample's ray data and
+  // its slab line source.
+  input  logic [SliceBits-1:0]             slice_k_i,
+  input  logic [NumPipes*ZBits-1:0]        ray_z_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_front_red_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_front_green_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_front_blue_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_front_alpha_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_back_red_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_back_green_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_back_blue_i,
+  input  logic [NumPipes*AlphaBits-1:0]    ray_back_alpha_i,
+  output logic [NumPipes-1:0]              slab_line_o,
+  input  logic [NumPipes*5*cube4_pkg::RleWordBits-1:0] slab_window_i,
+  input  logic [NumPipes*3-1:0]            slab_avail_i,
+  output logic [NumPipes*3-1:0]            slab_consume_o,
   // Pixel ports, pipeline k at bit k / [k*Width +:].
   output logic [NumPipes-1:0]              pixel_valid_o,
   output logic [NumPipes*PosBits-1:0]      pixel_u_o,
@@ -123,6 +150,7 @@ module cube4_composite_ring #(
   localparam int unsigned A        = AlphaBits;
   localparam int unsigned AB       = AlphaBits + AccGuardBits;
   localparam int unsigned LinkBits = 4 * (AlphaBits + AccGuardBits) + VoxelBits + 1;
+  localparam int unsigned WinBits  = 5 * cube4_pkg::RleWordBits;
 
   // Links as a packed vector (yosys 0.23: no unpacked wire arrays).
   logic [NumPipes*LinkBits-1:0] link;
@@ -142,6 +170,9 @@ module cube4_composite_ring #(
       .PosBits    (PosBits),
       .CutCoefBits(CutCoefBits),
       .HasCutPlane(HasCutPlane),
+      .HasPolygons(HasPolygons),
+      .ZBits      (ZBits),
+      .SliceBits  (SliceBits),
       .BeamDepth  (BeamDepth),
       .SliceDepth (SliceDepth),
       .WrapIn     (k == 0)
@@ -173,6 +204,7 @@ module cube4_composite_ring #(
       .cut_falloff_i    (cut_falloff_i),
       .cut_inv_falloff_i(cut_inv_falloff_i),
       .cut_keep_inside_i(cut_keep_inside_i),
+      .poly_enabled_i   (poly_enabled_i),
       .nx_i             (nx_i),
       .last_ix_i        (last_ix_i),
       .last_iy_i        (last_iy_i),
@@ -200,6 +232,20 @@ module cube4_composite_ring #(
       .blue_i           (blue_i[k*A +: A]),
       .alpha_i          (alpha_i[k*A +: A]),
       .value_i          (value_i[k*VoxelBits +: VoxelBits]),
+      .slice_k_i        (slice_k_i),
+      .ray_z_i          (ray_z_i[k*ZBits +: ZBits]),
+      .ray_front_red_i  (ray_front_red_i[k*A +: A]),
+      .ray_front_green_i(ray_front_green_i[k*A +: A]),
+      .ray_front_blue_i (ray_front_blue_i[k*A +: A]),
+      .ray_front_alpha_i(ray_front_alpha_i[k*A +: A]),
+      .ray_back_red_i   (ray_back_red_i[k*A +: A]),
+      .ray_back_green_i (ray_back_green_i[k*A +: A]),
+      .ray_back_blue_i  (ray_back_blue_i[k*A +: A]),
+      .ray_back_alpha_i (ray_back_alpha_i[k*A +: A]),
+      .slab_line_o      (slab_line_o[k]),
+      .slab_window_i    (slab_window_i[k*WinBits +: WinBits]),
+      .slab_avail_i     (slab_avail_i[k*3 +: 3]),
+      .slab_consume_o   (slab_consume_o[k*3 +: 3]),
       .link_o           (link[k*LinkBits +: LinkBits]),
       .link_i           (link[Left*LinkBits +: LinkBits]),
       .pixel_valid_o    (pixel_valid_o[k]),

@@ -76,6 +76,27 @@
 // Handshake: valid-only, no back-pressure. Reset: control only (valid
 // delays, store pointers); data registers and RAMs are not reset.
 //
+// Polygons (HasPolygons and poly_enabled_i; Cube-5 §5, golden
+// SliceCompositor with a PolygonFrame; docs/rtl-composite.md, "Polygons"):
+//   - a ray starts (no predecessor) as its front pixel, widened
+//     (pixel_to_acc), instead of the empty ray;
+//   - each sample passes the Z test against its ray's Z and is followed by
+//     its slab pixel (cube4_composite: double_composite);
+//   - a ray leaves as pixel_of(ray over back pixel) (leave_with_polygons);
+//     pixel_acc_*_o stay the ray itself.
+// With every sample the stream brings its ray's polygon data, read by (u, v)
+// from the composite buffer: ray_z_i, ray_front_*_i, ray_back_*_i (the same
+// values for every sample of a ray), and the sample slice slice_k_i. The
+// slab pixels come from this pipeline's run-length decoder
+// (cube4_rle_decode), one per sample of a real column (x < nx), the lines
+// beam by beam in stream order: its word source outside moves to the next
+// line at the clock edge that ends a cycle with slab_line_o high (two
+// cycles before the line's first pixel is decoded, at stage 5), and by
+// slab_consume_o words at every edge; it shows slab_window_i and
+// slab_avail_i (cube4_rle_decode's header). Pixels no ray reaches are the
+// host's (front over back) and never emitted. Same latency, one sample per
+// clock; polygons off, the unit is exactly the one without them.
+//
 // Preconditions: every slice is complete (ny beams of the same B partial
 // beams); B <= BeamDepth; ny * B <= SliceDepth; dx, dy, next_dx, next_dy as
 // golden (a change of the DDA offset by 0 or 1 per slice).
@@ -84,6 +105,9 @@
 //   VoxelBits, WeightBits, AlphaBits, AccGuardBits, CutBits, CutInvShift,
 //   PosBits, CutCoefBits  - as cube4_composite (golden Precision defaults)
 //   HasCutPlane           - as cube4_composite (0: no cut-plane hardware)
+//   HasPolygons           - 0: no polygon hardware (no decoder, no front
+//                           and back pixels; the polygon ports are ignored)
+//   ZBits, SliceBits      - as cube4_composite
 //   BeamDepth             - ray beam delay entries: max partial beams per beam
 //   SliceDepth            - ray slice store entries: max ny * partial beams
 //   WrapIn                - 1 for pipeline 0: link_i is pipeline p-1's link_o
@@ -102,6 +126,9 @@ module cube4_composite_unit #(
   parameter int unsigned  PosBits     = cube4_pkg::PosBits,
   parameter int unsigned  CutCoefBits = cube4_pkg::CutCoefBits,
   parameter bit           HasCutPlane = 1'b1,
+  parameter bit           HasPolygons = 1'b1,
+  parameter int unsigned  ZBits       = cube4_pkg::ZBits,
+  parameter int unsigned  SliceBits   = cube4_pkg::SliceBits,
   parameter int unsigned  BeamDepth   = 64,
   parameter int unsigned  SliceDepth  = 16384,
   parameter bit           WrapIn      = 1'b0,
@@ -135,6 +162,8 @@ module cube4_composite_unit #(
   input  logic [CutBits-1:0]               cut_falloff_i,
   input  logic [AlphaBits+CutInvShift-1:0] cut_inv_falloff_i,
   input  logic                             cut_keep_inside_i,
+  // Frame register: polygons.
+  input  logic                             poly_enabled_i,
   // Frame values sampled with valid_i.
   input  logic [PosBits-1:0]               nx_i,
   input  logic [PosBits-1:0]               last_ix_i,
@@ -164,6 +193,23 @@ module cube4_composite_unit #(
   input  logic [AlphaBits-1:0]             blue_i,
   input  logic [AlphaBits-1:0]             alpha_i,
   input  logic [VoxelBits-1:0]             value_i,
+  // Polygons, with the sample: its slice, its ray's depth, front and back
+  // pixels (premultiplied, AlphaBits each).
+  input  logic [SliceBits-1:0]             slice_k_i,
+  input  logic [ZBits-1:0]                 ray_z_i,
+  input  logic [AlphaBits-1:0]             ray_front_red_i,
+  input  logic [AlphaBits-1:0]             ray_front_green_i,
+  input  logic [AlphaBits-1:0]             ray_front_blue_i,
+  input  logic [AlphaBits-1:0]             ray_front_alpha_i,
+  input  logic [AlphaBits-1:0]             ray_back_red_i,
+  input  logic [AlphaBits-1:0]             ray_back_green_i,
+  input  logic [AlphaBits-1:0]             ray_back_blue_i,
+  input  logic [AlphaBits-1:0]             ray_back_alpha_i,
+  // This pipeline's slab lines (cube4_rle_decode's word source).
+  output logic                             slab_line_o,
+  input  logic [5*cube4_pkg::RleWordBits-1:0] slab_window_i,
+  input  logic [2:0]                       slab_avail_i,
+  output logic [2:0]                       slab_consume_o,
   // Near-neighbour links: this step's candidate of column x (to pipeline
   // k+1), and pipeline k-1's (or, WrapIn, pipeline p-1's) candidate.
   output logic [AccBits-1:0]               link_o,
@@ -237,6 +283,15 @@ module cube4_composite_unit #(
       ctrl_q[(AccDelay-1)*CtrlBits +: CtrlBits];
 
   // -------------------------------------------------------------------------
+  // Polygons: the slab decoder (asked at stage 5, its pixel at stage
+  // AccDelay with the predecessor), the front pixel delayed to stage
+  // AccDelay (a ray's start), the back pixel to the output (its end).
+  localparam int unsigned PixBits = 4 * A;  // {red, green, blue, alpha}
+  logic [PixBits-1:0]   slab_pixel;         // the slab pixel of the stage-6 sample
+  logic [AccBits-1:0]   start_ray;          // a ray with no predecessor
+  logic [AB-1:0]        exit_red, exit_green, exit_blue, exit_alpha;  // what the pixel port rounds
+
+  // -------------------------------------------------------------------------
   // Compositing datapath; its result is the ray of this slice.
   logic [AccBits-1:0] pred, result;
   logic               result_valid;
@@ -253,7 +308,10 @@ module cube4_composite_unit #(
     .CutInvShift(CutInvShift),
     .PosBits    (PosBits),
     .CutCoefBits(CutCoefBits),
-    .HasCutPlane(HasCutPlane)
+    .HasCutPlane(HasCutPlane),
+    .HasPolygons(HasPolygons),
+    .ZBits      (ZBits),
+    .SliceBits  (SliceBits)
   ) u_composite (
     .clk_i            (clk_i),
     .rst_ni           (rst_ni),
@@ -282,6 +340,13 @@ module cube4_composite_unit #(
     .cut_falloff_i    (cut_falloff_i),
     .cut_inv_falloff_i(cut_inv_falloff_i),
     .cut_keep_inside_i(cut_keep_inside_i),
+    .poly_enabled_i   (poly_enabled_i),
+    .slice_k_i        (slice_k_i),
+    .ray_z_i          (ray_z_i),
+    .slab_red_i       (slab_pixel[3*A +: A]),
+    .slab_green_i     (slab_pixel[2*A +: A]),
+    .slab_blue_i      (slab_pixel[A +: A]),
+    .slab_alpha_i     (slab_pixel[0 +: A]),
     .valid_i          (valid_i),
     .red_i            (red_i),
     .green_i          (green_i),
@@ -309,6 +374,119 @@ module cube4_composite_unit #(
     .selected_o       (res_selected)
   );
   assign result = {res_selected, res_value, res_alpha, res_blue, res_green, res_red};
+
+  // Polygon hardware (the declarations above the datapath).
+  if (HasPolygons) begin : g_polygons
+    localparam int unsigned W = cube4_pkg::RleWordBits;
+    // Stages 1..5 of (valid and x < nx) beside the control delay.
+    logic [AccDelay-2:0] real_q;
+    logic [AccDelay*PixBits-1:0] front_q;
+    logic [Latency*PixBits-1:0]  back_q;
+    always_ff @(posedge clk_i) begin
+      real_q  <= {real_q[AccDelay-3:0], x_i < nx_i};
+      front_q <= {front_q[(AccDelay-1)*PixBits-1:0],
+                  ray_front_red_i, ray_front_green_i, ray_front_blue_i, ray_front_alpha_i};
+      back_q  <= {back_q[(Latency-1)*PixBits-1:0],
+                  ray_back_red_i, ray_back_green_i, ray_back_blue_i, ray_back_alpha_i};
+    end
+
+    // Control bit 3 is beam_start (ctrl_q's order). A line per beam: the
+    // source moves at the end of stage 4, the decoder starts at stage 5.
+    logic line_4, start_5, next_5;
+    assign line_4      = poly_enabled_i && step_q[3] && ctrl_q[3*CtrlBits + 3];
+    assign start_5     = poly_enabled_i && step_q[4] && ctrl_q[4*CtrlBits + 3];
+    assign next_5      = poly_enabled_i && step_q[4] && real_q[AccDelay-2];
+    assign slab_line_o = line_4;
+
+    logic [W-1:0] slab_r, slab_g, slab_b, slab_a;
+    logic         slab_valid, slab_error, slab_finished;
+    cube4_rle_decode u_slab_decode (
+      .clk_i,
+      .rst_ni,
+      .start_i      (start_5),
+      .next_i       (next_5),
+      .window_i     (slab_window_i),
+      .avail_i      (slab_avail_i),
+      .consume_o    (slab_consume_o),
+      .pixel_valid_o(slab_valid),
+      .pixel_red_o  (slab_r),
+      .pixel_green_o(slab_g),
+      .pixel_blue_o (slab_b),
+      .pixel_alpha_o(slab_a),
+      .error_o      (slab_error),
+      .finished_o   (slab_finished)
+    );
+    // A padding column asked nothing: its (unused) pixel is the decoder's
+    // blank. Words are 16 bits, pixels AlphaBits (<= 16): the low bits.
+    assign slab_pixel = {A'(slab_r), A'(slab_g), A'(slab_b), A'(slab_a)};
+
+    // A ray's start: its front pixel widened (golden pixel_to_acc: MIP
+    // value 0, not selected); the empty ray with polygons off.
+    logic [PixBits-1:0] front_6, back_7;
+    logic [4*AB-1:0]    front_acc, back_acc;  // red at [3*AB +: AB]
+    assign front_6 = front_q[(AccDelay-1)*PixBits +: PixBits];
+    assign back_7  = back_q[(Latency-1)*PixBits +: PixBits];
+    for (genvar ch = 0; ch < 4; ch++) begin : g_widen
+      cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_front (
+        .pixel_i(front_6[ch*A +: A]), .acc_o(front_acc[ch*AB +: AB]));
+      cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_back (
+        .pixel_i(back_7[ch*A +: A]), .acc_o(back_acc[ch*AB +: AB]));
+    end
+    assign start_ray = poly_enabled_i
+        ? {1'b0, VoxelBits'(0), front_acc[0 +: AB], front_acc[AB +: AB], front_acc[2*AB +: AB], front_acc[3*AB +: AB]}
+        : '0;
+
+    // A ray's end: the ray over its back pixel (golden leave_with_polygons;
+    // a blank back pixel, or polygons off, leaves the ray as it is), in the
+    // output cycle, before the rounding to AlphaBits.
+    logic [4*AB-1:0] back_in;
+    logic            unused_exit, unused_exit_valid;
+    logic [VoxelBits-1:0] unused_exit_value;
+    assign back_in = poly_enabled_i ? back_acc : '0;
+    cube4_compose_node #(
+      .VoxelBits(VoxelBits), .AlphaBits(AlphaBits), .AccGuardBits(AccGuardBits), .Latency(0)
+    ) u_leave (
+      .clk_i,
+      .rst_ni,
+      .blend_mode_i     (cube4_pkg::BlendComposite),
+      .valid_i          (result_valid),
+      .front_red_i      (res_red),
+      .front_green_i    (res_green),
+      .front_blue_i     (res_blue),
+      .front_alpha_i    (res_alpha),
+      .front_value_i    (res_value),
+      .front_selected_i (res_selected),
+      .back_red_i       (back_in[3*AB +: AB]),
+      .back_green_i     (back_in[2*AB +: AB]),
+      .back_blue_i      (back_in[AB +: AB]),
+      .back_alpha_i     (back_in[0 +: AB]),
+      .back_value_i     ('0),
+      .back_selected_i  (1'b0),
+      .valid_o          (unused_exit_valid),
+      .red_o            (exit_red),
+      .green_o          (exit_green),
+      .blue_o           (exit_blue),
+      .alpha_o          (exit_alpha),
+      .value_o          (unused_exit_value),
+      .selected_o       (unused_exit)
+    );
+
+    // The decoder's pixel valid, error and end of line: the host's lines
+    // are well formed (checked by the tests against golden).
+    logic unused_decoder;
+    assign unused_decoder = ^{slab_valid, slab_error, slab_finished, real_q[0]} ^ ^unused_exit_value ^ unused_exit
+                          ^ unused_exit_valid;
+  end else begin : g_no_polygons
+    assign slab_pixel     = '0;
+    assign start_ray      = '0;
+    assign slab_line_o    = 1'b0;
+    assign slab_consume_o = 3'd0;
+    assign {exit_red, exit_green, exit_blue, exit_alpha} = {res_red, res_green, res_blue, res_alpha};
+    logic unused_polygon_inputs;
+    assign unused_polygon_inputs = ^{poly_enabled_i, slice_k_i, ray_z_i, ray_front_red_i, ray_front_green_i,
+                                     ray_front_blue_i, ray_front_alpha_i, ray_back_red_i, ray_back_green_i,
+                                     ray_back_blue_i, ray_back_alpha_i, slab_window_i, slab_avail_i};
+  end
 
   // -------------------------------------------------------------------------
   // Ray slice store: one ray per column of the slice, in stream order, in
@@ -411,15 +589,15 @@ module cube4_composite_unit #(
   // No predecessor: the first slice, y - dy < 0, or x - dx < 0 (x = 0 is
   // pipeline 0's first partial beam).
   assign no_pred = first_a || (dy_a && slice_start_a) || (dx_a && WrapIn && beam_start_a);
-  assign pred    = no_pred ? '0 : (dx_a ? left_cand : own_cand);
+  assign pred    = no_pred ? start_ray : (dx_a ? left_cand : own_cand);
 
   // -------------------------------------------------------------------------
   // Pixel port: the finished rays from the compositing datapath, scaled
   // from the accumulator domain to AlphaBits, and as they are.
-  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_red   (.acc_i(res_red),   .pixel_o(pixel_red_o));
-  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_green (.acc_i(res_green), .pixel_o(pixel_green_o));
-  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_blue  (.acc_i(res_blue),  .pixel_o(pixel_blue_o));
-  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_alpha (.acc_i(res_alpha), .pixel_o(pixel_alpha_o));
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_red   (.acc_i(exit_red),   .pixel_o(pixel_red_o));
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_green (.acc_i(exit_green), .pixel_o(pixel_green_o));
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_blue  (.acc_i(exit_blue),  .pixel_o(pixel_blue_o));
+  cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(G)) u_pixel_alpha (.acc_i(exit_alpha), .pixel_o(pixel_alpha_o));
 
   logic               exit_o;
   logic [PosBits-1:0] u_o, v_o;

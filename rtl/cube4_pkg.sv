@@ -61,6 +61,13 @@ package cube4_pkg;
   localparam int unsigned CutInvShift       /*verilator public*/ = 24;   // cut-plane 1/falloff fraction
   localparam int unsigned DivBitsPerStage   /*verilator public*/ = 2;    // quotient bits per divider stage
 
+  // Polygons (Cube-5; golden/units/composite_polygon.hpp, rle_decode.hpp):
+  // fixed by golden's formats, not by Precision.
+  localparam int unsigned ZBits             /*verilator public*/ = 24;   // kZBits: a ray's depth
+  localparam int unsigned ZFracBits         /*verilator public*/ = 8;    // kZFracBits: its fraction
+  localparam int unsigned SliceBits         /*verilator public*/ = 16;   // sample slice k: k << ZFracBits fits ZBits
+  localparam int unsigned RleWordBits       /*verilator public*/ = 16;   // a slab line's word (and run length)
+
   // Blend modes: golden BlendMode and the BLEND register's values.
   typedef enum logic [1:0] {
     BlendComposite = 2'd0,

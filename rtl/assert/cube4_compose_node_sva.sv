@@ -29,14 +29,16 @@ module cube4_compose_node_sva #(
   logic [63:0] cycle;
   cube4_sva_cycle u_cycle (.clk_i, .rst_ni, .cycle_o(cycle));
 
-  // The front α and the mode of each pixel, beside the node's stages.
-  logic [Latency*AB-1:0] front_q;
-  logic [Latency*2-1:0]  mode_q;
+  // The front α and the mode of each pixel, beside the node's stages (a
+  // node of Latency 0 has none: its output is its input's).
+  localparam int unsigned Stages = (Latency > 0) ? Latency : 1;
+  logic [Stages*AB-1:0] front_q;
+  logic [Stages*2-1:0]  mode_q;
   logic                  valid_q;  // a pixel entered in the cycle before
   always_ff @(posedge clk_i) begin
     front_q[0 +: AB] <= front_alpha_i;
     mode_q[0 +: 2]   <= blend_mode_i;
-    for (int unsigned k = 1; k < Latency; k++) begin
+    for (int unsigned k = 1; k < Stages; k++) begin
       front_q[k*AB +: AB] <= front_q[(k-1)*AB +: AB];
       mode_q[k*2 +: 2]    <= mode_q[(k-1)*2 +: 2];
     end
@@ -51,8 +53,8 @@ module cube4_compose_node_sva #(
 
   logic [AB-1:0] front_o;
   logic [1:0]    mode_o;
-  assign front_o = front_q[(Latency-1)*AB +: AB];
-  assign mode_o  = mode_q[(Latency-1)*2 +: 2];
+  assign front_o = (Latency == 0) ? front_alpha_i : front_q[(Stages-1)*AB +: AB];
+  assign mode_o  = (Latency == 0) ? blend_mode_i : mode_q[(Stages-1)*2 +: 2];
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni) begin

@@ -4,7 +4,15 @@
 //                      do not change while a sample is in flight: they are
 //                      read in stages 1 to 7, so a sample that entered in
 //                      one of the Latency - 1 cycles before a change would
-//                      be cropped, cut or blended under two settings.
+//                      be cropped, cut or blended under two settings
+//                      (poly_enabled_i included);
+//   a_polygons_composite - with polygons the blend mode is composite (golden
+//                      refuses polygons with MIP/MinIP: the second node
+//                      composites over whatever the first chose);
+//   a_slice_in_range - with polygons a sample's slice k is below 2^15
+//                      (SliceBits - 1 bits), so that k << ZFracBits stays
+//                      below kZNone, the depth of "no opaque polygon", and
+//                      no sample is hidden where no surface is.
 //
 // Simulation only: not part of the unit, never synthesised.
 module cube4_composite_sva #(
@@ -12,7 +20,8 @@ module cube4_composite_sva #(
   parameter int unsigned CutBits     = 32,
   parameter int unsigned CutInvShift = 24,
   parameter int unsigned PosBits     = 16,
-  parameter int unsigned CutCoefBits = 12
+  parameter int unsigned CutCoefBits = 12,
+  parameter int unsigned SliceBits   = 16
 ) (
   input logic                             clk_i,
   input logic                             rst_ni,
@@ -34,6 +43,8 @@ module cube4_composite_sva #(
   input logic [CutBits-1:0]               cut_falloff_i,
   input logic [AlphaBits+CutInvShift-1:0] cut_inv_falloff_i,
   input logic                             cut_keep_inside_i,
+  input logic                             poly_enabled_i,
+  input logic [SliceBits-1:0]             slice_k_i,
   input logic                             valid_i
 );
 
@@ -42,7 +53,7 @@ module cube4_composite_sva #(
   localparam int unsigned InFlight = 6;
   localparam int unsigned CropBits = 1 + 6 * PosBits + 8;
   localparam int unsigned CutRegs  = 1 + 3 * CutCoefBits + 3 * CutBits + AlphaBits + CutInvShift + 1;
-  localparam int unsigned RegBits  = 2 + CropBits + CutRegs;
+  localparam int unsigned RegBits  = 2 + CropBits + CutRegs + 1;
 
   logic [63:0] cycle;
   cube4_sva_cycle u_cycle (.clk_i, .rst_ni, .cycle_o(cycle));
@@ -53,21 +64,27 @@ module cube4_composite_sva #(
                  crop_enabled_i, crop_x_lo_i, crop_x_hi_i, crop_y_lo_i, crop_y_hi_i, crop_z_lo_i, crop_z_hi_i,
                  crop_mask_i,
                  cut_enabled_i, cut_a_i, cut_b_i, cut_c_i, cut_dmin_i, cut_dmax_i, cut_falloff_i, cut_inv_falloff_i,
-                 cut_keep_inside_i};
+                 cut_keep_inside_i, poly_enabled_i};
   cube4_sva_frame_registers #(.Width(RegBits), .Cycles(InFlight)) u_frame (
     .clk_i, .rst_ni, .valid_i, .regs_i(regs), .entered_o(entered), .regs_q_o(regs_q));
 
   logic [1:0] mode_q;
   logic       crop_changed, cut_changed;
   assign mode_q       = regs_q[RegBits-1 -: 2];
-  assign crop_changed = regs[CutRegs +: CropBits] != regs_q[CutRegs +: CropBits];
-  assign cut_changed  = regs[0 +: CutRegs] != regs_q[0 +: CutRegs];
+  assign crop_changed = regs[1 + CutRegs +: CropBits] != regs_q[1 + CutRegs +: CropBits];
+  assign cut_changed  = regs[1 +: CutRegs] != regs_q[1 +: CutRegs];
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni) begin
       a_frame_registers_stable: assert (entered == '0 || regs == regs_q)
         else $error("cube4_composite: cycle %0d: frame registers changed with samples in flight (entered %b cycles ago, bit i: i+1): blend mode %0d -> %0d, cropping changed %0d, cut plane changed %0d",
                     cycle, entered, mode_q, blend_mode_i, crop_changed, cut_changed);
+      a_polygons_composite: assert (!(valid_i && poly_enabled_i) || blend_mode_i == cube4_pkg::BlendComposite
+                                    || blend_mode_i == 2'd3)
+        else $error("cube4_composite: cycle %0d: polygons with blend mode %0d (composite only)", cycle, blend_mode_i);
+      a_slice_in_range: assert (!(valid_i && poly_enabled_i) || slice_k_i[SliceBits-1] == 1'b0)
+        else $error("cube4_composite: cycle %0d: sample slice %0d with polygons: at most %0d, so that k << ZFracBits stays below kZNone",
+                    cycle, slice_k_i, (1 << (SliceBits - 1)) - 1);
     end
   end
 
@@ -78,5 +95,6 @@ bind cube4_composite cube4_composite_sva #(
   .CutBits    (CutBits),
   .CutInvShift(CutInvShift),
   .PosBits    (PosBits),
-  .CutCoefBits(CutCoefBits)
+  .CutCoefBits(CutCoefBits),
+  .SliceBits  (SliceBits)
 ) u_sva (.*);

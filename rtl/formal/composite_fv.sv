@@ -88,7 +88,10 @@ module composite_fv #(
   cube4_composite #(
     .AlphaBits   (AlphaBits),
     .AccGuardBits(AccGuardBits),
-    .HasCutPlane (HasCutPlane)
+    .HasCutPlane (HasCutPlane),
+    // The proof as it was before polygons: the datapath without them (the
+    // polygon variant's second node is left to the simulation tests).
+    .HasPolygons (1'b0)
   ) u_dut (
     .clk_i,
     .rst_ni,
@@ -117,6 +120,13 @@ module composite_fv #(
     .cut_falloff_i,
     .cut_inv_falloff_i,
     .cut_keep_inside_i,
+    .poly_enabled_i   (1'b0),
+    .slice_k_i        ('0),
+    .ray_z_i          ('0),
+    .slab_red_i       ('0),
+    .slab_green_i     ('0),
+    .slab_blue_i      ('0),
+    .slab_alpha_i     ('0),
     .valid_i,
     .red_i,
     .green_i,

@@ -22,6 +22,9 @@ cube4_rtl_variant(test_rtl_compose cube4_compose_node Vcube4_compose_node_a12 SO
 # Latency 1: the instance inside cube4_composite.
 cube4_rtl_variant(test_rtl_compose cube4_compose_node Vcube4_compose_node_l1 SOURCES ${_compose_sources}
   PARAMS Latency=1)
+# Latency 0: the blend node inside cube4_composite with polygons.
+cube4_rtl_variant(test_rtl_compose cube4_compose_node Vcube4_compose_node_l0 SOURCES ${_compose_sources}
+  PARAMS Latency=0)
 # The output stage at the same other widths.
 cube4_rtl_variant(test_rtl_compose cube4_compose_out Vcube4_compose_out_a12 SOURCES cube4_acc_to_pixel.sv
   PARAMS AlphaBits=12 AccGuardBits=4)

@@ -5,8 +5,8 @@
 # (tb/rtl/test_composite_ring.cpp); the default ring (p = 4, MaxDim = 256)
 # from cube4_rtl_test, the other pipeline counts and the datapath's variants
 # verilated again below.
-set(_composite_ring_sources cube4_mul_frac.sv cube4_compose_node.sv cube4_composite.sv cube4_delay_ram.sv cube4_acc_to_pixel.sv
-  cube4_composite_unit.sv)
+set(_composite_ring_sources cube4_mul_frac.sv cube4_to_acc.sv cube4_compose_node.sv cube4_composite.sv cube4_delay_ram.sv
+  cube4_acc_to_pixel.sv cube4_rle_decode.sv cube4_composite_unit.sv)
 
 cube4_rtl_test(test_rtl_composite
   TOPS cube4_composite_ring
@@ -31,6 +31,8 @@ cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_narrow
 cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_volumepro PARAMS AlphaBits=12 AccGuardBits=0)
 # Without cut-plane hardware (the system's variant for scenes without one).
 cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_nocut PARAMS HasCutPlane=0)
+# Without polygon hardware (the system's variant for scenes without polygons).
+cube4_rtl_variant(test_rtl_composite cube4_composite Vcube4_composite_nopoly PARAMS HasPolygons=0)
 # The unit's checker alone (tb/rtl/test_composite_sva.cpp drives its
 # ray-store order invariant into a violation, which the unit cannot produce).
 cube4_rtl_variant(test_rtl_composite cube4_composite_unit_sva Vcube4_composite_unit_sva)

@@ -16,7 +16,7 @@ namespace cube4::rtl {
 
 // The compositing unit's registers: blend mode, cropping, block window and cut plane.
 template <class M>
-void drive_composite_registers(M& m, const golden::Registers& r) {
+void drive_composite_registers(M& m, const golden::Registers& r, bool polygons = false) {
   const golden::Precision& p = r.p;
   auto put = [](auto& port, int bits, auto v) { put_bits(port, 0, bits, static_cast<uint64_t>(v)); };
   put(m.blend_mode_i, 2, static_cast<uint8_t>(r.blend));
@@ -44,6 +44,7 @@ void drive_composite_registers(M& m, const golden::Registers& r) {
   put(m.cut_falloff_i, p.cut_bits, r.cut.falloff);
   put(m.cut_inv_falloff_i, p.alpha_bits + golden::kCutInvShift, r.cut.inv_falloff);
   m.cut_keep_inside_i = r.cut.keep_inside;
+  m.poly_enabled_i = polygons;  // a PolygonFrame with the frame (polygon_streams.hpp)
 }
 
 // The shading unit's mode bits, coefficients and eye vector.

@@ -52,7 +52,6 @@ inline CompositeControl composite_control(const sysc::FramePlan& plan, int k, co
                                           int y) {
   const golden::SliceControl& c = plan.slices[static_cast<size_t>(k)];
   const golden::SliceControl& next = plan.slices[static_cast<size_t>(k) + 1];
-  const golden::SliceControl& last = plan.slices[static_cast<size_t>(plan.K) - 1];
   CompositeControl cc;
   cc.valid = true;
   cc.f = f;
@@ -71,8 +70,10 @@ inline CompositeControl composite_control(const sysc::FramePlan& plan, int k, co
   cc.wy = c.wy;
   cc.wz = c.wz;
   cc.nx = static_cast<uint32_t>(plan.nx);
-  cc.last_ix = static_cast<uint32_t>(last.ix);
-  cc.last_iy = static_cast<uint32_t>(last.iy);
+  // The base-plane pixel of x = 0 at the last slice's offset: the last
+  // slice's ix, iy plus the margins a polygon scene adds (zero without).
+  cc.last_ix = static_cast<uint32_t>(plan.r.base_origin_x());
+  cc.last_iy = static_cast<uint32_t>(plan.r.base_origin_y());
   return cc;
 }
 

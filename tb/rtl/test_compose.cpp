@@ -23,6 +23,7 @@
 #include "Vcube4_compose_node.h"
 #include "Vcube4_compose_node_a12.h"
 #include "Vcube4_compose_node_a8.h"
+#include "Vcube4_compose_node_l0.h"
 #include "Vcube4_compose_node_l1.h"
 #include "golden/units/compose.hpp"
 #include "tb/rtl/rtl_check.hpp"
@@ -54,6 +55,7 @@ const Config kDefault = with(12, 16, 8, 2);  // Vcube4_compose_node: the package
 const Config kA8 = with(8, 8, 0, 2);         // Vcube4_compose_node_a8: 8-bit pixels, no guard bits
 const Config kA12 = with(12, 12, 4, 2);      // Vcube4_compose_node_a12
 const Config kL1 = with(12, 16, 8, 1);       // Vcube4_compose_node_l1: Latency 1 (cube4_composite's blend)
+const Config kL0 = with(12, 16, 8, 0);       // Vcube4_compose_node_l0: Latency 0 (cube4_composite's blend with polygons)
 
 Fields pixel_fields(const char* prefix, const g::RayAcc& x) {
   const std::string p(prefix);
@@ -390,6 +392,15 @@ TEST(RtlCompose, LatencyOne) {
   node_random<Vcube4_compose_node_l1>(kL1, name, rtl::vector_count(300000));
   node_directed<Vcube4_compose_node_l1>(kL1, name);
   node_latency<Vcube4_compose_node_l1>(kL1);
+}
+
+// Latency 0 (no register) is the blend node inside cube4_composite with
+// polygons, which feeds the slab node in the same cycle.
+TEST(RtlCompose, LatencyZero) {
+  const std::string name = "cube4_compose_node (Latency=0)";
+  node_random<Vcube4_compose_node_l0>(kL0, name, rtl::vector_count(300000));
+  node_directed<Vcube4_compose_node_l0>(kL0, name);
+  node_latency<Vcube4_compose_node_l0>(kL0);
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // RTL equivalence tests of the compositor datapath, cube4_composite:
 // cropping, block window, cut plane and blend, against golden
 // crop_and_cut() (golden/pipeline.hpp) and blend()
-// (golden/units/composite.hpp).
+// (golden/units/composite.hpp); with polygons, the Z test and the double
+// composition against golden sample_before_z() and double_composite()
+// (golden/units/composite_polygon.hpp).
 //
 // Driven cycle by cycle, back to back and with random valid gaps (junk data
 // in the gaps); the predecessor accumulator of a sample is driven
@@ -27,12 +29,15 @@
 #include "Vcube4_composite.h"
 #include "Vcube4_composite_narrow.h"
 #include "Vcube4_composite_nocut.h"
+#include "Vcube4_composite_nopoly.h"
 #include "Vcube4_composite_volumepro.h"
 #include "golden/host_driver.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/scene_io.hpp"
+#include "golden/units/composite_polygon.hpp"
 #include "golden/volume_io.hpp"
 #include "systemc/rtl/vl_context.hpp"
+#include "tb/rtl/hybrid_scene.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -100,6 +105,7 @@ struct Config {
   g::CutRegs cut;
   bool window_enabled = false;
   g::WindowRegs window;
+  bool poly_enabled = false;  // polygons (the blend mode is then composite)
 };
 
 struct CompIn {
@@ -107,6 +113,9 @@ struct CompIn {
   int32_t x = 0, y = 0, z = 0;
   uint32_t wx = 0, wy = 0, wz = 0;
   g::RayAcc acc;
+  // Polygons: the sample's slice, its ray's depth, the slab pixel behind it.
+  uint32_t k = 0, ray_z = g::kZNone;
+  g::Pixel slab;
   Config cfg;
   Fields fields() const {
     const g::CropRegs& c = cfg.crop;
@@ -152,7 +161,14 @@ struct CompIn {
             {"window_y_lo", cfg.window.range[1][0]},
             {"window_y_hi", cfg.window.range[1][1]},
             {"window_z_lo", cfg.window.range[2][0]},
-            {"window_z_hi", cfg.window.range[2][1]}};
+            {"window_z_hi", cfg.window.range[2][1]},
+            {"poly_enabled", cfg.poly_enabled},
+            {"k", this->k},
+            {"ray_z", ray_z},
+            {"slab_red", slab.r},
+            {"slab_green", slab.g},
+            {"slab_blue", slab.b},
+            {"slab_alpha", slab.a}};
   }
 };
 
@@ -180,7 +196,8 @@ g::Registers registers_of(const Config& c, const g::Precision& p) {
 }
 
 // The golden composition: golden crop_and_cut() (cropping, block window,
-// cut plane) of the sample at its position, then blend().
+// cut plane) of the sample at its position, then blend(); with polygons the
+// Z test and double_composite() instead of blend().
 g::RayAcc golden_composite(const CompIn& in, const g::Precision& p) {
   g::SliceControl sc;
   sc.z_voxel = in.z;
@@ -190,6 +207,8 @@ g::RayAcc golden_composite(const CompIn& in, const g::Precision& p) {
   g::ShadedSample s = in.s;
   s.visible = true;
   s = g::crop_and_cut(registers_of(in.cfg, p), sc, in.x, in.y, s);
+  if (in.cfg.poly_enabled)
+    return g::double_composite(in.acc, s, g::sample_before_z(static_cast<int>(in.k), in.ray_z), in.slab, p);
   return g::blend(in.cfg.mode, in.acc, s, p);
 }
 
@@ -197,10 +216,12 @@ template <class M>
 class CompositeBench {
  public:
   // has_cut_plane = false: a variant without cut-plane hardware (HasCutPlane
-  // = 0), which equals golden with the cut plane off whatever cut_enabled_i says.
+  // = 0), which equals golden with the cut plane off whatever cut_enabled_i says;
+  // has_polygons = false likewise (HasPolygons = 0, poly_enabled_i ignored).
   explicit CompositeBench(const Widths& widths = kW, const std::string& name = "cube4_composite",
-                          bool has_cut_plane = true)
-      : m(std::make_unique<M>()), sb(name, kLatency), w(widths), has_cut_plane_(has_cut_plane), junk_(9001) {
+                          bool has_cut_plane = true, bool has_polygons = true)
+      : m(std::make_unique<M>()), sb(name, kLatency), w(widths), has_cut_plane_(has_cut_plane),
+        has_polygons_(has_polygons), junk_(9001) {
     m->valid_i = 0;
     rtl::reset(*m);
   }
@@ -234,11 +255,13 @@ class CompositeBench {
     put(m->window_y_hi_i, c.window.range[1][1], w.pos_bits);
     put(m->window_z_lo_i, c.window.range[2][0], w.pos_bits);
     put(m->window_z_hi_i, c.window.range[2][1], w.pos_bits);
+    m->poly_enabled_i = c.poly_enabled;
   }
 
   void step(bool valid, CompIn in) {
     in.cfg = cfg;
     if (!has_cut_plane_) in.cfg.cut_enabled = false;
+    if (!has_polygons_) in.cfg.poly_enabled = false;
     const g::Precision& p = w.p;
     const int a = p.alpha_bits, ab = w.acc_bits();
     m->valid_i = valid;
@@ -253,12 +276,19 @@ class CompositeBench {
     put(m->wx_i, in.wx, p.weight_bits);
     put(m->wy_i, in.wy, p.weight_bits);
     put(m->wz_i, in.wz, p.weight_bits);
-    // The accumulator of the sample driven kAccDelay cycles ago, else junk.
+    put(m->slice_k_i, in.k, 16);
+    put(m->ray_z_i, in.ray_z, g::kZBits);
+    // The accumulator and slab pixel of the sample driven kAccDelay cycles
+    // ago, else junk.
     g::RayAcc acc;
-    if (!pending_.empty() && pending_.front().first + kAccDelay == cycle) {
-      acc = pending_.front().second;
+    g::Pixel slab;
+    if (!pending_.empty() && pending_.front().cycle + kAccDelay == cycle) {
+      acc = pending_.front().acc;
+      slab = pending_.front().slab;
       pending_.pop_front();
     } else {
+      slab = {static_cast<uint16_t>(junk_.bits(a)), static_cast<uint16_t>(junk_.bits(a)),
+              static_cast<uint16_t>(junk_.bits(a)), static_cast<uint16_t>(junk_.bits(a))};
       acc.r = static_cast<uint32_t>(junk_.bits(ab));
       acc.g = static_cast<uint32_t>(junk_.bits(ab));
       acc.b = static_cast<uint32_t>(junk_.bits(ab));
@@ -272,13 +302,17 @@ class CompositeBench {
     put(m->acc_alpha_i, acc.a, ab);
     put(m->acc_value_i, acc.value, p.voxel_bits);
     m->acc_selected_i = acc.valid;
+    put(m->slab_red_i, slab.r, a);
+    put(m->slab_green_i, slab.g, a);
+    put(m->slab_blue_i, slab.b, a);
+    put(m->slab_alpha_i, slab.a, a);
     rtl::settle(*m);
     sb.observe(cycle, m->valid_o, read());
     if (valid) {
       const g::RayAcc expected = golden_composite(in, p);
       count(in, expected);
       sb.expect(cycle, in, {expected});
-      pending_.emplace_back(cycle, in.acc);
+      pending_.push_back({cycle, in.acc, in.slab});
       ++vectors;
     }
     rtl::rise(*m);
@@ -300,7 +334,8 @@ class CompositeBench {
   // What the checked samples exercised (from golden values only).
   struct Coverage {
     uint64_t crop_hidden = 0, crop_shown = 0, window_hidden = 0, window_shown = 0, d_saturated = 0, cut_full = 0, cut_zero = 0, cut_ramp = 0,
-             extreme_taken = 0, extreme_kept = 0, extreme_tie = 0, ftb_saturated = 0, ftb_opaque = 0;
+             extreme_taken = 0, extreme_kept = 0, extreme_tie = 0, ftb_saturated = 0, ftb_opaque = 0,
+             z_hidden = 0, z_shown = 0, z_on_sample = 0, slab_blank = 0, slab_shown = 0;
     std::string str() const {
       return "crop hidden/shown " + std::to_string(crop_hidden) + "/" + std::to_string(crop_shown) +
              ", window hidden/shown " + std::to_string(window_hidden) + "/" + std::to_string(window_shown) +
@@ -308,7 +343,9 @@ class CompositeBench {
              std::to_string(cut_ramp) + ", d saturated " + std::to_string(d_saturated) +
              ", MIP/MinIP taken/kept/ties " + std::to_string(extreme_taken) + "/" + std::to_string(extreme_kept) +
              "/" + std::to_string(extreme_tie) + ", front-to-back colour saturated " + std::to_string(ftb_saturated) +
-             ", opaque accumulator " + std::to_string(ftb_opaque);
+             ", opaque accumulator " + std::to_string(ftb_opaque) + ", Z hidden/shown/on the sample " +
+             std::to_string(z_hidden) + "/" + std::to_string(z_shown) + "/" + std::to_string(z_on_sample) +
+             ", slab pixel blank/shown " + std::to_string(slab_blank) + "/" + std::to_string(slab_shown);
     }
   } coverage;
 
@@ -342,6 +379,11 @@ class CompositeBench {
       const uint32_t f = g::cut_factor(d, in.cfg.cut, p);
       ++(f == w.amax() ? c.cut_full : f == 0 ? c.cut_zero : c.cut_ramp);
     }
+    if (in.cfg.poly_enabled) {
+      ++(g::sample_before_z(static_cast<int>(in.k), in.ray_z) ? c.z_shown : c.z_hidden);
+      if (in.ray_z == in.k << g::kZFracBits) ++c.z_on_sample;
+      ++(g::blank(in.slab) ? c.slab_blank : c.slab_shown);
+    }
     if (in.cfg.mode == g::BlendMode::Mip || in.cfg.mode == g::BlendMode::MinIp) {
       ++(out == in.acc ? c.extreme_kept : c.extreme_taken);
       if (in.acc.valid && in.s.value == in.acc.value) ++c.extreme_tie;
@@ -362,8 +404,13 @@ class CompositeBench {
     return in;
   }
 
-  bool has_cut_plane_ = true;
-  std::deque<std::pair<uint64_t, g::RayAcc>> pending_;
+  bool has_cut_plane_ = true, has_polygons_ = true;
+  struct Pending {
+    uint64_t cycle;
+    g::RayAcc acc;
+    g::Pixel slab;
+  };
+  std::deque<Pending> pending_;
   Random junk_;
 };
 
@@ -398,6 +445,23 @@ CompIn random_sample(Random& rnd, const Widths& w, int64_t pos_max) {
   in.wx = static_cast<uint32_t>(rnd.edgy(w.wmax(), 0.1));
   in.wy = static_cast<uint32_t>(rnd.edgy(w.wmax(), 0.1));
   in.wz = static_cast<uint32_t>(rnd.edgy(w.wmax(), 0.1));
+  // Polygons: depths on, next to and far from the sample's slice; slab
+  // pixels blank, premultiplied (as the host makes them) or any bits.
+  in.k = static_cast<uint32_t>(rnd.chance(0.5) ? rnd.range(0, 40) : rnd.edgy((1 << 15) - 1, 0.1));
+  const int64_t kz = int64_t{in.k} << g::kZFracBits;
+  in.ray_z = static_cast<uint32_t>(rnd.chance(0.6)  ? std::clamp<int64_t>(kz + rnd.range(-2, 2), 0, g::kZNone)
+                                   : rnd.chance(0.3) ? g::kZNone
+                                                     : rnd.range(0, g::kZNone));
+  if (rnd.chance(0.4)) {
+    in.slab = {};
+  } else if (rnd.chance(0.7)) {
+    const g::Rgb c{static_cast<uint32_t>(rnd.edgy(amax, 0.2)), static_cast<uint32_t>(rnd.edgy(amax, 0.2)),
+                   static_cast<uint32_t>(rnd.edgy(amax, 0.2))};
+    in.slab = g::polygon_pixel(c, static_cast<uint32_t>(rnd.edgy(amax, 0.3)), w.p);
+  } else {
+    in.slab = {static_cast<uint16_t>(rnd.edgy(amax, 0.2)), static_cast<uint16_t>(rnd.edgy(amax, 0.2)),
+               static_cast<uint16_t>(rnd.edgy(amax, 0.2)), static_cast<uint16_t>(rnd.edgy(amax, 0.2))};
+  }
   return in;
 }
 
@@ -468,6 +532,12 @@ Config random_config(Random& rnd, const Widths& w, int64_t pos_max) {
     c.cut.inv_falloff = static_cast<uint64_t>(rnd.range(0, lim));
   }
   c.cut.keep_inside = rnd.chance(0.6);
+  // Polygons need the composite blend (mode 0, or 3, which also means it).
+  c.poly_enabled = rnd.chance(0.4);
+  if (c.poly_enabled) {
+    c.mode_bits = rnd.chance(0.8) ? 0 : 3;
+    c.mode = static_cast<g::BlendMode>(c.mode_bits);
+  }
   return c;
 }
 
@@ -493,7 +563,8 @@ void composite_random(const Widths& w, const std::string& name, long n) {
   EXPECT_GE(b.vectors, static_cast<uint64_t>(n));
   const auto& c = b.coverage;
   for (uint64_t k : {c.crop_hidden, c.crop_shown, c.window_hidden, c.window_shown, c.d_saturated, c.cut_full, c.cut_zero, c.cut_ramp, c.extreme_taken,
-                     c.extreme_kept, c.extreme_tie, c.ftb_saturated, c.ftb_opaque})
+                     c.extreme_kept, c.extreme_tie, c.ftb_saturated, c.ftb_opaque, c.z_hidden, c.z_shown,
+                     c.z_on_sample, c.slab_blank, c.slab_shown})
     EXPECT_GT(k, 0u) << "random stimulus missed a case: " << c.str();
 }
 
@@ -769,12 +840,12 @@ TEST(RtlComposite, MipMinIpTiesAndAlphaExtremes) {
 
 TEST(RtlComposite, HostDriverCropAndCut) { composite_host<Vcube4_composite>(kW, "cube4_composite", ""); }
 
-// Without cut-plane hardware (HasCutPlane = 0, what the system uses for
-// scenes without a cut plane): random frames with the cut plane enabled in
-// the registers half the time, which the variant ignores; golden has it off.
-TEST(RtlComposite, WithoutCutPlaneHardware) {
-  CompositeBench<Vcube4_composite_nocut> b(kW, "cube4_composite (HasCutPlane=0)", false);
-  Random rnd(907);
+// Random frames (random_config: cut plane and polygons on in the registers
+// part of the time) through a variant without some hardware, whose bench
+// turns that effect off in golden.
+template <class M>
+void random_frames(CompositeBench<M>& b, uint64_t salt) {
+  Random rnd(salt);
   long n = 0;
   const long total = rtl::vector_count(300000);
   while (n < total) {
@@ -786,9 +857,130 @@ TEST(RtlComposite, WithoutCutPlaneHardware) {
     }
   }
   EXPECT_TRUE(b.result());
+}
+
+// Without cut-plane hardware (HasCutPlane = 0, what the system uses for
+// scenes without a cut plane): random frames with the cut plane enabled in
+// the registers half the time, which the variant ignores; golden has it off.
+TEST(RtlComposite, WithoutCutPlaneHardware) {
+  CompositeBench<Vcube4_composite_nocut> b(kW, "cube4_composite (HasCutPlane=0)", false);
+  random_frames(b, 907);
   EXPECT_GT(b.coverage.crop_hidden, 0u);
   EXPECT_GT(b.coverage.ftb_opaque, 0u);
   EXPECT_EQ(b.coverage.cut_ramp + b.coverage.cut_zero, 0u) << "the variant must see no cut plane";
+}
+
+// Without polygon hardware (HasPolygons = 0, what the system uses for
+// scenes without polygons): random frames with polygons enabled in the
+// registers 40 % of the time, which the variant ignores; golden has none.
+TEST(RtlComposite, WithoutPolygonHardware) {
+  CompositeBench<Vcube4_composite_nopoly> b(kW, "cube4_composite (HasPolygons=0)", true, false);
+  random_frames(b, 909);
+  EXPECT_GT(b.coverage.cut_ramp, 0u);
+  EXPECT_EQ(b.coverage.z_hidden + b.coverage.slab_shown, 0u) << "the variant must see no polygons";
+}
+
+// The Z test's edges: a ray depth one below, on and one above the sample's
+// slice (on the sample: hidden, the surface wins the tie), 0, kZNone, for
+// slices 0, 1, a middle one and the last allowed (2^15 - 1); slab pixels
+// blank, opaque and at the edges of α; accumulators empty, opaque and in
+// between; with cropping (an invisible sample still gets its slab pixel).
+template <class M>
+void composite_z_and_slab_edges(const Widths& w, const std::string& name) {
+  CompositeBench<M> b(w, name);
+  Random rnd(711);
+  const int64_t amax = w.amax();
+  const uint32_t accedge[] = {0, 1, static_cast<uint32_t>(w.accmax() / 2), static_cast<uint32_t>(w.accmax())};
+  std::vector<g::Pixel> slabs = {g::Pixel{}};
+  for (int64_t alpha : {int64_t{1}, amax / 2, amax - 1, amax})
+    for (int64_t c : {int64_t{0}, int64_t{1}, amax}) {
+      const auto u = static_cast<uint32_t>(c);
+      slabs.push_back(g::polygon_pixel({u, static_cast<uint32_t>(amax), 0}, static_cast<uint32_t>(alpha), w.p));
+    }
+  for (bool crop : {false, true}) {
+    Config c;
+    c.poly_enabled = true;
+    c.crop_enabled = crop;  // with cropping, every sample at x = 1 is invisible
+    const int32_t top = static_cast<int32_t>(w.pos_max());
+    c.crop.slab = {{{0, 0}, {0, top}, {0, top}}};
+    c.crop.mask = 0x80;
+    b.configure(c);
+    for (uint32_t k : {0u, 1u, 77u, (1u << 15) - 1})
+      for (int64_t z : {int64_t{k} * 256 - 1, int64_t{k} * 256, int64_t{k} * 256 + 1, int64_t{0}, int64_t{g::kZNone}})
+        for (const g::Pixel& slab : slabs)
+          for (uint32_t acc_a : accedge) {
+            if (z < 0) continue;
+            CompIn in = random_sample(rnd, w, 63);
+            in.k = k;
+            in.ray_z = static_cast<uint32_t>(z);
+            in.slab = slab;
+            in.acc.a = acc_a;
+            in.acc.r = in.acc.g = in.acc.b = std::min(acc_a, accedge[rnd.range(0, 3)]);
+            in.x = static_cast<int32_t>(rnd.range(0, 1));
+            b.step(!rnd.chance(0.1), in);
+          }
+  }
+  EXPECT_TRUE(b.result());
+  EXPECT_GT(b.coverage.z_on_sample, 0u);
+  EXPECT_GT(b.coverage.z_hidden, 0u);
+  EXPECT_GT(b.coverage.ftb_saturated + b.coverage.ftb_opaque, 0u);
+}
+
+TEST(RtlComposite, DepthExactlyOnASampleAndSlabPixelEdges) {
+  composite_z_and_slab_edges<Vcube4_composite>(kW, "cube4_composite");
+}
+
+// A hybrid scene from the host: a tilted opaque plane (some of its depths
+// fall exactly on a sample: "on the sample" in the coverage) and a tilted
+// translucent one in front of it, rasterised by golden
+// (golden/polygons.hpp); every sample of the scene's slices with
+// its ray's Z (frame.z) and the slab pixel behind it (decode_beam of its
+// slab image): the values the unit will receive at RTL.
+TEST(RtlComposite, HostPolygonFrame) {
+  const std::string json =
+      R"({"volume": {"synthetic": "sphere", "size": [12, 10, 14]}, "supersampling": 2,
+          "view": {"rotate": [20, 35, 5]},
+          "polygons": [
+            {"shape": "plane", "size": [30, 30], "transform": {"rotate": [10, 0, 0], "translate": [6, 5, 2.0]},
+             "color": [0.9, 0.2, 0.1], "opacity": 1},
+            {"shape": "plane", "size": [30, 30], "transform": {"rotate": [0, 15, 0], "translate": [6, 5, 8.0]},
+             "color": [0.1, 0.3, 1], "opacity": 0.4, "lit": false}]})";
+  const rtl::HybridScene hs = rtl::hybrid_scene(json, "test_composite polygon scene");
+  const g::PolygonFrame& f = hs.frame;
+  const g::Registers& r = hs.host.regs;
+  std::printf("  fragments: opaque %llu, translucent %llu, hidden %llu, in front %llu, in slabs %llu, behind %llu\n",
+              static_cast<unsigned long long>(f.counts.opaque), static_cast<unsigned long long>(f.counts.translucent),
+              static_cast<unsigned long long>(f.counts.hidden), static_cast<unsigned long long>(f.counts.in_front),
+              static_cast<unsigned long long>(f.counts.in_slabs), static_cast<unsigned long long>(f.counts.behind));
+  ASSERT_GT(f.counts.in_slabs, 0u);
+  ASSERT_GT(f.counts.opaque, 0u);
+  CompositeBench<Vcube4_composite> b(kW, "cube4_composite (host polygon frame)");
+  Random rnd(712);
+  Config c;
+  c.poly_enabled = true;
+  b.configure(c);
+  std::vector<g::Pixel> beam(static_cast<size_t>(r.dim[0]));
+  for (int k = 0; k < r.sample_slices(); ++k) {
+    const g::SliceControl sc = g::slice_control(r, k);
+    const g::SlabImage& slab = f.slabs[static_cast<size_t>(k)];
+    for (int y = 0; y < r.dim[1]; ++y) {
+      slab.decode_beam(y, beam.data());
+      for (int x = 0; x < r.dim[0]; ++x) {
+        const int u = x - sc.ix + r.base_origin_x(), v = y - sc.iy + r.base_origin_y();
+        CompIn in = random_sample(rnd, kW, 63);
+        in.x = x;
+        in.y = y;
+        in.z = sc.z_voxel;
+        in.k = static_cast<uint32_t>(k);
+        in.ray_z = f.z[static_cast<size_t>(v) * static_cast<size_t>(f.width) + static_cast<size_t>(u)];
+        in.slab = beam[static_cast<size_t>(x)];
+        b.step(!rnd.chance(0.1), in);
+      }
+    }
+  }
+  EXPECT_TRUE(b.result());
+  EXPECT_GT(b.coverage.z_hidden, 0u);
+  EXPECT_GT(b.coverage.slab_shown, 0u);
 }
 
 TEST(RtlComposite, OtherWidths) {

@@ -22,6 +22,7 @@
 // compositing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -38,6 +39,9 @@
 #include "golden/renderers.hpp"
 #include "tb/rtl/ring_bench.hpp"
 #include "golden/blocks.hpp"
+#include "golden/units/composite_polygon.hpp"
+#include "tb/rtl/hybrid_scene.hpp"
+#include "systemc/rtl/polygon_streams.hpp"
 #include "systemc/rtl/unit_registers.hpp"
 #include "systemc/rtl/unit_streams.hpp"
 #include "tb/rtl/rtl_check.hpp"
@@ -73,7 +77,12 @@ struct Frame : RingFrame {
   // Coverage: pixels that are not zero, pixels that cropping and the cut
   // plane change, slices with dx = 1 / dy = 1.
   int lit_pixels = 0, clipped_pixels = 0, dx_slices = 0, dy_slices = 0;
+  // A hybrid scene's polygon images (Cube-5), made by the host rasteriser
+  // with the ring's p lanes; null: no polygons.
+  std::shared_ptr<g::PolygonFrame> poly;
 };
+
+void finish_frame(Frame* f);
 
 // Every shaded sample of the render, once.
 struct Collect : g::SampleProbe {
@@ -146,47 +155,72 @@ const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const
       f->use(g::block_volume(f->vol, b), b.regs);
       EXPECT_TRUE(f->regs.window_enabled) << f->name;
     }
-    const g::Registers& r = f->regs;
-    const g::Volume& vol = f->vol;
-    f->last_ix = r.x_offset(f->K - 1).integer;
-    f->last_iy = r.y_offset(f->K - 1).integer;
-    for (int k = 0; k < f->K; ++k) f->ctrl.push_back(g::slice_control(r, k));
-    // The golden base plane, and the samples the compositor receives.
-    g::FixedOptions with_acc;
-    with_acc.accumulators = true;
-    f->golden = g::render_fixed(vol, r, with_acc);
-    g::Registers open = r;
-    open.crop_enabled = false;
-    open.cut_enabled = false;
-    open.window_enabled = false;
-    f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, Sample{});
-    Collect probe(*f);
-    const g::BasePlane unclipped = g::render_fixed(vol, open, nullptr, {}, &probe);
-    for (size_t i = 0; i < f->golden.rgba.size(); i += 4) {
-      bool lit = false, clipped = false;
-      for (int c = 0; c < 4; ++c) {
-        lit |= f->golden.rgba[i + c] != 0;
-        clipped |= f->golden.rgba[i + c] != unclipped.rgba[i + c];
-      }
-      f->lit_pixels += lit;
-      f->clipped_pixels += clipped;
+    finish_frame(f);
+  });
+}
+
+// The golden results of a loaded frame: its base plane (with polygons, if
+// any) and the samples the compositor receives (without cropping, cut
+// plane, window and polygons: every sample of every ray, shaded).
+void finish_frame(Frame* f) {
+  const g::Registers& r = f->regs;
+  const g::Volume& vol = f->vol;
+  // Pixel (x - ix + last_ix, y - iy + last_iy): the last slice's offsets
+  // and a polygon scene's margins.
+  f->last_ix = r.base_origin_x();
+  f->last_iy = r.base_origin_y();
+  for (int k = 0; k < f->K; ++k) f->ctrl.push_back(g::slice_control(r, k));
+  // The golden base plane, and the samples the compositor receives.
+  g::FixedOptions with_acc;
+  with_acc.accumulators = true;
+  with_acc.polygons = f->poly.get();
+  f->golden = g::render_fixed(vol, r, with_acc);
+  g::Registers open = r;
+  open.crop_enabled = false;
+  open.cut_enabled = false;
+  open.window_enabled = false;
+  f->samples.assign(static_cast<size_t>(f->K) * f->ny * f->nx, Sample{});
+  Collect probe(*f);
+  const g::BasePlane unclipped = g::render_fixed(vol, open, nullptr, {}, &probe);
+  for (size_t i = 0; i < f->golden.rgba.size(); i += 4) {
+    bool lit = false, clipped = false;
+    for (int c = 0; c < 4; ++c) {
+      lit |= f->golden.rgba[i + c] != 0;
+      clipped |= f->golden.rgba[i + c] != unclipped.rgba[i + c];
     }
-    for (const g::SliceControl& c : f->ctrl) {
-      f->dx_slices += c.dx;
-      f->dy_slices += c.dy;
-    }
-    for (int c : probe.count)
-      if (c != 1) ADD_FAILURE() << f->name << ": the golden probe saw a sample " << c << " times";
-    EXPECT_TRUE(probe.all_visible) << f->name << ": a sample is invisible without cropping and cut plane";
-    // The stream's preconditions: offsets that move by 0 or 1 per slice, in
-    // the RTL's position range.
-    for (const g::SliceControl& c : f->ctrl) {
-      EXPECT_TRUE(c.dx == 0 || c.dx == 1) << f->name << ": dx = " << c.dx << " in slice " << c.k;
-      EXPECT_TRUE(c.dy == 0 || c.dy == 1) << f->name << ": dy = " << c.dy << " in slice " << c.k;
-      EXPECT_TRUE(c.ix >= 0 && c.iy >= 0 && c.ix <= f->last_ix && c.iy <= f->last_iy) << f->name;
-    }
+    f->lit_pixels += lit;
+    f->clipped_pixels += clipped;
+  }
+  for (const g::SliceControl& c : f->ctrl) {
+    f->dx_slices += c.dx;
+    f->dy_slices += c.dy;
+  }
+  for (int c : probe.count)
+    if (c != 1) ADD_FAILURE() << f->name << ": the golden probe saw a sample " << c << " times";
+  EXPECT_TRUE(probe.all_visible) << f->name << ": a sample is invisible without cropping and cut plane";
+  // The stream's preconditions: offsets that move by 0 or 1 per slice, in
+  // the RTL's position range.
+  for (const g::SliceControl& c : f->ctrl) {
+    EXPECT_TRUE(c.dx == 0 || c.dx == 1) << f->name << ": dx = " << c.dx << " in slice " << c.k;
+    EXPECT_TRUE(c.dy == 0 || c.dy == 1) << f->name << ": dy = " << c.dy << " in slice " << c.k;
+    EXPECT_TRUE(c.ix >= 0 && c.iy >= 0 && c.ix <= f->last_ix && c.iy <= f->last_iy) << f->name;
+  }
+  if (!f->poly) {
     EXPECT_EQ(f->golden.width, f->nx + f->last_ix);
     EXPECT_EQ(f->golden.height, f->ny + f->last_iy);
+  }
+}
+
+// A hybrid scene (volume and polygons) for a ring of p pipelines: its slab
+// lines are the ring's lanes ("pipelines": p).
+const Frame& polygon_frame(const std::string& scene_json, int p, const std::string& name) {
+  const std::string json = scene_json.substr(0, scene_json.rfind('}')) + R"(, "pipelines": )" + std::to_string(p) + "}";
+  return cached_frame<Frame>(json, [&](Frame& fr) {
+    const HybridScene h = hybrid_scene(json, "test_composite_ring polygon scene");
+    fr.name = name + ", p=" + std::to_string(p);
+    fr.use(h.volume, h.host.regs);
+    fr.poly = std::make_shared<g::PolygonFrame>(h.frame);
+    finish_frame(&fr);
   });
 }
 
@@ -197,9 +231,10 @@ const Frame& frame(const VolumeSpec& vs, const std::array<double, 3>& dir, const
 // A frame's registers; the ring sees the compositing ones.
 struct Config {
   g::Registers r;
+  bool polygons = false;
   bool operator==(const Config& o) const {
     const g::CutRegs &c = r.cut, &d = o.r.cut;
-    return r.blend == o.r.blend && r.crop_enabled == o.r.crop_enabled && r.crop.slab == o.r.crop.slab &&
+    return polygons == o.polygons && r.blend == o.r.blend && r.crop_enabled == o.r.crop_enabled && r.crop.slab == o.r.crop.slab &&
            r.crop.mask == o.r.crop.mask && r.window_enabled == o.r.window_enabled &&
            r.window.range == o.r.window.range && r.cut_enabled == o.r.cut_enabled && c.a == d.a && c.b == d.b &&
            c.c == d.c && c.dmin == d.dmin && c.dmax == d.dmax && c.falloff == d.falloff &&
@@ -207,13 +242,14 @@ struct Config {
   }
 };
 
-Config config_of(const g::Registers& r) { return Config{r}; }
+Config config_of(const Frame& f) { return Config{f.regs, f.poly != nullptr}; }
 
 // One cycle of the input stream: what the system's RTL wrapper drives
 // (systemc/rtl/unit_streams.hpp), and which frame's slice it belongs to.
 struct Beat {
   CompositeControl c;
   sysc::ShadedBeat lanes;  // one shaded sample per pipeline
+  PolygonBeat poly;        // their rays' polygon data (a polygon frame)
   int config = 0;          // index into Stream::configs
   int frame = -1, k = -1;  // of a valid beat, for reports
 };
@@ -268,7 +304,7 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
   for (size_t fi = 0; fi < frames.size(); ++fi) {
     const Frame& f = *frames[fi];
     const sysc::FramePlan plan(f.regs, p);
-    const Config cfg = config_of(f.regs);
+    const Config cfg = config_of(f);
     if (s.configs.empty() || !(s.configs.back() == cfg)) {
       // New compositor registers: drain the samples in flight first.
       if (!s.configs.empty())
@@ -305,7 +341,10 @@ Stream make_stream(const std::vector<const Frame*>& frames, int p, const StreamO
           for (int q = 0; q < p; ++q) {
             const int x = j * p + q;
             put_sample(b.lanes, q, x < f.nx ? f.at(k, x, y) : junk_sample());  // padding: any value
+            // The ray's Z, front and back pixels, by its base-plane pixel.
+            if (f.poly && x < f.nx) put_ray(b.poly, q, *f.poly, x - c.ix + f.last_ix, y - c.iy + f.last_iy);
           }
+          b.poly.slice = static_cast<uint32_t>(k);
           s.beats.push_back(b);
           ++s.valid_beats;
           // The rays this step ends (golden: no successor in slice k+1, or
@@ -336,7 +375,7 @@ struct RunResult {
 
 template <class M>
 void drive_config(M& m, const Config& c) {
-  drive_composite_registers(m, c.r);
+  drive_composite_registers(m, c.r, c.polygons);
 }
 
 template <class M>
@@ -348,11 +387,28 @@ RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const S
     bp.height = f->golden.height;
     bp.bits = f->golden.bits;
     bp.rgba.assign(f->golden.rgba.size(), 0);
+    if (f->poly)  // the host's start: front over back where no ray comes (golden start_polygons)
+      for (size_t i = 0; i < f->poly->front.size(); ++i) {
+        const g::Pixel px = g::leave_with_polygons(g::pixel_to_acc(f->poly->front[i], f->regs.p), f->poly->back[i],
+                                                   f->regs.p);
+        bp.rgba[i * 4] = px.r;
+        bp.rgba[i * 4 + 1] = px.g;
+        bp.rgba[i * 4 + 2] = px.b;
+        bp.rgba[i * 4 + 3] = px.a;
+      }
     r.planes.push_back(std::move(bp));
   }
   std::vector<std::vector<uint8_t>> written(frames.size());
   for (size_t i = 0; i < frames.size(); ++i)
     written[i].assign(static_cast<size_t>(frames[i]->golden.width) * frames[i]->golden.height, 0);
+
+  // Each pipeline's slab line source (one polygon frame per run).
+  std::vector<SlabLineSource> slab_src;
+  for (const Frame* f : frames)
+    if (f->poly) {
+      if (frames.size() != 1) throw std::logic_error("a polygon frame runs alone");
+      for (int q = 0; q < p; ++q) slab_src.emplace_back(*f->poly, q, p);
+    }
 
   m.valid_i = 0;
   drive_config(m, s.configs.front());
@@ -381,7 +437,15 @@ RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const S
     }
     drive_config(m, s.configs[static_cast<size_t>(b->config)]);
     drive_composite_stream(m, b->c, b->lanes, p, kDefaults);
+    drive_composite_polygons(m, b->poly, p, kAlphaBits);
+    for (const SlabLineSource& src : slab_src) src.present(m);
     cube4::rtl::settle(m);
+    std::vector<int> consumed(slab_src.size());
+    std::vector<bool> line(slab_src.size());
+    for (size_t q = 0; q < slab_src.size(); ++q) {
+      consumed[q] = static_cast<int>(get_bits(m.slab_consume_o, static_cast<int>(q) * 3, 3));
+      line[q] = get_bits(m.slab_line_o, static_cast<int>(q), 1) != 0;
+    }
 
     for (int q = 0; q < p; ++q) {
       const Expect* e =
@@ -459,7 +523,13 @@ RunResult run_ring(M& m, int p, const std::vector<const Frame*>& frames, const S
       }
     }
     cube4::rtl::rise(m);
+    for (size_t q = 0; q < slab_src.size(); ++q) slab_src[q].clocked(consumed[q], line[q]);
   }
+  // Every decoder read its line of every beam of every slice.
+  for (size_t q = 0; q < slab_src.size(); ++q)
+    if (slab_src[q].lines() != static_cast<size_t>(frames[0]->K) * frames[0]->ny)
+      fail("pipeline " + std::to_string(q) + " started " + std::to_string(slab_src[q].lines()) + " slab lines of " +
+           std::to_string(frames[0]->K * frames[0]->ny));
   if (ei != s.expects.size()) {
     const Expect& e = s.expects[ei];
     std::ostringstream o;
@@ -563,6 +633,51 @@ void ring_matrix(const RingParams& rp) {
   EXPECT_GT(dx, 0u);
   EXPECT_GT(dy, 0u);
 }
+
+// Hybrid scenes (Cube-5): a tilted opaque plane through the volume (samples
+// at or behind it hidden, some exactly on its depth), a translucent plane
+// exactly on a slab boundary and another tilted one (slab images), planes
+// in front of and behind the volume and beside it (front and back pixels,
+// rays that meet no sample); the ring's base plane equals golden
+// render_fixed() with the PolygonFrame, every pixel and accumulator, in the
+// cycle the unit's contract gives; with and without idle cycles.
+const char* kHybridScene = R"({"volume": {"synthetic": "sphere", "size": [12, 10, 11]}, "supersampling": 2,
+    "view": {"rotate": [20, 35, 5]}, "shading": true,
+    "transfer": {"color": [[0, 1, 0.2, 0], [0.5, 0, 1, 0.3], [1, 0.1, 0, 1]], "opacity": [[0, 0.02], [0.4, 0.1], [1, 0.35]]},
+    "polygons": [
+      {"shape": "plane", "size": [8, 8], "transform": {"rotate": [10, 5, 0], "translate": [6, 5, 7.0]},
+       "color": [0.9, 0.2, 0.1], "opacity": 1},
+      {"shape": "plane", "size": [9, 9], "transform": {"translate": [6, 5, 3.0]},
+       "color": [0.1, 0.3, 1], "opacity": 0.4, "lit": false},
+      {"shape": "plane", "size": [7, 9], "transform": {"rotate": [0, 30, 0], "translate": [5, 4, 5.5]},
+       "color": [0.2, 1, 0.3], "opacity": 0.3},
+      {"shape": "plane", "size": [20, 20], "transform": {"translate": [6, 5, -3]},
+       "color": [1, 1, 0.2], "opacity": 0.25, "lit": false},
+      {"shape": "plane", "size": [20, 20], "transform": {"translate": [6, 5, 15]},
+       "color": [0.3, 0.3, 0.9], "opacity": 1, "lit": false}]})";
+
+template <class M>
+void polygon_ring(const RingParams& rp, uint64_t salt) {
+  const Frame& f = polygon_frame(kHybridScene, rp.p, "hybrid sphere");
+  ASSERT_TRUE(f.poly);
+  const g::PolygonFrame::Counts& c = f.poly->counts;
+  EXPECT_GT(c.opaque, 0u);
+  EXPECT_GT(c.in_front, 0u);
+  EXPECT_GT(c.in_slabs, 0u);
+  EXPECT_GT(c.behind, 0u);
+  // The polygons change the picture: the same frame without them differs
+  // in many pixels (so a ring that ignored a polygon path would fail).
+  const g::BasePlane plain = g::render_fixed(f.vol, f.regs, g::FixedOptions{});
+  int changed = 0;
+  for (size_t i = 0; i < plain.rgba.size(); i += 4)
+    changed += !std::equal(&plain.rgba[i], &plain.rgba[i] + 4, &f.golden.rgba[i]);
+  EXPECT_GT(changed, static_cast<int>(plain.rgba.size() / 4 / 2)) << "pixels the polygons change";
+  for (double stall : {0.0, 0.3}) check_ring<M>(rp, {&f}, StreamOptions{stall, 3}, salt);
+}
+
+TEST(RtlCompositeRing, PolygonsP1) { polygon_ring<Vcube4_composite_ring_p1>(kRingP1, 801); }
+TEST(RtlCompositeRing, PolygonsP4) { polygon_ring<Vcube4_composite_ring>(kRingP4, 804); }
+TEST(RtlCompositeRing, PolygonsP5) { polygon_ring<Vcube4_composite_ring_p5>(kRingP5, 805); }
 
 TEST(RtlCompositeRing, P1MatchesGoldenBasePlane) { ring_matrix<Vcube4_composite_ring_p1>(kRingP1); }
 TEST(RtlCompositeRing, P2MatchesGoldenBasePlane) { ring_matrix<Vcube4_composite_ring_p2>(kRingP2); }

@@ -117,6 +117,7 @@ TEST(RtlCompositeSva, FrameRegistersStable) {
     b->blend_mode_i = 0;
     b->crop_enabled_i = 0;
     b->crop_x_lo_i = 0;
+    b->poly_enabled_i = 0;
     b->valid_i = 0;
     reset(*b);
     for (int cycle = 1; cycle <= 10; ++cycle) {
@@ -133,6 +134,40 @@ TEST(RtlCompositeSva, FrameRegistersStable) {
     if (*c.message)
       expect_fired(b, "a_frame_registers_stable",
                    {"cycle " + std::to_string(c.change_cycle) + ":", c.message});
+    else
+      expect_quiet(b);
+  }
+}
+
+// Polygons only with the composite blend, and with sample slices below 2^15
+// (so that kZNone hides nothing); the same streams within the rules are quiet.
+TEST(RtlCompositeSva, PolygonPreconditions) {
+  CUBE4_SKIP_WITHOUT_ASSERTIONS();
+  struct Case {
+    int mode;
+    unsigned k;
+    const char* label;
+    const char* message;
+  };
+  for (const Case c : {Case{0, 32767, "", ""}, Case{3, 5, "", ""},
+                       Case{1, 5, "a_polygons_composite", "polygons with blend mode 1"},
+                       Case{0, 32768, "a_slice_in_range", "sample slice 32768 with polygons: at most 32767"}}) {
+    SvaBench<Vcube4_composite> b;
+    b->blend_mode_i = static_cast<uint8_t>(c.mode);
+    b->crop_enabled_i = 0;
+    b->cut_enabled_i = 0;
+    b->window_enabled_i = 0;
+    b->poly_enabled_i = 1;
+    b->slice_k_i = static_cast<uint16_t>(c.k);
+    b->valid_i = 0;
+    reset(*b);
+    for (int cycle = 1; cycle <= 10; ++cycle) {
+      b->valid_i = cycle == 2;
+      settle(*b);
+      rise(*b);
+    }
+    if (*c.label)
+      expect_fired(b, c.label, {"cycle 2:", c.message});
     else
       expect_quiet(b);
   }

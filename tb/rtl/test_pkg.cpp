@@ -12,6 +12,8 @@
 #include "golden/precision.hpp"
 #include "golden/units/composite_crop.hpp"
 #include "golden/units/composite_cut_plane.hpp"
+#include "golden/units/composite_polygon.hpp"
+#include "golden/units/rle_decode.hpp"
 
 namespace {
 
@@ -56,5 +58,8 @@ TEST(RtlPackage, DefaultsAreGoldens) {
 // The widths the register map and the unit wrappers state in C++.
 static_assert(Pkg::CutCoefBits == g::kCutCoefBits, "cut-plane a, b, c width");
 static_assert(Pkg::PosBits == g::kPositionBits, "sample position width");
+static_assert(Pkg::ZBits == g::kZBits && Pkg::ZFracBits == g::kZFracBits, "a ray's depth Z");
+static_assert(Pkg::SliceBits + Pkg::ZFracBits == Pkg::ZBits, "k << ZFracBits fits Z for every k");
+static_assert((1 << Pkg::RleWordBits) == g::kRleRunMax, "a slab line's word holds a run length less one");
 
 }  // namespace
