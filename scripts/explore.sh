@@ -5,12 +5,18 @@
 # (a first run synthesises every width configuration once with yosys,
 # minutes each; the script runs that first and says how long it took),
 # copies the plots to docs/images/ and writes the "explore-fronts" section.
-#   scripts/explore.sh [-j JOBS]
+#   scripts/explore.sh [-j JOBS] [--no-gates]   (--no-gates: no yosys, the gate columns empty)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$here/scripts/setup.sh" >/dev/null
-jobs=$(nproc)
-[ "${1:-}" = "-j" ] && jobs=$2
+jobs=$(nproc) gates=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    -j) jobs=$2; shift 2 ;;
+    --no-gates) gates=(--no-gates); shift ;;
+    *) echo "explore.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+done
 cube4=$here/build/tb/cube4
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -20,32 +26,35 @@ times=$tmp/times.txt
 for sweep in brainsmall_20 sphere_20; do
   # Warm the gate cache (synthesis is per width configuration, not per run).
   t0=$(date +%s.%N)
-  "$cube4" explore "$here/scenes/explore/$sweep.json" --out "$tmp/$sweep-warm" -j "$jobs" --gates-cache "$cache" --no-plots
+  [ ${#gates[@]} = 0 ] &&
+    "$cube4" explore "$here/scenes/explore/$sweep.json" --out "$tmp/$sweep-warm" -j "$jobs" --gates-cache "$cache" --no-plots
   t1=$(date +%s.%N)
   # The timed run: every point rendered again, the gates from the cache.
-  "$cube4" explore "$here/scenes/explore/$sweep.json" --out "$tmp/$sweep" -j "$jobs" --gates-cache "$cache"
+  "$cube4" explore "$here/scenes/explore/$sweep.json" --out "$tmp/$sweep" -j "$jobs" --gates-cache "$cache" "${gates[@]}"
   t2=$(date +%s.%N)
   echo "$sweep $t0 $t1 $t2" >> "$times"
   cp "$tmp/$sweep/plots/fronts.png" "$here/docs/images/explore-$sweep.png"
   cp "$tmp/$sweep/plots/fronts.svg" "$here/docs/images/explore-$sweep.svg"
   cp "$tmp/$sweep/results.json" "$tmp/$sweep.json"
 done
-python3 - "$tmp" "$times" "$jobs" "$(nproc)" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/explore.md" explore-fronts
+python3 - "$tmp" "$times" "$jobs" "$(nproc)" "${gates[*]:-}" "$(cut -d' ' -f1 /proc/loadavg)" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/explore.md" explore-fronts
 import json, sys, datetime
-tmp, times, jobs, cores = sys.argv[1:5]
+tmp, times, jobs, cores, no_gates, load = sys.argv[1:7]
 t = {}
 for l in open(times):
     n, a, b, c = l.split()
     t[n] = (float(b) - float(a), float(c) - float(b))
-print(f"Generated {datetime.date.today()} by `scripts/explore.sh` ({jobs} jobs on {cores} cores), "
-      "from `cube4 explore scenes/explore/SWEEP.json`.")
+print(f"Generated {datetime.date.today()} by `scripts/explore.sh{' ' + no_gates if no_gates else ''}` ({jobs} jobs on "
+      f"{cores} cores, 1-minute load average {load} at the end), from `cube4 explore scenes/explore/SWEEP.json`."
+      + (" Gates not counted in this run (--no-gates): the gate columns are empty." if no_gates else ""))
 print()
 for sweep, name in [("brainsmall_20", "brainsmall"), ("sphere_20", "the volume-sampled 64³ sphere")]:
     doc = json.load(open(f"{tmp}/{sweep}.json"))
     first, timed = t[sweep]
     print(f"**{name}** (`scenes/explore/{sweep}.json`, model {doc['model']}): the timed run took {timed:.0f} s "
-          f"for {len(doc['points'])} points with the gate counts cached; the first run, which synthesised "
-          f"each width configuration not yet in the cache, {first:.0f} s.")
+          f"for {len(doc['points'])} points" + ("" if no_gates else
+          f" with the gate counts cached; the first run, which synthesised each unit configuration not yet in "
+          f"the cache, {first:.0f} s") + ".")
     print()
     print(f"![fronts of {name}](images/explore-{sweep}.png)")
     print()

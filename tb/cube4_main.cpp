@@ -915,6 +915,7 @@ int main(int argc, char** argv) {
   explore->add_flag("--collect", ea.collect, "collect the results there are into the table, fronts and plots");
   explore->add_option("--point", ea.point, "run one point (what each job does)")->check(CLI::Range(0, 9999));
   explore->add_flag_callback("--no-plots", [&ea] { ea.plots = false; }, "no plots (they need python3-matplotlib)");
+  explore->add_flag("--no-gates", ea.no_gates, "no gate counts (yosys), whatever the sweep says");
   explore->add_option("--gates-cache", ea.gates_cache,
                       "folder of yosys results per width configuration (default: ~/.cache/cube4/gates)");
   explore->add_flag("-q,--quiet", ea.quiet, "no progress on stderr");

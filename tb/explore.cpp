@@ -227,8 +227,23 @@ std::string gate_config(const golden::Scene& s) {
   return c;
 }
 
+// The RTL the gates are counted on: every rtl/*.sv (yosys reads them all),
+// so that a change to a unit's source is a new cache entry.
+std::string rtl_source_hash() {
+  static const std::string h = [] {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(fs::path(source_dir()) / "rtl"))
+      if (e.path().extension() == ".sv") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    std::string all;
+    for (const fs::path& f : files) all += f.filename().string() + "\n" + read_text(f);
+    return hash_text(all);
+  }();
+  return h;
+}
+
 std::string gates_cache_file(const std::string& cache_dir, const std::string& unit, const std::string& params) {
-  return (fs::path(cache_dir) / (unit + "-" + hash_text(params) + ".json")).string();
+  return (fs::path(cache_dir) / (unit + "-" + hash_text(params + "|" + rtl_source_hash()) + ".json")).string();
 }
 
 std::map<std::string, std::string> declared_parameters(const std::string& config) {
@@ -675,7 +690,8 @@ Sweep load_sweep(const std::string& path) {
 }
 
 int run_explore(const ExploreArgs& a, const std::string& self) {
-  const Sweep s = load_sweep(a.sweep);
+  Sweep s = load_sweep(a.sweep);
+  if (a.no_gates) s.gates = false;
   const fs::path out = fs::absolute(a.out.empty() ? fs::path(fs::path(a.sweep).stem().string() + ".explore") : fs::path(a.out));
   fs::create_directories(out);
   if (a.point >= 0) {
@@ -695,6 +711,7 @@ int run_explore(const ExploreArgs& a, const std::string& self) {
     std::string cmd = shell_quote(self) + " explore " + shell_quote(fs::absolute(a.sweep).string()) + " --out " +
                       shell_quote(out.string()) + " --point " + std::to_string(p.index);
     if (!a.gates_cache.empty()) cmd += " --gates-cache " + shell_quote(fs::absolute(a.gates_cache).string());
+    if (a.no_gates) cmd += " --no-gates";
     all += cmd + "\n";
     if (!point_done(s, p, out)) pending += cmd + "\n", ++n_pending;
   }

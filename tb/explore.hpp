@@ -26,6 +26,7 @@ struct ExploreArgs {
   bool collect = false;      // only collect the results there are
   int point = -1;            // >= 0: run this one point (what a job does)
   bool plots = true;
+  bool no_gates = false;     // no yosys, whatever the sweep says
   bool quiet = false;
   std::string gates_cache;   // empty: $XDG_CACHE_HOME/cube4/gates or ~/.cache/cube4/gates
 };
