@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -471,6 +472,9 @@ TEST(RtlGradientRing, VoxelTagsTravelWithTheCentreSample) {
     for (int S : {1, 2, 3}) {
       const SampleFrame& f = frame(kViews[v].name, kSizes[(v + S) % kSizes.size()], kViews[v].dir, kViews[v].up, S,
                                    static_cast<int>(60 + v), kVoxelTagBits);
+      // The labelling gives the samples several tags (else the test proves little).
+      std::set<uint32_t> seen(f.vtags.begin(), f.vtags.end());
+      EXPECT_GE(seen.size(), 3u) << f.name << ": the samples' tags hardly differ";
       for (int mode = 0; mode < 3; ++mode) {
         StreamOptions opt;
         opt.chain = mode < 2;
