@@ -30,7 +30,9 @@
 //   SupersamplingBits                              - as cube4_gradient
 //   UserTagBits                                    - user part of the tag
 //   MaxDim                                         - largest nx and ny
-//   CtrlBits, TagBits, DimBits                     - (derived) as the unit
+//   VoxelTagBits                                   - voxel tag width (bela
+//                                                    §III; 0: none, vtag_o 0)
+//   CtrlBits, TagBits, DimBits, VTagPortBits       - (derived) as the unit
 `include "cube4_pkg.sv"
 
 module cube4_gradient_ring #(
@@ -42,13 +44,16 @@ module cube4_gradient_ring #(
   parameter int unsigned  SupersamplingBits = cube4_pkg::SupersamplingBits,
   parameter int unsigned  UserTagBits       = 8,
   parameter int unsigned  MaxDim            = cube4_pkg::MaxDim,
+  parameter int unsigned  VoxelTagBits      = cube4_pkg::VoxelTagBits,
   localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 1,
   localparam int unsigned TagBits           = CtrlBits + UserTagBits,
-  localparam int unsigned DimBits           = $clog2(MaxDim + NumPipes)
+  localparam int unsigned DimBits           = $clog2(MaxDim + NumPipes),
+  localparam int unsigned VTagPortBits      = VoxelTagBits > 0 ? VoxelTagBits : 1
 ) (
   input  logic                             clk_i,
   input  logic                             rst_ni,
-  // Sample streams, pipeline k at bit k / [k*VoxelBits +:] / [k*TagBits +:].
+  // Sample streams, pipeline k at bit k / [k*VoxelBits +:] / [k*TagBits +:]
+  // / [k*VTagPortBits +:] (the samples' voxel tags).
   input  logic [NumPipes-1:0]              valid_i,
   input  logic [NumPipes-1:0]              beam_start_i,
   input  logic [NumPipes-1:0]              beam_end_i,
@@ -56,6 +61,7 @@ module cube4_gradient_ring #(
   input  logic [NumPipes-1:0]              slice_end_i,
   input  logic [NumPipes*VoxelBits-1:0]    sample_i,
   input  logic [NumPipes*TagBits-1:0]      tag_i,
+  input  logic [NumPipes*VTagPortBits-1:0] vtag_i,
   // Gradient streams, pipeline k at bit k / [k*width +: width].
   output logic [NumPipes-1:0]              valid_o,
   output logic [NumPipes-1:0]              beam_start_o,
@@ -63,6 +69,7 @@ module cube4_gradient_ring #(
   output logic [NumPipes-1:0]              slice_start_o,
   output logic [NumPipes-1:0]              slice_end_o,
   output logic [NumPipes*VoxelBits-1:0]    sample_o,
+  output logic [NumPipes*VTagPortBits-1:0] vtag_o,
   output logic [NumPipes*GradientBits-1:0] gx_o,
   output logic [NumPipes*GradientBits-1:0] gy_o,
   output logic [NumPipes*GradientBits-1:0] gz_o,
@@ -99,7 +106,8 @@ module cube4_gradient_ring #(
       .GradientShift    (GradientShift),
       .SupersamplingBits(SupersamplingBits),
       .UserTagBits      (UserTagBits),
-      .MaxDim           (MaxDim)
+      .MaxDim           (MaxDim),
+      .VoxelTagBits     (VoxelTagBits)
     ) u_unit (
       .clk_i        (clk_i),
       .rst_ni       (rst_ni),
@@ -110,6 +118,7 @@ module cube4_gradient_ring #(
       .slice_end_i  (slice_end_i[k]),
       .sample_i     (sample_i[k*VoxelBits +: VoxelBits]),
       .tag_i        (tag_i[k*TagBits +: TagBits]),
+      .vtag_i       (vtag_i[k*VTagPortBits +: VTagPortBits]),
       .link_o       (link[k*LinkBits +: LinkBits]),
       .link_now_o   (link_now[k*LinkBits +: LinkBits]),
       .link_prev_o  (link_prev[k*LinkBits +: LinkBits]),
@@ -121,6 +130,7 @@ module cube4_gradient_ring #(
       .slice_start_o(slice_start_o[k]),
       .slice_end_o  (slice_end_o[k]),
       .sample_o     (sample_o[k*VoxelBits +: VoxelBits]),
+      .vtag_o       (vtag_o[k*VTagPortBits +: VTagPortBits]),
       .gx_o         (gx_o[k*GradientBits +: GradientBits]),
       .gy_o         (gy_o[k*GradientBits +: GradientBits]),
       .gz_o         (gz_o[k*GradientBits +: GradientBits]),

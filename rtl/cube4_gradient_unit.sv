@@ -59,11 +59,21 @@
 //   [4*R + SupersamplingBits]  ZeroSlice: the frame's trailing zero slice
 //   [CtrlBits +: UserTagBits]  user tag, out on tag_o with the slice's samples
 //
+// Voxel tags (bela §III; VoxelTagBits > 0): vtag_i is each sample's voxel
+// tag (cube4_interp_ring's vtag_o); vtag_o is the centre sample's, beside
+// sample_o (only classification and material use it, so no neighbour's tag
+// is kept). It takes the centre's path: a slice delay of tags (the ahead
+// slice's, read one lap later as the current slice's) and a beam delay of
+// the current slice's (read as beam y's), both cube4_delay_ram with the
+// sample delays' control, so the tags stay in step with their samples. The
+// zero slice, the zero beam and a frame's first slice carry tag 0, as their
+// samples carry 0. With VoxelTagBits = 0 there is none of it; vtag_o is 0.
+//
 // Output per gradient (valid_o): gx_o, gy_o, gz_o; sample_o = S(x, y, s)
-// (the centre sample, for the shader); x_o = j*p + k, y_o = y; flags
-// beam_start_o / beam_end_o (j = 0 / B-1) and slice_start_o / slice_end_o
-// (y = 0 / ny-1); tag_o = the user tag of slice s. Order: slice, beam,
-// partial beam, as the input.
+// (the centre sample, for the shader) and vtag_o its voxel tag;
+// x_o = j*p + k, y_o = y; flags beam_start_o / beam_end_o (j = 0 / B-1) and
+// slice_start_o / slice_end_o (y = 0 / ny-1); tag_o = the user tag of
+// slice s. Order: slice, beam, partial beam, as the input.
 //
 // Latency: a step (an input sample, or a zero-beam step) enters the
 // alignment register; it leaves with the next step, or one cycle later if it
@@ -94,8 +104,10 @@
 //                           ceil(MaxDim/p) and MaxDim * that
 //   CtrlBits, TagBits     - (derived) slice-control part and whole tag width
 //   DimBits               - (derived) width of x_o, y_o
+//   VoxelTagBits          - voxel tag width (Precision::tag_bits, 0: none)
 //   LinkBits              - (derived) link width: five samples, [0] current
 //                           row y, [1]/[2] ahead rows, [3]/[4] behind rows
+//   VTagPortBits          - (derived) vtag_i/vtag_o width, at least one bit
 `include "cube4_pkg.sv"
 
 module cube4_gradient_unit #(
@@ -108,12 +120,14 @@ module cube4_gradient_unit #(
   parameter int unsigned  SupersamplingBits = cube4_pkg::SupersamplingBits,
   parameter int unsigned  UserTagBits       = 8,
   parameter int unsigned  MaxDim            = cube4_pkg::MaxDim,
+  parameter int unsigned  VoxelTagBits      = cube4_pkg::VoxelTagBits,
   localparam int unsigned BeamDepth         = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth        = MaxDim * BeamDepth,
   localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 1,
   localparam int unsigned TagBits           = CtrlBits + UserTagBits,
   localparam int unsigned DimBits           = $clog2(MaxDim + NumPipes),
-  localparam int unsigned LinkBits          = 5 * VoxelBits
+  localparam int unsigned LinkBits          = 5 * VoxelBits,
+  localparam int unsigned VTagPortBits      = VoxelTagBits > 0 ? VoxelTagBits : 1
 ) (
   input  logic                           clk_i,
   input  logic                           rst_ni,
@@ -125,6 +139,7 @@ module cube4_gradient_unit #(
   input  logic                           slice_end_i,
   input  logic [VoxelBits-1:0]           sample_i,
   input  logic [TagBits-1:0]             tag_i,
+  input  logic [VTagPortBits-1:0]        vtag_i,
   // Near-neighbour links.
   output logic [LinkBits-1:0]            link_o,       // aligned column, to k-1 and k+1
   output logic [LinkBits-1:0]            link_now_o,   // this step's column (wrap, k = 0)
@@ -138,6 +153,7 @@ module cube4_gradient_unit #(
   output logic                           slice_start_o,
   output logic                           slice_end_o,
   output logic [VoxelBits-1:0]           sample_o,
+  output logic [VTagPortBits-1:0]        vtag_o,
   output logic signed [GradientBits-1:0] gx_o,
   output logic signed [GradientBits-1:0] gy_o,
   output logic signed [GradientBits-1:0] gz_o,
@@ -415,6 +431,62 @@ module cube4_gradient_unit #(
 
   assign {tag_o, y_o, x_o, sample_o, slice_end_o, slice_start_o, beam_end_o, beam_start_o} =
       side_q[(GradLatency-1)*SideBits +: SideBits];
+
+  // -------------------------------------------------------------------------
+  // The centre sample's voxel tag: the centre's way through the slice and
+  // beam delays (same control), then held with its column and delayed
+  // beside cube4_gradient.
+  if (VoxelTagBits > 0) begin : g_vtag
+    localparam int unsigned T = VoxelTagBits;
+    logic [T-1:0] ahead_tag, slice_tag_rdata, cur_tag, mid_tag, col_tag_q;
+    logic [GradLatency*T-1:0] vtag_q;
+
+    assign ahead_tag = (zb_active || tag_i[ZeroBit]) ? '0 : vtag_i;
+    assign cur_tag   = (zb_active || first_q) ? '0 : slice_tag_rdata;
+
+    cube4_delay_ram #(
+      .Width   (T),
+      .MaxDepth(SliceDepth)
+    ) u_slice_tag_delay (
+      .clk_i    (clk_i),
+      .rst_ni   (rst_ni),
+      .depth_i  (SliceDepthBits'(SliceDepth)),
+      .clear_i  (1'b0),
+      .advance_i(step_in),
+      .last_i   (slice_end_i && beam_end_i),
+      .write_i  (1'b1),
+      .wdata_i  (ahead_tag),
+      .rdata_o  (slice_tag_rdata)
+    );
+
+    // Beam y+1's current tag in, beam y's (the centre row's) out.
+    cube4_delay_ram #(
+      .Width   (T),
+      .MaxDepth(BeamDepth)
+    ) u_beam_tag_delay (
+      .clk_i    (clk_i),
+      .rst_ni   (rst_ni),
+      .depth_i  (BeamDepthBits'(BeamDepth)),
+      .clear_i  (1'b0),
+      .advance_i(step),
+      .last_i   (s_beam_end),
+      .write_i  (1'b1),
+      .wdata_i  (cur_tag),
+      .rdata_o  (mid_tag)
+    );
+
+    always_ff @(posedge clk_i) begin
+      if (step) begin
+        col_tag_q <= mid_tag;
+      end
+      vtag_q <= {vtag_q[(GradLatency-1)*T-1:0], col_tag_q};
+    end
+    assign vtag_o = vtag_q[GradLatency*T-1 -: T];
+  end else begin : g_no_vtag
+    logic unused_vtag;
+    assign unused_vtag = ^vtag_i;
+    assign vtag_o      = '0;
+  end
 
   // The output slice's ZeroSlice bit is not needed (its input ends the frame).
   logic unused_zero;

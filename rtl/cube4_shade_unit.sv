@@ -16,8 +16,14 @@
 // valid_o. Frame registers and table write ports are the shader's (change
 // them only with no sample in flight).
 //
+// Voxel tags (bela §III; VoxelTagBits > 0): vtag_i, the sample's tag (the
+// gradient unit's vtag_o), waits for the magnitude with the sample and goes
+// to cube4_shade, which classifies at {tag, sample} (class_waddr_i is that
+// wide) and reads the tag's material (host port mat_*). Without tags vtag_i
+// and mat_* are unused and there is no tag delay.
+//
 // Parameters: those of cube4_shade and cube4_shade_magnitude (NrIterations);
-// SideBits and HasShading as in cube4_shade; HasMagnitude (0: no magnitude
+// SideBits, HasShading and VoxelTagBits as in cube4_shade; HasMagnitude (0: no magnitude
 // unit, |g| = 0: equals golden when the magnitude is off, same latency).
 // The system model runs HasShading = HasMagnitude = 0 for scenes without
 // shading and gradient-magnitude modulation (docs/system.md).
@@ -43,7 +49,9 @@ module cube4_shade_unit #(
   parameter bit          HasShading      = 1'b1,
   // 0: no magnitude hardware (|g| reads 0; for scenes that use no GmLUT).
   parameter bit          HasMagnitude    = 1'b1,
-  localparam int unsigned MapAddrBits    = $clog2(6 * MapFaceRes * MapFaceRes)
+  parameter int unsigned VoxelTagBits    = cube4_pkg::VoxelTagBits,
+  localparam int unsigned MapAddrBits    = $clog2(6 * MapFaceRes * MapFaceRes),
+  localparam int unsigned VTagPortBits   = VoxelTagBits > 0 ? VoxelTagBits : 1
 ) (
   input  logic                              clk_i,
   input  logic                              rst_ni,
@@ -65,7 +73,7 @@ module cube4_shade_unit #(
   input  logic signed [EyeBits-1:0]         eye_z_i,
   // Host write ports (cube4_shade's).
   input  logic                              class_we_i,
-  input  logic [VoxelBits-1:0]              class_waddr_i,
+  input  logic [VoxelTagBits+VoxelBits-1:0] class_waddr_i,
   input  logic [3*ColorBits+AlphaBits-1:0]  class_wdata_i,
   input  logic                              gmlut_we_i,
   input  logic [MagnitudeBits-1:0]          gmlut_waddr_i,
@@ -76,6 +84,9 @@ module cube4_shade_unit #(
   input  logic                              smap_we_i,
   input  logic [MapAddrBits-1:0]            smap_waddr_i,
   input  logic [MapBits-1:0]                smap_wdata_i,
+  input  logic                              mat_we_i,
+  input  logic [VTagPortBits-1:0]           mat_waddr_i,
+  input  logic [3*CoefBits+3*AlphaBits-1:0] mat_wdata_i,
   // Gradient stream (the gradient unit's output; zero gradients when the
   // gradient unit is off).
   input  logic                              valid_i,
@@ -83,6 +94,7 @@ module cube4_shade_unit #(
   input  logic signed [GradientBits-1:0]    grad_x_i,
   input  logic signed [GradientBits-1:0]    grad_y_i,
   input  logic signed [GradientBits-1:0]    grad_z_i,
+  input  logic [VTagPortBits-1:0]           vtag_i,
   input  logic [SideBits-1:0]               side_i,
   // Shaded stream.
   output logic                              valid_o,
@@ -146,6 +158,22 @@ module cube4_shade_unit #(
   logic [SideBits-1:0]            sh_side;
   assign {sh_side, sh_gz, sh_gy, sh_gx, sh_sample} = carry_q[(MagLatency-1)*Carried +: Carried];
 
+  // The voxel tag waits likewise, in a delay of its own that exists only
+  // with tags.
+  logic [VTagPortBits-1:0] sh_vtag;
+  if (VoxelTagBits > 0) begin : g_vtag
+    logic [MagLatency*VoxelTagBits-1:0] vtag_q;
+    always_ff @(posedge clk_i) begin : vtag_delay
+      vtag_q[0 +: VoxelTagBits] <= vtag_i;
+      for (int unsigned k = 1; k < MagLatency; k++) begin
+        vtag_q[k*VoxelTagBits +: VoxelTagBits] <= vtag_q[(k-1)*VoxelTagBits +: VoxelTagBits];
+      end
+    end
+    assign sh_vtag = vtag_q[(MagLatency-1)*VoxelTagBits +: VoxelTagBits];
+  end else begin : g_no_vtag
+    assign sh_vtag = vtag_i;  // unused by cube4_shade without tags
+  end
+
   cube4_shade #(
     .VoxelBits       (VoxelBits),
     .WeightBits      (WeightBits),
@@ -163,7 +191,7 @@ module cube4_shade_unit #(
     .DivBitsPerStage (DivBitsPerStage),
     .SideBits        (SideBits),
     .HasShading      (HasShading),
-    .VoxelTagBits    (0)  // the ring's streams do not carry voxel tags yet
+    .VoxelTagBits    (VoxelTagBits)
   ) u_shader (
     .clk_i,
     .rst_ni,
@@ -194,16 +222,16 @@ module cube4_shade_unit #(
     .smap_we_i,
     .smap_waddr_i,
     .smap_wdata_i,
-    .mat_we_i   (1'b0),
-    .mat_waddr_i('0),
-    .mat_wdata_i('0),
+    .mat_we_i,
+    .mat_waddr_i,
+    .mat_wdata_i,
     .valid_i    (mag_valid),
     .sample_i   (sh_sample),
     .grad_x_i   (sh_gx),
     .grad_y_i   (sh_gy),
     .grad_z_i   (sh_gz),
     .grad_mag_i (magnitude),
-    .vtag_i     ('0),
+    .vtag_i     (sh_vtag),
     .valid_o,
     .red_o,
     .green_o,

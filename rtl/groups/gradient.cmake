@@ -37,6 +37,11 @@ foreach(_cfg "1;24" "2;16" "4;256" "5;12")
   cube4_rtl_variant(test_rtl_gradient cube4_interp_ring Vcube4_interp_ring_g${_p} SOURCES ${_gradient_interp_sources}
     PARAMS NumPipes=${_p} MaxDim=${_dim} TagBits=${_gradient_tag_bits})
 endforeach()
+# With 4-bit voxel tags (bela §III), chained likewise.
+cube4_rtl_variant(test_rtl_gradient cube4_gradient_ring Vcube4_gradient_ring_t4 SOURCES ${_gradient_sources}
+  PARAMS NumPipes=4 MaxDim=16 VoxelTagBits=4)
+cube4_rtl_variant(test_rtl_gradient cube4_interp_ring Vcube4_interp_ring_gt4 SOURCES ${_gradient_interp_sources}
+  PARAMS NumPipes=4 MaxDim=16 TagBits=${_gradient_tag_bits} VoxelTagBits=4)
 # The datapath as a top, default and other widths (test_gradient.cpp holds the
 # same values).
 cube4_rtl_variant(test_rtl_gradient cube4_gradient Vcube4_gradient SOURCES cube4_lerp.sv)

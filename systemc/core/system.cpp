@@ -216,13 +216,16 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
     throw std::invalid_argument("pipelines: " + std::to_string(cfg.p) + " (a cycle-level run takes at most " +
                                 std::to_string(kMaxLanes) + "; --model tlm takes any)");
   if (cfg.all_tlm()) return;
-  // Voxel tags (bela §III) travel through the transaction-level units' streams;
-  // the RTL units' rings do not carry them yet.
-  if (r.p.tag_bits > 0)
-    throw std::invalid_argument("precision: tag_bits = " + std::to_string(r.p.tag_bits) +
-                                ": the RTL units do not carry voxel tags yet; render with --model tlm or fixed");
   require_rtl(cfg.p);
-  if (const golden::PrecisionField* f = golden::first_difference(r.p, golden::Precision{}, true))
+  // Voxel tags (bela §III) run on the units verilated with tag hardware
+  // (kRtlVoxelTagBits wide, for CMake's CUBE4_SYSTEM_TAG_PIPES); every other
+  // width is the default one.
+  if (r.p.tag_bits > 0 && (cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl ||
+                           cfg.levels[static_cast<size_t>(Unit::Gradient)] == Level::Rtl))
+    require_rtl_tags(cfg.p, r.p.tag_bits);
+  golden::Precision widths = r.p;
+  widths.tag_bits = 0;
+  if (const golden::PrecisionField* f = golden::first_difference(widths, golden::Precision{}, true))
     throw std::invalid_argument(std::string("precision: ") + f->key + " = " + std::to_string(r.p.*f->member) +
                                 ", but the system's RTL is verilated with the default widths "
                                 "(docs/fixed-point.md); run other widths with --model tlm");

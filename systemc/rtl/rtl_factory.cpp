@@ -10,6 +10,7 @@
 #include "Vsys_compose_node.h"
 #include "Vsys_compose_out.h"
 #include "Vsys_shade_lean.h"
+#include "Vsys_shade_tags.h"
 #include "Vsys_shade_unit.h"
 #include "Vsys_shade_unit_cube4_pkg.h"
 #include "rtl_variant_headers.inc"
@@ -31,6 +32,11 @@ static_assert(Pkg::DimBits == kRtlAddrDimBits, "the address generator's dimensio
 static_assert(Pkg::SupersamplingBits == rtl::kSupersamplingBits, "the gradient ring's supersampling field");
 static_assert(Pkg::PosBits == golden::kPositionBits, "the compositor's position width");
 static_assert(Pkg::CutCoefBits == golden::kCutCoefBits, "the cut-plane coefficient width");
+
+#ifdef CUBE4_RTL_VOXEL_TAG_BITS
+static_assert(kRtlVoxelTagBits == CUBE4_RTL_VOXEL_TAG_BITS, "the verilated VoxelTagBits differ (systemc/CMakeLists.txt)");
+#endif
+static_assert(Pkg::VoxelBits + kRtlVoxelTagBits <= 16, "a voxel word {tag, value} is at most 16 bits");
 
 #ifdef CUBE4_SHADE_SIDE_BITS
 static_assert(kShadeSideBits == CUBE4_SHADE_SIDE_BITS, "the verilated shading unit's SideBits differ (systemc/CMakeLists.txt)");
@@ -65,6 +71,29 @@ void require_rtl(int p) {
   if (!rtl_available(p)) unavailable(p);
 }
 
+std::vector<int> rtl_tag_pipes() {
+  return {
+#define CUBE4_RTL_TAG_P(p) p,
+#include "rtl_tag_variant_list.inc"
+#undef CUBE4_RTL_TAG_P
+  };
+}
+
+void require_rtl_tags(int p, int tag_bits) {
+  if (tag_bits == 0) return;
+  if (tag_bits > kRtlVoxelTagBits)
+    throw std::invalid_argument("precision: tag_bits = " + std::to_string(tag_bits) + ", but the RTL has " +
+                                std::to_string(kRtlVoxelTagBits) + "-bit voxel tags; run with --model tlm");
+  std::string list;
+  for (int q : rtl_tag_pipes()) {
+    if (q == p) return;
+    list += (list.empty() ? "" : ", ") + std::to_string(q);
+  }
+  throw std::invalid_argument("pipelines: " + std::to_string(p) + " has no RTL with voxel tags (built for p = " +
+                              (list.empty() ? std::string("none") : list) +
+                              "; add it to CMake's CUBE4_SYSTEM_TAG_PIPES, or run --model tlm)");
+}
+
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
                                       const TraceWindow& trace) {
   switch (plan.p) {
@@ -77,6 +106,15 @@ std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewL
 }
 
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+  if (plan.r.p.tag_bits > 0) {
+    require_rtl_tags(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_TAG_P(p) \
+  case p: return std::make_unique<RtlInterp<Vsys_interp_tags_p##p>>(plan, ctx, trace);
+#include "rtl_tag_variant_list.inc"
+#undef CUBE4_RTL_TAG_P
+    }
+  }
   switch (plan.p) {
 #define CUBE4_RTL_P(p) \
   case p: return std::make_unique<RtlInterp<Vsys_interp_p##p>>(plan, ctx, trace);
@@ -87,6 +125,15 @@ std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContex
 }
 
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+  if (plan.r.p.tag_bits > 0) {
+    require_rtl_tags(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_TAG_P(p) \
+  case p: return std::make_unique<RtlGradient<Vsys_gradient_tags_p##p>>(plan, kRtlMaxDim, ctx, trace);
+#include "rtl_tag_variant_list.inc"
+#undef CUBE4_RTL_TAG_P
+    }
+  }
   switch (plan.p) {
 #define CUBE4_RTL_P(p) \
   case p: return std::make_unique<RtlGradient<Vsys_gradient_p##p>>(plan, kRtlMaxDim, ctx, trace);
@@ -99,6 +146,9 @@ std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedCo
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace,
                                         bool full) {
   if (!rtl_available(plan.p)) unavailable(plan.p);
+  // Tags need the classifier's wider address and the material RAM (one
+  // unit model serves every p).
+  if (plan.r.p.tag_bits > 0) return std::make_unique<RtlShade<Vsys_shade_tags>>(plan, ctx, trace);
   if (!full && !plan.r.shading && !plan.r.magnitude) return std::make_unique<RtlShade<Vsys_shade_lean>>(plan, ctx, trace);
   return std::make_unique<RtlShade<Vsys_shade_unit>>(plan, ctx, trace);
 }
@@ -119,7 +169,9 @@ std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemo
 // The network's units exist at the default widths (what the machines'
 // partial images have at RTL too).
 void require_default_compose_widths(const golden::Precision& p) {
-  if (const golden::PrecisionField* f = golden::first_difference(p, golden::Precision{}, true))
+  golden::Precision q = p;
+  q.tag_bits = 0;  // the partial images carry no tags
+  if (const golden::PrecisionField* f = golden::first_difference(q, golden::Precision{}, true))
     throw std::invalid_argument(std::string("precision: ") + f->key + " = " + std::to_string(p.*f->member) +
                                 ", but the composition network's RTL is verilated with the default widths; "
                                 "compose at TLM");

@@ -20,11 +20,19 @@ struct TraceWindow;
 // Largest permuted nx, ny the verilated rings' storage holds (cube4_pkg::MaxDim,
 // checked in rtl_factory.cpp).
 constexpr int kRtlMaxDim = 256;
+// The voxel tag width of the rings and shading unit verilated with tags
+// (bela §III; CMake CUBE4_SYSTEM_TAG_PIPES, checked in rtl_factory.cpp): a
+// scene's tags of up to this many bits use them, in their low bits.
+constexpr int kRtlVoxelTagBits = 4;
 
 std::vector<int> rtl_pipes();
 bool rtl_available(int p);
 // Throws, naming the p values that have RTL, if p has none.
 void require_rtl(int p);
+// The p values verilated with voxel tags; throws, naming them, if a scene
+// with tags (tag_bits > 0) has no such RTL at p.
+std::vector<int> rtl_tag_pipes();
+void require_rtl_tags(int p, int tag_bits);
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
                                       const TraceWindow& trace);
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);

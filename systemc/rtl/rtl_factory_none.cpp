@@ -16,6 +16,8 @@ namespace {
 }  // namespace
 
 void require_rtl(int) { unavailable(); }
+std::vector<int> rtl_tag_pipes() { return {}; }
+void require_rtl_tags(int, int) { unavailable(); }
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan&, const golden::SkewLayout&, VerilatedContext&, const TraceWindow&) {
   unavailable();
 }

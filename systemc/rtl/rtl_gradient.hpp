@@ -1,7 +1,10 @@
 // Gradient unit at RTL: cube4_gradient_ring (p pipelines and their links).
+// With voxel tags (bela §III) M is a ring with kRtlVoxelTagBits of tag
+// hardware: each sample's tag goes in, the centre's comes out.
 #pragma once
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 
 namespace cube4::sysc {
@@ -11,7 +14,8 @@ class RtlGradient final : public GradientIf {
  public:
   RtlGradient(const FramePlan& plan, int max_dim, VerilatedContext& ctx, const TraceWindow& trace)
       : p_(plan.p), v_(plan.r.p.voxel_bits), g_(plan.r.p.gradient_bits), tag_bits_(plan.tag_bits()),
-        dim_bits_(clog2(max_dim + plan.p)), m_(ctx, "gradient", trace, "gradient") {}
+        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), dim_bits_(clog2(max_dim + plan.p)),
+        m_(ctx, "gradient", trace, "gradient") {}
 
   void clock(const SampleBeat& in, GradientBeat& out) override {
     using rtl::get_bits;
@@ -27,6 +31,7 @@ class RtlGradient final : public GradientIf {
     for (int k = 0; k < p_; ++k) {
       put_bits(m.sample_i, k * v_, v_, in.sample[static_cast<size_t>(k)]);
       put_bits(m.tag_i, k * tag_bits_, tag_bits_, in.tag);
+      if (vtag_bits_ > 0) put_bits(m.vtag_i, k * vtag_bits_, vtag_bits_, in.vtag[static_cast<size_t>(k)]);
     }
     m_.settle();
     out.valid = m.valid_o & 1;
@@ -40,6 +45,7 @@ class RtlGradient final : public GradientIf {
     for (int k = 0; k < p_; ++k) {
       const auto i = static_cast<size_t>(k);
       out.sample[i] = static_cast<uint16_t>(get_bits(m.sample_o, k * v_, v_));
+      if (vtag_bits_ > 0) out.vtag[i] = static_cast<uint8_t>(get_bits(m.vtag_o, k * vtag_bits_, vtag_bits_));
       out.gx[i] = static_cast<int16_t>(sign_extend(get_bits(m.gx_o, k * g_, g_), g_));
       out.gy[i] = static_cast<int16_t>(sign_extend(get_bits(m.gy_o, k * g_, g_), g_));
       out.gz[i] = static_cast<int16_t>(sign_extend(get_bits(m.gz_o, k * g_, g_), g_));
@@ -54,7 +60,7 @@ class RtlGradient final : public GradientIf {
     while ((1 << b) < v) ++b;
     return b;
   }
-  int p_, v_, g_, tag_bits_, dim_bits_;
+  int p_, v_, g_, tag_bits_, vtag_bits_, dim_bits_;  // vtag_bits_: the model's VoxelTagBits
   RtlModel<M> m_;
 };
 

@@ -1,13 +1,17 @@
 // Shading at RTL: one cube4_shade_unit (magnitude + shader) per pipeline,
 // tables loaded through their write ports before the frame (host load
 // time, not counted in the frame's cycles). The position and slice travel
-// on the unit's side channel.
+// on the unit's side channel. With voxel tags (bela §III) M is the unit
+// with kRtlVoxelTagBits of tag hardware: each sample's tag goes in, the
+// classification table is loaded at {tag, value} and each tag's material
+// through the mat_* port.
 #pragma once
 #include <memory>
 #include <vector>
 
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/unit_registers.hpp"
 
@@ -41,6 +45,7 @@ class RtlShade final : public ShadeIf {
       const auto i = static_cast<size_t>(k);
       m.valid_i = in.valid;
       m.sample_i = in.sample[i];
+      if (plan_.r.p.tag_bits > 0) put_bits(m.vtag_i, 0, kRtlVoxelTagBits, in.vtag[i]);
       put_bits(m.grad_x_i, 0, pr.gradient_bits, static_cast<uint64_t>(in.gx[i]));
       put_bits(m.grad_y_i, 0, pr.gradient_bits, static_cast<uint64_t>(in.gy[i]));
       put_bits(m.grad_z_i, 0, pr.gradient_bits, static_cast<uint64_t>(in.gz[i]));
@@ -72,12 +77,17 @@ class RtlShade final : public ShadeIf {
     const golden::Registers& r = plan_.r;
     M& m = *u;
     m.valid_i = 0;
-    m.class_we_i = m.gmlut_we_i = m.dmap_we_i = m.smap_we_i = 0;
+    m.class_we_i = m.gmlut_we_i = m.dmap_we_i = m.smap_we_i = m.mat_we_i = 0;
+    // The loads write only the scene's address bits: with narrower tags than
+    // the model's the top address bits must be 0, not the random reset's.
+    m.class_waddr_i = 0;
+    m.mat_waddr_i = 0;
     auto edge = [&u] { u.setup_edge(); };
     rtl::load_class_table(m, r.p, r.classification, edge);
     rtl::load_gm_lut(m, r.p, r.gm_lut, edge);
     rtl::load_map(m, r.p, rtl::Map::Diffuse, r.diffuse_map, edge);
     rtl::load_map(m, r.p, rtl::Map::Specular, r.specular_map, edge);
+    if (r.p.tag_bits > 0) rtl::load_materials(m, r.p, r.tag_coefs, edge);
     rtl::drive_shade_registers(m, r);
   }
 

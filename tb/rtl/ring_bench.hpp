@@ -155,6 +155,7 @@ struct RingFrame {
   void load(const std::string& json, const char* file, std::string frame_name) {
     const golden::Scene scene = golden::parse_scene(json, file);
     golden::Volume v = golden::load_volume(scene.volume, scene.precision.voxel_bits, ".");
+    golden::load_tags(scene, v, ".");  // none without "tags"
     const golden::Registers r = golden::program_host(scene, v).regs;
     name = std::move(frame_name);
     use(std::move(v), r);

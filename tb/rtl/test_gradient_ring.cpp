@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -31,10 +32,12 @@
 #include "Vcube4_gradient_ring_p1.h"
 #include "Vcube4_gradient_ring_p2.h"
 #include "Vcube4_gradient_ring_p5.h"
+#include "Vcube4_gradient_ring_t4.h"
 #include "Vcube4_interp_ring_g1.h"
 #include "Vcube4_interp_ring_g2.h"
 #include "Vcube4_interp_ring_g4.h"
 #include "Vcube4_interp_ring_g5.h"
+#include "Vcube4_interp_ring_gt4.h"
 #include "golden/pipeline.hpp"
 #include "systemc/rtl/gradient_tag.hpp"
 #include "systemc/rtl/unit_streams.hpp"
@@ -59,15 +62,17 @@ static_assert(kTagBits <= 64, "the test packs a tag into 64 bits");
 // ends a beam), then cube4_gradient's 3 cycles.
 constexpr int kGradientStages = 3;
 
-// Ring parameters, as in rtl/groups/gradient.cmake.
-
+// Ring parameters, as in rtl/groups/gradient.cmake: the rings with 4-bit
+// voxel tags (bela §III) have p = 4, MaxDim = 16.
+constexpr int kVoxelTagBits = 4;
+constexpr RingParams kRingT4{4, 16};
 
 // ===========================================================================
 // Golden frames: every sample and its gradient (regs.gradient forced on).
 
 const SampleFrame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
-                         const std::array<double, 3>& up, int S, int seed) {
-  const SampleFrame& f = sample_frame(name, size, dir, up, S, seed, /*gradient=*/true);
+                         const std::array<double, 3>& up, int S, int seed, int vtag_bits = 0) {
+  const SampleFrame& f = sample_frame(name, size, dir, up, S, seed, /*gradient=*/true, vtag_bits);
   EXPECT_EQ(f.regs.p.voxel_bits, kVoxelBits);
   EXPECT_EQ(f.regs.p.weight_bits, kWeightBits);
   EXPECT_EQ(f.regs.p.gradient_bits, kGradientBits);
@@ -105,6 +110,7 @@ struct SampleIn {
   bool beam_start, beam_end, slice_start, slice_end;
   uint64_t tag;
   std::vector<uint32_t> sample;  // direct mode: one per pipeline
+  std::vector<uint32_t> vtag;    // direct mode: the samples' voxel tags
 };
 
 // A gradient every pipeline must emit in `cycle` (pipeline q: x = j*p + q).
@@ -119,6 +125,7 @@ struct StreamOptions {
   double stall = 0;      // probability of idle cycles before a partial beam (and after a slice)
   int max_gap = 3;       // 1 .. max_gap idle cycles each time
   bool junk = false;     // junk values wherever the rings must ignore them
+  int vtag_bits = 0;     // the rings' VoxelTagBits: voxel words {tag, value}, tags checked
 };
 
 struct Stream {
@@ -142,6 +149,7 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
     vo.stall = opt.stall;
     vo.max_gap = opt.max_gap;
     vo.junk = opt.junk;
+    vo.vtag_bits = opt.vtag_bits;
     VoxelStream v = voxel_stream(
         frames, plans, [&](int fi, int pass) { return slice_tag(plans[static_cast<size_t>(fi)], pass, rng); },
         kVoxelBits, kTagBits, vo, rng);
@@ -152,7 +160,7 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
     s.beats = std::move(v.beats);
     for (const PassSample& e : v.samples)
       s.in.push_back({e.cycle, e.frame, e.k, e.y, e.j, e.f.beam_start, e.f.beam_end, e.f.slice_start, e.f.slice_end,
-                      e.tag, {}});
+                      e.tag, {}, {}});
   } else {
     uint64_t cycle = 0;
     for (size_t fi = 0; fi < frames.size(); ++fi) {
@@ -163,13 +171,21 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
         for (int y = 0; y < f.ny; ++y)
           for (int j = 0; j < B; ++j) {
             if (opt.stall > 0 && rng.chance(opt.stall)) cycle += rng.range(1, opt.max_gap);
-            SampleIn e{cycle++, static_cast<int>(fi), k, y, j, j == 0, j == B - 1, y == 0, y == f.ny - 1, tag, {}};
+            SampleIn e{cycle++, static_cast<int>(fi), k, y, j, j == 0, j == B - 1, y == 0, y == f.ny - 1, tag, {}, {}};
             for (int q = 0; q < p; ++q) {
               const int x = j * p + q;
               uint32_t v = 0;  // padding columns: zero (as the interpolation ring makes them)
-              if (k < f.K && x < f.nx) v = f.samples[f.index(k, y, x)];
-              if (k == f.K && opt.junk) v = static_cast<uint32_t>(rng.bits(kVoxelBits));
+              uint32_t t = 0;
+              if (k < f.K && x < f.nx) {
+                v = f.samples[f.index(k, y, x)];
+                t = f.vtags[f.index(k, y, x)];
+              }
+              if (k == f.K && opt.junk) {
+                v = static_cast<uint32_t>(rng.bits(kVoxelBits));
+                if (opt.vtag_bits > 0) t = static_cast<uint32_t>(rng.bits(opt.vtag_bits));
+              }
               e.sample.push_back(v);
+              e.vtag.push_back(t);
             }
             s.in.push_back(std::move(e));
           }
@@ -237,10 +253,12 @@ struct RunResult {
   uint64_t voxel_valid = 0, sample_valid = 0;
 };
 
+// vtag_bits: the rings' VoxelTagBits (0: the one-bit tag lanes stay 0).
 template <class G, class I>
 RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<const SampleFrame*>& frames,
-              const Stream& s, Random& rng) {
+              const Stream& s, Random& rng, int vtag_bits) {
   RunResult r;
+  const int lane = vtag_bits > 0 ? vtag_bits : 1;
   cube4::rtl::reset(m);
   if (interp) cube4::rtl::reset(*interp);
   const int D = rp.dim_bits();
@@ -254,9 +272,9 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
     const SampleIn* in = ii < s.in.size() && s.in[ii].cycle == cycle ? &s.in[ii] : nullptr;
     if (interp) {
       const sysc::VoxelBeat b =
-          cycle < s.beats.size() ? s.beats[cycle] : junk_voxel_beat(rng, p, kVoxelBits, kTagBits);
+          cycle < s.beats.size() ? s.beats[cycle] : junk_voxel_beat(rng, p, kVoxelBits + vtag_bits, kTagBits);
       I& v = *interp;
-      drive_interp_stream(v, b, p, kVoxelBits, kTagBits);
+      drive_interp_stream(v, b, p, kVoxelBits + vtag_bits, kTagBits);
       if (b.valid) ++r.voxel_valid;
       cube4::rtl::settle(v);
       // The interpolation ring's outputs drive the gradient ring as they are.
@@ -267,6 +285,7 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
       m.slice_end_i = v.slice_end_o;
       m.sample_i = v.sample_o;
       m.tag_i = v.tag_o;
+      m.vtag_i = v.vtag_o;
       // Its timing and samples, as docs/rtl-interp.md promises (checked here
       // only to tell an interpolation fault from a gradient one).
       for (int q = 0; q < p; ++q) {
@@ -298,6 +317,7 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
         put_bits(m.slice_end_i, q, 1, v ? in->slice_end : rng.chance(0.5));
         put_bits(m.sample_i, q * kVoxelBits, kVoxelBits, v ? in->sample[q] : rng.bits(kVoxelBits));
         put_bits(m.tag_i, q * kTagBits, kTagBits, v ? in->tag : rng.bits(kTagBits));
+        if (vtag_bits > 0) put_bits(m.vtag_i, q * lane, lane, v ? in->vtag[q] : rng.bits(lane));
       }
     }
     if (in) {
@@ -323,18 +343,21 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
           static_cast<int32_t>(cube4::rtl::sign_extend(get_bits(m.gz_o, q * kGradientBits, kGradientBits), kGradientBits))};
       const int gx = static_cast<int>(get_bits(m.x_o, q * D, D)), gy = static_cast<int>(get_bits(m.y_o, q * D, D));
       const uint64_t tag = get_bits(m.tag_o, q * kUserTagBits, kUserTagBits);
+      // The centre's voxel tag (padding columns: 0, as their samples).
+      const uint32_t exp_vtag = real ? f.vtags[i] : 0;
+      const auto vtag = static_cast<uint32_t>(get_bits(m.vtag_o, q * lane, lane));
       const bool bs = get_bits(m.beam_start_o, q, 1), be = get_bits(m.beam_end_o, q, 1);
       const bool ss = get_bits(m.slice_start_o, q, 1), se = get_bits(m.slice_end_o, q, 1);
       const bool same = sample == exp_sample && (!real || got_g == exp_g) && gx == x && gy == e->y &&
                         tag == exp_tag && bs == e->beam_start && be == e->beam_end && ss == e->slice_start &&
-                        se == e->slice_end;
+                        se == e->slice_end && vtag == exp_vtag;
       if (!same) {
         std::ostringstream d;
         d << "expected: g=(" << exp_g.x << "," << exp_g.y << "," << exp_g.z << ")" << (real ? "" : " (padding: any)")
-          << " sample=" << exp_sample << " x=" << x << " y=" << e->y << " tag=" << exp_tag
+          << " sample=" << exp_sample << " vtag=" << exp_vtag << " x=" << x << " y=" << e->y << " tag=" << exp_tag
           << " flags bs/be/ss/se=" << e->beam_start << e->beam_end << e->slice_start << e->slice_end
           << "\n  got:      g=(" << got_g.x << "," << got_g.y << "," << got_g.z << ") sample=" << sample
-          << " x=" << gx << " y=" << gy << " tag=" << tag << " flags bs/be/ss/se=" << bs << be << ss << se;
+          << " vtag=" << vtag << " x=" << gx << " y=" << gy << " tag=" << tag << " flags bs/be/ss/se=" << bs << be << ss << se;
         fail(cycle, q, e, "output differs", d.str());
       } else {
         ++r.checked;
@@ -366,7 +389,7 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
   ASSERT_TRUE(s.error.empty()) << s.error;
   auto m = std::make_unique<G>();
   std::unique_ptr<I> interp = opt.chain ? std::make_unique<I>() : nullptr;
-  const RunResult r = run(*m, interp.get(), rp.p, rp, frames, s, rng);
+  const RunResult r = run(*m, interp.get(), rp.p, rp, frames, s, rng, opt.vtag_bits);
   m->final();
   if (interp) interp->final();
   EXPECT_TRUE(r.ok) << r.report;
@@ -436,6 +459,34 @@ void ring_matrix(const RingParams& rp) {
               "ahead x %d y %d; saturated components %llu)\n",
               rp.p, runs, static_cast<unsigned long long>(gradients), bases[0][1], bases[1][1], bases[2][1],
               bases[3][1], static_cast<unsigned long long>(saturated));
+}
+
+// Voxel tags (bela §III): every view, S = 1, 2, 3, chained (voxel words
+// {tag, value} -> samples and their tags -> gradients and the centre's tag)
+// without and with stalls and junk, and direct; the rings with 4-bit tags.
+// Every centre's tag is golden's (the SampleProbe's tagged()).
+TEST(RtlGradientRing, VoxelTagsTravelWithTheCentreSample) {
+  Timer t("voxel tags");
+  uint64_t gradients = 0;
+  for (size_t v = 0; v < kViews.size(); ++v)
+    for (int S : {1, 2, 3}) {
+      const SampleFrame& f = frame(kViews[v].name, kSizes[(v + S) % kSizes.size()], kViews[v].dir, kViews[v].up, S,
+                                   static_cast<int>(60 + v), kVoxelTagBits);
+      // The labelling gives the samples several tags (else the test proves little).
+      std::set<uint32_t> seen(f.vtags.begin(), f.vtags.end());
+      EXPECT_GE(seen.size(), 3u) << f.name << ": the samples' tags hardly differ";
+      for (int mode = 0; mode < 3; ++mode) {
+        StreamOptions opt;
+        opt.chain = mode < 2;
+        opt.stall = mode == 0 ? 0 : 0.3;
+        opt.junk = mode > 0;
+        opt.vtag_bits = kVoxelTagBits;
+        check_ring<Vcube4_gradient_ring_t4, Vcube4_interp_ring_gt4>(kRingT4, {&f}, opt, 7000 + 10 * v + S + 100 * mode,
+                                                                     &gradients);
+        if (::testing::Test::HasFailure()) return;
+      }
+    }
+  std::printf("  %llu golden gradients and centre tags matched\n", static_cast<unsigned long long>(gradients));
 }
 
 TEST(RtlGradientRing, P1MatchesGoldenGradients) {

@@ -244,8 +244,8 @@ TEST(System, ThroughTheHostInterface) {
 // the volume window carries {tag, value} words into the voxel memory, the
 // CLASS window the {tag, value} table and the MATERIAL window each tag's
 // coefficients; two touching spheres told apart only by their tags, from
-// all six base planes, equal golden's, in golden's cycles. A cycle-level run
-// refuses tags so far.
+// all six base planes, equal golden's, in golden's cycles. At RTL only a p
+// verilated with voxel tags takes them.
 TEST(System, TaggedSpheresThroughTheHostInterfaceTlm) {
   if (!sysc::host_interface_available(4))
     GTEST_SKIP() << "this process cannot build the host interface for p = 4 any more (ctest runs each test alone)";
@@ -271,8 +271,34 @@ TEST(System, TaggedSpheresThroughTheHostInterfaceTlm) {
     EXPECT_EQ(sysc::host_session(cfg, regs.p).machine.volume(0).tags, vol.tags);
     sysc::SystemConfig rtl = cfg;
     rtl.levels[static_cast<size_t>(sysc::Unit::Interp)] = Level::Rtl;
-    EXPECT_THROW(sysc::check_system_limits(regs, rtl), std::invalid_argument);
+    const std::vector<int> tagged = sysc::rtl_tag_pipes();
+    for (int p : sysc::rtl_pipes()) {
+      rtl.p = p;
+      if (std::find(tagged.begin(), tagged.end(), p) != tagged.end())
+        EXPECT_NO_THROW(sysc::check_system_limits(regs, rtl)) << "p = " << p;
+      else
+        EXPECT_THROW(sysc::check_system_limits(regs, rtl), std::invalid_argument) << "p = " << p;
+    }
   }
+}
+
+// Two touching spheres (the synthetic "spheres") told apart only by their
+// tags, seen from base plane `view` (0 .. 5: +x, -x, +y, -y, +z, -z).
+Case tagged_spheres(int view) {
+  const char* dirs[6][2] = {{"[1, 0, 0]", "[0, 1, 0]"}, {"[-1, 0, 0]", "[0, 1, 0]"}, {"[0, 1, 0]", "[0, 0, 1]"},
+                            {"[0, -1, 0]", "[0, 0, 1]"}, {"[0, 0, 1]", "[0, 1, 0]"}, {"[0, 0, -1]", "[0, 1, 0]"}};
+  Case c;
+  c.volume = R"({"synthetic": "spheres", "size": [14, 10, 9], "radius": 3.5})";
+  c.direction = dirs[view][0];
+  c.up = dirs[view][1];
+  c.transfer = R"("transfer": {"opacity": [[0, 0], [0.3, 0], [0.5, 0.6], [1, 0.8]]})";
+  c.effects = R"("shading": true, "material": {"ks": 0.4}, "precision": {"tag_bits": 2},
+                 "tags": {"label": [{"tag": 1, "box": {"min": [0, 0, 0], "max": [6, 9, 8]}},
+                                    {"tag": 2, "box": {"min": [7, 0, 0], "max": [13, 9, 8]}}],
+                          "classes": [{"tag": 1, "color": [[0, 1, 0.1, 0.1], [1, 1, 0.1, 0.1]]},
+                                      {"tag": 2, "color": [[0, 0.1, 0.1, 1], [1, 0.1, 0.1, 1]],
+                                       "material": {"kd": 0.5, "ks": 0.9}}]})";
+  return c;
 }
 
 // The same spheres through the transaction-level units clocked beat by
@@ -282,25 +308,45 @@ TEST(System, TaggedSpheresThroughTheHostInterfaceTlm) {
 // stream (tags included) and the base plane equal golden's, from all six
 // base planes.
 TEST(System, TaggedSpheresTlmCycleLevelAllBasePlanes) {
-  const char* dirs[6][2] = {{"[1, 0, 0]", "[0, 1, 0]"}, {"[-1, 0, 0]", "[0, 1, 0]"}, {"[0, 1, 0]", "[0, 0, 1]"},
-                            {"[0, -1, 0]", "[0, 0, 1]"}, {"[0, 0, 1]", "[0, 1, 0]"}, {"[0, 0, -1]", "[0, 1, 0]"}};
-  for (const auto& d : dirs) {
-    SCOPED_TRACE(d[0]);
-    Case c;
-    c.volume = R"({"synthetic": "spheres", "size": [14, 10, 9], "radius": 3.5})";
-    c.direction = d[0];
-    c.up = d[1];
-    c.transfer = R"("transfer": {"opacity": [[0, 0], [0.3, 0], [0.5, 0.6], [1, 0.8]]})";
-    c.effects = R"("shading": true, "material": {"ks": 0.4}, "precision": {"tag_bits": 2},
-                   "tags": {"label": [{"tag": 1, "box": {"min": [0, 0, 0], "max": [6, 9, 8]}},
-                                      {"tag": 2, "box": {"min": [7, 0, 0], "max": [13, 9, 8]}}],
-                            "classes": [{"tag": 1, "color": [[0, 1, 0.1, 0.1], [1, 1, 0.1, 0.1]]},
-                                        {"tag": 2, "color": [[0, 0.1, 0.1, 1], [1, 0.1, 0.1, 1]],
-                                         "material": {"kd": 0.5, "ks": 0.9}}]})";
-    run(c, 4, kTlm, true);
-    run(c, 3, kTlm, true);
+  for (int view = 0; view < 6; ++view) {
+    SCOPED_TRACE("base plane " + std::to_string(view));
+    run(tagged_spheres(view), 4, kTlm, true);
+    run(tagged_spheres(view), 3, kTlm, true);
   }
 }
+
+// The same spheres at RTL (the rings and shading unit verilated with voxel
+// tags): the words {tag, value} through the interpolation ring's storage and
+// links, the nearest voxel's tag per sample, the centre's through the
+// gradient ring's delays, classification at {tag, value} and the material
+// RAM; base plane, every unit's stream and the cycles equal golden's and the
+// cycle model's (the tags cost no cycle), from all six base planes, at p = 4
+// and 2.
+TEST(System, TaggedSpheresRtlAllBasePlanes) {
+  for (int p : {4, 2}) {
+    if (!sysc::rtl_available(p)) continue;
+    const std::vector<int> tagged = sysc::rtl_tag_pipes();
+    if (std::find(tagged.begin(), tagged.end(), p) == tagged.end()) continue;
+    for (int view = 0; view < 6; ++view) {
+      SCOPED_TRACE("p = " + std::to_string(p) + ", base plane " + std::to_string(view));
+      run(tagged_spheres(view), p, kRtl);
+      if (::testing::Test::HasFailure()) return;
+    }
+  }
+}
+
+// Mixed levels: each tag-carrying unit alone at RTL among transaction-level
+// ones (their tag lanes meet the other level's), all six base planes, p = 4.
+TEST(System, TaggedSpheresMixedLevels) {
+  if (!sysc::rtl_available(4)) GTEST_SKIP() << "no RTL build for p = 4";
+  for (int view = 0; view < 6; ++view)
+    for (sysc::Unit u : {sysc::Unit::Interp, sysc::Unit::Gradient, sysc::Unit::Shade}) {
+      SCOPED_TRACE(std::string(sysc::unit_name(u)) + " at RTL, base plane " + std::to_string(view));
+      run(tagged_spheres(view), 4, only(u));
+      if (::testing::Test::HasFailure()) return;
+    }
+}
+
 
 // Subvolumes (VolumePro §4.2) at RTL: two volumes resident in voxel memory,
 // a 4-D animation of one of them by slab writes between frames (a bright
