@@ -139,6 +139,10 @@ module cube4_compose_node #(
                   base[0]};
 
   if (Latency == 0) begin : g_comb_out
+    // A node without registers keeps the clock and reset ports, so that
+    // every latency has one interface; Verilator's -Wall skips *unused*.
+    logic unused_clk_rst;
+    assign unused_clk_rst = clk_i ^ rst_ni;
     assign {red_o, green_o, blue_o, alpha_o, value_o, selected_o} = out_d;
     assign valid_o = valid_i;
   end else begin : g_out_regs
