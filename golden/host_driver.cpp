@@ -209,6 +209,32 @@ CutRegs permute_cut_plane(const Scene& s, const ViewFactorisation& f) {
   return r;
 }
 
+// Perspective (Cube-4 §3): the eye lies d voxels in front of the front
+// face, so on sample slice k (z = k / S) the rays are m_k = 1 + z / d apart,
+// and ray u, which crosses the base plane at X_u = ray_offset + u, lies at
+// e + (X_u - e) m_k (e: the eye's x). The steps are rounded once; the
+// positions then follow them exactly, ray 0's through the spacing register
+// so that the eye stays where the rays meet.
+static void program_perspective(const Scene& s, const ViewFactorisation& f, Registers& r) {
+  const Vec3 eye = f.eye_permuted();
+  const double d = -eye[2];
+  const double one = std::ldexp(1.0, s.precision.dda_frac_bits);
+  constexpr int64_t kDda = std::numeric_limits<int64_t>::max() / 4;
+  r.perspective = true;
+  r.scale_start = int64_t{1} << s.precision.dda_frac_bits;
+  r.scale_step = to_register(s, "view", 1.0 / (s.supersampling * d), one, 0, kDda, "SCALE_STEP");
+  const double step = static_cast<double>(r.scale_step) / one;
+  r.x_step = to_register(s, "view", (s.view.ray_offset[0] - eye[0]) * step, one, -kDda, kDda, "X_STEP");
+  r.y_step = to_register(s, "view", (s.view.ray_offset[1] - eye[1]) * step, one, -kDda, kDda, "Y_STEP");
+  // place_eye() keeps the last slice's spacing within the box filter's 3
+  // voxels; rounding must not take it past them.
+  const int64_t limit = 3 * r.scale_start;
+  if (r.ray_spacing(r.sample_slices() - 1) > limit)
+    throw InputError((s.file.empty() ? std::string("scene") : s.file) +
+                     ": the eye is too close: the last slice's rays would be more than 3 voxels apart "
+                     "(\"view.distance\" or \"view.eye\")");
+}
+
 HostProgram program_host(const Scene& s, const Volume& vol) {
   HostProgram h;
   h.view = factorise_view(s, vol);
@@ -227,6 +253,7 @@ HostProgram program_host(const Scene& s, const Volume& vol) {
   r.y_start = to_register(s, "view.ray_offset", s.view.ray_offset[1], one, 0, kDda, "Y_START");
   r.x_step = to_register(s, "view", f.shear_x / s.supersampling, one, -kDda, kDda, "X_STEP");
   r.y_step = to_register(s, "view", f.shear_y / s.supersampling, one, -kDda, kDda, "Y_STEP");
+  if (f.perspective) program_perspective(s, f, r);
 
   r.classification = build_classification(s, sample_step_ratio(f, s.supersampling));
   const EffectSet& e = h.effects;

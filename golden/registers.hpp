@@ -2,6 +2,7 @@
 // may use floating point) and the hardware (which never does). The golden
 // fixed-point renderer and the RTL consume exactly these.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "golden/units/composite_cut_plane.hpp"
 #include "golden/units/composite_window.hpp"
 #include "golden/units/dda.hpp"
+#include "golden/units/dda_perspective.hpp"
 #include "golden/units/shade_phong.hpp"
 #include "golden/units/shade_reflection.hpp"
 
@@ -25,8 +27,14 @@ struct Registers {
   std::array<int, 3> perm{0, 1, 2};
   std::array<bool, 3> flip{false, false, false};
   int supersampling = 1;
-  // Ray-offset DDA, dda_frac_bits of fraction, per sample slice.
+  // Ray-offset DDA, dda_frac_bits of fraction, per sample slice. In
+  // perspective: the position of ray 0 on each sample slice.
   int64_t x_start = 0, x_step = 0, y_start = 0, y_step = 0;
+  // Perspective (Cube-4 §3, golden/units/dda_perspective.hpp): the rays'
+  // spacing on sample slice k is scale_start + k * scale_step (dda_frac_bits
+  // of fraction; scale_start is one: the base plane's pixel pitch).
+  bool perspective = false;
+  int64_t scale_start = 0, scale_step = 0;
   // Tables.
   std::vector<ClassEntry> classification;  // 2^(tag_bits + voxel_bits) entries, address {tag, value}
   std::vector<uint16_t> gm_lut;            // 2^magnitude_bits entries, gmlut_bits wide
@@ -75,10 +83,34 @@ struct Registers {
   // Base plane: one pixel per ray; rays enter through the front or a side face.
   // The sample (x, y) of slice k lies on the ray of pixel
   // (x - ix_k + base_origin_x(), y - iy_k + base_origin_y()).
-  int base_origin_x() const { return margin_lo[0] + x_offset(sample_slices() - 1).integer; }
-  int base_origin_y() const { return margin_lo[1] + y_offset(sample_slices() - 1).integer; }
-  int base_width() const { return base_origin_x() + dim[0] + margin_hi[0]; }
-  int base_height() const { return base_origin_y() + dim[1] + margin_hi[1]; }
+  int base_origin_x() const {
+    return margin_lo[0] + (perspective ? -rays_entering(0).lo : x_offset(sample_slices() - 1).integer);
+  }
+  int base_origin_y() const {
+    return margin_lo[1] + (perspective ? -rays_entering(1).lo : y_offset(sample_slices() - 1).integer);
+  }
+  int base_width() const {
+    return base_origin_x() + (perspective ? static_cast<int>(rays_entering(0).hi) : dim[0]) + margin_hi[0];
+  }
+  int base_height() const {
+    return base_origin_y() + (perspective ? static_cast<int>(rays_entering(1).hi) : dim[1]) + margin_hi[1];
+  }
+
+  // Perspective: the rays' spacing and ray 0's position on sample slice k.
+  int64_t ray_spacing(int k) const { return dda_position(scale_start, scale_step, k); }
+  int64_t ray0(int axis, int k) const {
+    return axis == 0 ? dda_position(x_start, x_step, k) : dda_position(y_start, y_step, k);
+  }
+  RayRange rays_in_slice(int axis, int k) const {
+    return rays_inside(ray0(axis, k), ray_spacing(k), dim[static_cast<size_t>(axis)], p.dda_frac_bits);
+  }
+  // Every ray that samples some slice along `axis`: the union of the first
+  // and last slices' ranges (the bounds move monotonically with k).
+  RayRange rays_entering(int axis) const {
+    const RayRange a = rays_in_slice(axis, 0), b = rays_in_slice(axis, sample_slices() - 1);
+    if (b.empty()) return a;
+    return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
+  }
 };
 
 }  // namespace cube4::golden

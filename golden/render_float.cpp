@@ -166,6 +166,7 @@ class PolygonsF {
 BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f, RenderStats* stats,
                         const Progress& progress, const std::vector<Mesh>& meshes) {
   check_polygon_scene(s, meshes);
+  if (f.perspective) return render_float_perspective(vol, s, f, stats, progress);
   const int nx = f.pdim[0], ny = f.pdim[1];
   const int S = s.supersampling, K = f.pdim[2] * S;
   FloatView fv{vol, f, K, S, s.view.ray_offset[0], s.view.ray_offset[1], f.shear_x / S, f.shear_y / S};

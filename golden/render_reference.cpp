@@ -139,9 +139,8 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
   const Lighting L = lighting_of(s, f);
   const double unit = std::min({vol.spacing[0], vol.spacing[1], vol.spacing[2]});
   const double h = opt.step * unit;  // physical step
-  Vec3 d{};                          // voxel coordinates per physical unit along the ray
-  for (int i = 0; i < 3; ++i) d[i] = f.view_dir_object[i] / vol.spacing[i];
-  const Vec3 eye{-f.view_dir_object[0], -f.view_dir_object[1], -f.view_dir_object[2]};
+  Vec3 view_d{};  // voxel coordinates per physical unit along the (parallel) rays: the polygons'
+  for (int i = 0; i < 3; ++i) view_d[i] = f.view_dir_object[i] / vol.spacing[i];
   double plen = 0;
   for (int i = 0; i < 3; ++i) plen += s.cut.normal[i] * s.cut.normal[i];
   plen = std::sqrt(plen);
@@ -163,11 +162,16 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
   const std::vector<Mesh> none;
   const std::vector<Mesh>& meshes = opt.meshes ? *opt.meshes : none;
   check_polygon_scene(s, meshes);
-  const PolygonHits hits = polygon_hits(s, meshes, f, d, img.width, img.height);
+  const PolygonHits hits = polygon_hits(s, meshes, f, view_d, img.width, img.height);
   uint64_t samples = 0;
   for (int Y = 0; Y < img.height; ++Y) {
     for (int X = 0; X < img.width; ++X) {
-      const Vec3 o = f.object_of_image(X, Y);
+      // A pinhole camera in perspective: each ray its own direction, and
+      // its own eye vector for the specular term.
+      const ViewFactorisation::Ray ray = f.ray_of_image(X, Y);
+      const Vec3& o = ray.origin;
+      const Vec3& d = ray.direction;
+      const Vec3 eye{-d[0] * vol.spacing[0], -d[1] * vol.spacing[1], -d[2] * vol.spacing[2]};
       // Clip the ray to the box where samples have voxels: [0, n-1] per axis.
       double t0 = -std::numeric_limits<double>::infinity(), t1 = std::numeric_limits<double>::infinity();
       for (int i = 0; i < 3; ++i) {

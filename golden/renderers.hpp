@@ -86,6 +86,10 @@ struct FixedOptions {
 };
 
 BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);
+// Registers with `perspective` set: Cube-4's perspective (golden/perspective.hpp);
+// render_fixed() calls it for them. One thread; no empty-space skipping
+// beyond the per-sample one; polygons not yet.
+BasePlane render_perspective(const Volume& vol, const Registers& regs, const FixedOptions& options);
 BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* stats = nullptr,
                        const Progress& progress = {}, SampleProbe* probe = nullptr);
 // What `threads` = 0 means.
@@ -95,6 +99,11 @@ int default_threads();
 BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f,
                         RenderStats* stats = nullptr, const Progress& progress = {},
                         const std::vector<Mesh>& meshes = {});
+
+// render_float() for a perspective view (f.perspective): render_perspective()'s
+// algorithm in real arithmetic; render_float() calls it for such views.
+BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const ViewFactorisation& f,
+                                    RenderStats* stats = nullptr, const Progress& progress = {});
 
 struct ReferenceOptions {
   double step = 0.25;  // ray step in units of the smallest voxel spacing

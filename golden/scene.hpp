@@ -55,6 +55,16 @@ struct View {
   // base plane and the reference ray caster do.
   double zoom = 1;
   std::optional<Vec3> look_at;
+  // Cube-4's perspective projection (docs/scene.md, docs/perspective.md):
+  // the eye at `distance` (physical units) from look_at against the viewing
+  // direction, or at `eye` (voxel coordinates; then the direction is
+  // look_at - eye); `fov` the full vertical field of view in degrees. These
+  // do reach the hardware: the rays' spread per slice is a register.
+  enum class Projection { Parallel, Perspective } projection = Projection::Parallel;
+  double fov = 30;
+  std::optional<double> distance;
+  std::optional<Vec3> eye;
+  bool perspective() const { return projection == Projection::Perspective; }
 };
 
 struct ColorPoint { double x; Vec3 rgb; };     // x: normalised sample value [0,1]

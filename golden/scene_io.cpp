@@ -460,9 +460,32 @@ void read_view(const Node& n, View& v) {
   const auto offset = r.get("ray_offset");
   const auto zoom = r.get("zoom");
   const auto look_at = r.get("look_at");
+  const auto projection = r.get("projection");
+  const auto fov = r.get("fov");
+  const auto distance = r.get("distance");
+  const auto eye = r.get("eye");
   r.reject_unknown();
   if (rotate && direction) n.fail("gives both \"rotate\" and \"direction\"; give one");
-  if (up && !direction) up->fail("needs \"view.direction\" (it does not apply to \"rotate\")");
+  if (eye && (rotate || direction))
+    eye->fail(std::string("and \"view.") + (rotate ? "rotate" : "direction") +
+              "\" both set the viewing direction; give one");
+  if (eye && distance) distance->fail("and \"view.eye\" both place the eye; give one");
+  if (up && !direction && !eye) up->fail("needs \"view.direction\" or \"view.eye\" (it does not apply to \"rotate\")");
+  if (projection)
+    v.projection = projection->one_of({"parallel", "perspective"}) == "parallel" ? View::Projection::Parallel
+                                                                                 : View::Projection::Perspective;
+  for (const auto& only : {fov, distance, eye})
+    if (only && !v.perspective()) only->fail("needs \"view.projection\": \"perspective\"");
+  // Cube-4's box filter spans 1 + 2 tan(fov/2) voxels at most in the
+  // furthest slice: three at 90 degrees, the limit of its extra stages.
+  if (fov) {
+    v.fov = fov->number();
+    if (!(v.fov > 0 && v.fov < 90))
+      fov->fail("is out of range: the field of view must be above 0 and below 90 degrees (Cube-4's box filter "
+                "covers at most 1 + 2 tan(fov/2) < 3 voxels)");
+  }
+  if (distance) v.distance = distance->positive();
+  if (eye) v.eye = eye->vec3();
   if (rotate) v.rotate = rotate->vec3();
   if (direction) v.direction = direction->direction();
   if (up) v.up = up->direction();
@@ -831,9 +854,12 @@ std::string show_array(const Array& v) {
   return out + "]";
 }
 
+// The eye's direction waits for the volume (factorise_view): look_at's
+// default is the volume's centre.
 void check_view(const Scene& s) {
   if (!s.view.direction) return;
   const Vec3& d = *s.view.direction;
+  const std::string d_key = "view.direction";
   const Vec3& u = s.view.up;
   const double dd = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   const double uu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
@@ -843,7 +869,7 @@ void check_view(const Scene& s) {
   // sin(angle) below 1e-6: no usable image "up" is left after projection.
   if (!(cc > 1e-6 * dd * uu))
     fail_value(s.file, "view.up", show_array(u),
-               "is parallel to \"view.direction\" = " + show_array(d) + "; give another up");
+               "is parallel to the viewing direction (\"" + d_key + "\" gives " + show_array(d) + "); give another up");
 }
 
 void check_volume(const Scene& s) {
@@ -957,10 +983,21 @@ Scene default_scene() {
   return s;
 }
 
+// What perspective does not render yet (docs/perspective.md, "Not yet").
+void check_perspective(const Scene& s) {
+  if (!s.view.perspective()) return;
+  if (!s.polygons.empty())
+    fail_value(s.file, "polygons", "[...]", "cannot be drawn with \"view.projection\": \"perspective\" yet");
+  if (s.blocks != std::array<int, 3>{1, 1, 1})
+    fail_value(s.file, "blocks", show_array(s.blocks),
+               "cannot be rendered with \"view.projection\": \"perspective\" yet (one block only)");
+}
+
 void finish_scene(Scene& s) {
   fill_defaults(s);
   check_precision(s);
   check_view(s);
+  check_perspective(s);
   check_volume(s);
   check_cut_plane(s);
   check_tags(s);

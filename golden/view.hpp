@@ -4,6 +4,7 @@
 // Host-side floating point: the hardware sees only the registers made from it.
 #pragma once
 #include <array>
+#include <optional>
 
 #include "golden/scene.hpp"
 #include "golden/volume.hpp"
@@ -33,6 +34,13 @@ struct ViewFactorisation {
   Vec3 look_at{};                   // object voxel coordinates at the image centre (view.look_at)
   int image_width = 0, image_height = 0;
   std::array<double, 3> spacing{1, 1, 1};
+  // Perspective (view.projection): the eye, object voxel coordinates; the
+  // tangent of the angle one pixel spans at the image centre; the eye's
+  // distance from look_at (physical units).
+  bool perspective = false;
+  Vec3 eye_object{};
+  double pixel_tan = 0;
+  double eye_distance = 0;
 
   // Permuted voxel coordinates of object voxel coordinates, and back.
   Vec3 to_permuted(const Vec3& object_voxel) const;
@@ -45,11 +53,29 @@ struct ViewFactorisation {
   // the unit step along the viewing ray in object voxel coordinates.
   Vec3 object_of_image(double X, double Y) const;
   // Base plane pixel (u, v) -> final image, for a base plane whose ray u
-  // starts at permuted x = u - shift_x (likewise y).
+  // starts at permuted x = u - shift_x (likewise y). Parallel projection only.
   Affine2 base_to_image(double shift_x, double shift_y) const;
+
+  // The ray through final-image point (X, Y): its origin (the eye in
+  // perspective, the image plane point at depth 0 in parallel projection)
+  // and its direction, both in object voxel coordinates, the direction per
+  // physical unit of length.
+  struct Ray {
+    Vec3 origin, direction;
+  };
+  Ray ray_of_image(double X, double Y) const;
+  // Where the ray through (X, Y) crosses the base plane (permuted z = 0), in
+  // base-plane pixels of a base plane shifted by (shift_x, shift_y); nullopt
+  // for a perspective ray that never reaches it. Both projections.
+  std::optional<std::array<double, 2>> base_of_image(double X, double Y, double shift_x, double shift_y) const;
+  // The eye in permuted voxel coordinates (perspective).
+  Vec3 eye_permuted() const { return to_permuted(eye_object); }
 };
 
 Mat3 rotation_of(const View& v);
+// Rows: the world axes in object coordinates, for viewing direction
+// `direction` (object space, any length) and image up `up`.
+Mat3 rotation_looking(const Vec3& direction, const Vec3& up);
 ViewFactorisation factorise_view(const Scene& s, const Volume& vol);
 
 }  // namespace cube4::golden

@@ -8,7 +8,10 @@
 namespace cube4::golden {
 
 ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactorisation& f) {
-  const Affine2 to_base = f.base_to_image(shift_x, shift_y).inverse();
+  // Parallel projection: an affine map, inverted once. Perspective: a
+  // projective one, the ray through each image pixel met with the base
+  // plane (Lacroute's perspective warp; rays that never reach it see nothing).
+  const Affine2 to_base = f.perspective ? Affine2{} : f.base_to_image(shift_x, shift_y).inverse();
   ImageF out;
   out.width = f.image_width;
   out.height = f.image_height;
@@ -19,7 +22,14 @@ ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactor
   };
   for (int Y = 0; Y < out.height; ++Y)
     for (int X = 0; X < out.width; ++X) {
-      const auto uv = to_base.apply(X, Y);
+      std::array<double, 2> uv{};
+      if (f.perspective) {
+        const auto hit = f.base_of_image(X, Y, shift_x, shift_y);
+        if (!hit) continue;
+        uv = *hit;
+      } else {
+        uv = to_base.apply(X, Y);
+      }
       const double fu = std::floor(uv[0]), fv = std::floor(uv[1]);
       const int u = static_cast<int>(fu), v = static_cast<int>(fv);
       if (u < -1 || v < -1 || u >= base.width || v >= base.height) continue;

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -50,8 +51,19 @@ nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& 
   if (s.view.direction) {
     j["direction"] = *s.view.direction;
     j["up"] = s.view.up;
+  } else if (s.view.eye) {
+    j["up"] = s.view.up;
   } else {
     j["rotate_deg"] = s.view.rotate;
+  }
+  j["projection"] = f.perspective ? "perspective" : "parallel";
+  if (f.perspective) {
+    j["fov_deg"] = s.view.fov;
+    j["eye"] = f.eye_object;
+    j["eye_distance"] = f.eye_distance;
+    // The rays' spacing on the last sample slice: the box filter's width there.
+    j["last_slice_ray_spacing"] =
+        std::ldexp(static_cast<double>(h.regs.ray_spacing(h.regs.sample_slices() - 1)), -h.regs.p.dda_frac_bits);
   }
   return j;
 }
@@ -64,6 +76,8 @@ nlohmann::json describe_registers(const golden::Registers& r) {
       {"supersampling", r.supersampling},
       {"dda", {{"frac_bits", r.p.dda_frac_bits}, {"x_start", r.x_start}, {"x_step", r.x_step},
                {"y_start", r.y_start}, {"y_step", r.y_step}}},
+      {"perspective", r.perspective ? nlohmann::json{{"scale_start", r.scale_start}, {"scale_step", r.scale_step}}
+                                    : nlohmann::json(false)},
       {"classification_entries", r.classification.size()},
       {"gm_lut_entries", r.gm_lut.size()},
       {"diffuse_map_entries", r.diffuse_map.size()},

@@ -40,4 +40,25 @@ constexpr Gradient gradient_12n(uint32_t left, uint32_t right, uint32_t up, uint
           gradient_component((static_cast<int64_t>(ahead) - behind) * supersampling, p)};
 }
 
+// Perspective: the rays beside a sample are `spacing` voxels away, not one,
+// so the x and y differences are scaled by the slice's reciprocal
+// lateral_reciprocal(spacing) before the same rounding and saturation (the
+// z difference is the parallel one: ahead and behind are realigned straight
+// in z). The reciprocal has lateral_recip_bits of fraction: V + 2 keeps the
+// scaled difference within half an LSB of exact.
+constexpr int lateral_recip_bits(const Precision& p) { return p.voxel_bits + 2; }
+constexpr int64_t lateral_reciprocal(int64_t spacing, int frac_bits, int recip_bits) {
+  return static_cast<int64_t>(((static_cast<__int128>(1) << (recip_bits + frac_bits)) + spacing / 2) / spacing);
+}
+constexpr int64_t scale_lateral(int64_t full_difference, int64_t reciprocal, int recip_bits) {
+  return round_shift(full_difference * reciprocal, recip_bits);
+}
+constexpr Gradient gradient_perspective(uint32_t left, uint32_t right, uint32_t up, uint32_t down, uint32_t behind,
+                                        uint32_t ahead, int supersampling, int64_t reciprocal, const Precision& p) {
+  const int q = lateral_recip_bits(p);
+  return {gradient_component(scale_lateral(static_cast<int64_t>(right) - left, reciprocal, q), p),
+          gradient_component(scale_lateral(static_cast<int64_t>(down) - up, reciprocal, q), p),
+          gradient_component((static_cast<int64_t>(ahead) - behind) * supersampling, p)};
+}
+
 }  // namespace cube4::golden

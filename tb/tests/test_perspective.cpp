@@ -1,0 +1,277 @@
+// Cube-4's perspective projection in the golden model: the weight
+// generator's ray DDA and realignment, the box-filter stages, the gradient's
+// lateral scale, the camera's checks, and the renderers against each other.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "golden/errors.hpp"
+#include "golden/perspective.hpp"
+#include "golden/units/gradient.hpp"
+#include "tb/tests/test_support.hpp"
+
+using namespace cube4;
+using golden::BoxAxis;
+
+namespace {
+
+constexpr int F = 20;
+
+std::string sphere(const std::string& view, const std::string& extra = "", const std::string& size = "[24,24,24]") {
+  return R"({"volume": {"synthetic": "sphere", "size": )" + size + R"(}, "view": )" + view + extra + "}";
+}
+
+int64_t alpha_sum(const golden::BasePlane& bp) {
+  int64_t s = 0;
+  for (size_t i = 3; i < bp.rgba.size(); i += 4) s += bp.rgba[i];
+  return s;
+}
+
+// The message of the InputError `f` throws ("" if none).
+template <class Fn>
+std::string error_of(Fn&& f) {
+  try {
+    f();
+  } catch (const golden::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(PerspectiveUnits, ABoxOneVoxelWideIsLinearInterpolation) {
+  std::mt19937_64 rng(1);
+  for (int i = 0; i < 100000; ++i) {
+    const int64_t pos = static_cast<int64_t>(rng() % (int64_t{200} << F)) - (int64_t{50} << F);
+    const BoxAxis b = golden::box_axis(pos, int64_t{1} << F, F, 8);
+    const uint32_t f = static_cast<uint32_t>((pos >> (F - 8)) & 255);
+    ASSERT_EQ(b.first, pos >> F) << pos;
+    ASSERT_EQ(b.overlap[0], 256 - f) << pos;
+    ASSERT_EQ(b.overlap[1], f) << pos;
+    ASSERT_EQ(b.overlap[2] + b.overlap[3], 0u) << pos;
+  }
+}
+
+TEST(PerspectiveUnits, OverlapsCoverTheBoxExactlyForExtentsUpToThree) {
+  std::mt19937_64 rng(2);
+  for (int w : {2, 8, 14}) {
+    for (int i = 0; i < 100000; ++i) {
+      // Extents 1, 2 and 3 exactly, and anything between.
+      const int64_t spacing = i % 4 < 3 ? (int64_t{1 + i % 4 % 3} << F)
+                                        : (int64_t{1} << F) + static_cast<int64_t>(rng() % (int64_t{2} << F) + 1);
+      const int64_t pos = static_cast<int64_t>(rng() % (int64_t{300} << F)) - (int64_t{100} << F);
+      const BoxAxis b = golden::box_axis(pos, spacing, F, w);
+      uint64_t sum = 0;
+      for (uint32_t o : b.overlap) sum += o;
+      ASSERT_EQ(sum, static_cast<uint64_t>(golden::box_extent(spacing, F, w))) << "w " << w << " pos " << pos;
+      // The box is centred on the sample: it starts within m/2 + 1/2 before it.
+      const double centre = std::ldexp(static_cast<double>(pos), -F);
+      ASSERT_LE(b.first, std::floor(centre + 0.5)) << pos;
+      ASSERT_GE(b.first, std::floor(centre + 0.5 - std::ldexp(static_cast<double>(spacing), -F) / 2) - 1) << pos;
+    }
+  }
+}
+
+TEST(PerspectiveUnits, TheBoxFilterKeepsAConstantFieldExactly) {
+  std::mt19937_64 rng(3);
+  for (int vb : {8, 12, 16})
+    for (int wb : {2, 8, 14}) {
+      golden::Precision p;
+      p.voxel_bits = vb;
+      p.weight_bits = wb;
+      const int q = golden::box_recip_bits(p);
+      for (int i = 0; i < 30000; ++i) {
+        const int64_t spacing = (int64_t{1} << F) + static_cast<int64_t>(rng() % ((int64_t{2} << F) + 1));
+        const int64_t px = static_cast<int64_t>(rng() % (int64_t{64} << F)), py = static_cast<int64_t>(rng() % (int64_t{64} << F));
+        const uint32_t value = i == 0 ? static_cast<uint32_t>(golden::max_unsigned(vb))
+                                      : static_cast<uint32_t>(rng() % (golden::max_unsigned(vb) + 1));
+        std::array<std::array<uint32_t, 4>, 4> v{};
+        for (auto& row : v) row.fill(value);
+        const uint64_t recip = golden::box_reciprocal(golden::box_extent(spacing, F, wb), q);
+        ASSERT_EQ(golden::box_filter(v, golden::box_axis(px, spacing, F, wb), golden::box_axis(py, spacing, F, wb),
+                                     recip, q),
+                  value)
+            << "voxel_bits " << vb << " weight_bits " << wb << " spacing " << spacing;
+      }
+    }
+}
+
+TEST(PerspectiveUnits, TheBoxFilterIsWithinThreeQuartersOfAnLsbOfTheExactMean) {
+  // docs/perspective.md: the reciprocal's error is below a quarter of an LSB,
+  // the final rounding adds half.
+  std::mt19937_64 rng(4);
+  golden::Precision p;
+  const int q = golden::box_recip_bits(p);
+  for (int i = 0; i < 1000000; ++i) {
+    const int64_t spacing = (int64_t{1} << F) + static_cast<int64_t>(rng() % ((int64_t{2} << F) + 1));
+    const BoxAxis bx = golden::box_axis(static_cast<int64_t>(rng() % (int64_t{64} << F)), spacing, F, p.weight_bits);
+    const BoxAxis by = golden::box_axis(static_cast<int64_t>(rng() % (int64_t{64} << F)), spacing, F, p.weight_bits);
+    std::array<std::array<uint32_t, 4>, 4> v{};
+    double exact = 0;
+    for (size_t j = 0; j < 4; ++j)
+      for (size_t k = 0; k < 4; ++k) {
+        v[j][k] = static_cast<uint32_t>(rng() % 4096);
+        exact += static_cast<double>(bx.overlap[k]) * by.overlap[j] * v[j][k];
+      }
+    const double e = static_cast<double>(golden::box_extent(spacing, F, p.weight_bits));
+    exact /= e * e;
+    const uint32_t got = golden::box_filter(v, bx, by, golden::box_reciprocal(golden::box_extent(spacing, F, p.weight_bits), q), q);
+    ASSERT_LT(std::fabs(got - exact), 0.75) << i;
+  }
+}
+
+TEST(PerspectiveUnits, RaysInsideAreThoseWhosePositionIsInTheVolume) {
+  std::mt19937_64 rng(5);
+  for (int i = 0; i < 2000; ++i) {
+    const int64_t spacing = (int64_t{1} << F) + static_cast<int64_t>(rng() % ((int64_t{2} << F) + 1));
+    const int64_t ray0 = static_cast<int64_t>(rng() % (int64_t{400} << F)) - (int64_t{200} << F);
+    const int n = 1 + static_cast<int>(rng() % 100);
+    const golden::RayRange r = golden::rays_inside(ray0, spacing, n, F);
+    for (int64_t u = -300; u < 300; ++u) {
+      const int64_t x = golden::ray_position(ray0, spacing, u);
+      ASSERT_EQ(x >= 0 && x < (int64_t{n} << F), u >= r.lo && u < r.hi) << "ray " << u;
+    }
+  }
+}
+
+TEST(PerspectiveUnits, RealignedPointsLieStraightBehindTheSample) {
+  std::mt19937_64 rng(6);
+  for (int i = 0; i < 100000; ++i) {
+    const int64_t m_here = (int64_t{1} << F) + static_cast<int64_t>(rng() % ((int64_t{2} << F) + 1));
+    const int64_t m_there = m_here - static_cast<int64_t>(rng() % 5000);
+    const int64_t c_here = static_cast<int64_t>(rng() % (int64_t{40} << F)) - (int64_t{20} << F);
+    const int64_t c_there = c_here + static_cast<int64_t>(rng() % (int64_t{2} << F)) - (int64_t{1} << F);
+    const golden::RealignDda d = golden::realign_dda(c_here, m_here, c_there, m_there, F);
+    const int64_t u = static_cast<int64_t>(rng() % 600) - 300;
+    const int64_t pos = d.start + u * d.step;  // ray index of the other slice, F fraction bits
+    const long double there = static_cast<long double>(c_there) + static_cast<long double>(pos) * m_there / (1 << F);
+    const long double here = static_cast<long double>(golden::ray_position(c_here, m_here, u));
+    // Two floors, the start's and the step's (times |u|), each under one LSB of a ray index.
+    ASSERT_LE(std::fabs(static_cast<double>(there - here)), static_cast<double>((std::llabs(u) + 1) * m_there) / (1 << F))
+        << i;
+  }
+}
+
+TEST(PerspectiveUnits, TheLateralScaleOfUnitSpacingLeavesTheParallelGradient) {
+  std::mt19937_64 rng(7);
+  golden::Precision p;
+  const int64_t unit = golden::lateral_reciprocal(int64_t{1} << F, F, golden::lateral_recip_bits(p));
+  for (int i = 0; i < 100000; ++i) {
+    uint32_t s[6];
+    for (uint32_t& x : s) x = static_cast<uint32_t>(rng() % 4096);
+    ASSERT_EQ(golden::gradient_perspective(s[0], s[1], s[2], s[3], s[4], s[5], 2, unit, p),
+              golden::gradient_12n(s[0], s[1], s[2], s[3], s[4], s[5], 2, p));
+  }
+}
+
+TEST(PerspectiveCamera, BadCamerasNameTheKeyAndValue) {
+  const std::string persp = R"({"rotate": [10, 20, 0], "projection": "perspective")";
+  auto message = [](const std::string& json) { return error_of([&] { test::setup(json); }); };
+  EXPECT_NE(message(sphere(persp + R"(, "fov": 90})")).find("\"view.fov\" = 90"), std::string::npos);
+  EXPECT_NE(message(sphere(persp + R"(, "fov": 0})")).find("\"view.fov\" = 0"), std::string::npos);
+  EXPECT_NE(message(sphere(R"({"fov": 30})")).find("needs \"view.projection\": \"perspective\""), std::string::npos);
+  EXPECT_NE(message(sphere(persp + R"(, "distance": 5})")).find("\"view.distance\" = 5 puts the eye inside the volume"),
+            std::string::npos);
+  const std::string close = message(sphere(persp + R"(, "distance": 20})"));
+  EXPECT_NE(close.find("\"view.distance\" = 20 puts the eye"), std::string::npos) << close;
+  EXPECT_NE(close.find("at most 3"), std::string::npos) << close;
+  EXPECT_NE(message(sphere(R"({"projection": "perspective", "eye": [11.5, 11.5, -40], "rotate": [0,0,0]})")).find("\"view.eye\""),
+            std::string::npos);
+  EXPECT_NE(message(sphere(R"({"projection": "perspective", "eye": [11.5, 11.5, -40], "distance": 50})")).find("both place the eye"),
+            std::string::npos);
+  EXPECT_NE(message(sphere(R"({"projection": "perspective", "eye": [11.5, 11.5, 11.5]})")).find("is the point looked at"),
+            std::string::npos);
+  EXPECT_NE(message(sphere(R"({"projection": "perspective", "eye": [11.5, 40, 11.5]})")).find("parallel"), std::string::npos);
+  EXPECT_NE(message(sphere(R"({"projection": "perspective", "eye": [11.5, 11.5, 2]})")).find("\"view.eye\" = [11.5,11.5,2]"),
+            std::string::npos);
+  EXPECT_EQ(message(sphere(persp + R"(, "distance": 60})")), "");
+}
+
+TEST(PerspectiveCamera, TheFirstSliceHasOneRayPerPixelAndTheRaysSpreadBehindIt) {
+  const auto s = test::setup(sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "distance": 40})"));
+  const golden::Registers& r = s.host.regs;
+  ASSERT_TRUE(r.perspective);
+  EXPECT_EQ(r.ray_spacing(0), int64_t{1} << r.p.dda_frac_bits);
+  EXPECT_GT(r.ray_spacing(r.sample_slices() - 1), r.ray_spacing(0));
+  EXPECT_LE(r.ray_spacing(r.sample_slices() - 1), 3 * r.ray_spacing(0));
+  // The base plane holds every ray that meets the volume, and no more.
+  const golden::RayRange a = r.rays_in_slice(0, 0), b = r.rays_in_slice(0, r.sample_slices() - 1);
+  EXPECT_EQ(r.base_width(), std::max(a.hi, b.hi) - std::min(a.lo, b.lo));
+}
+
+TEST(PerspectiveRender, SixAxisViewsOfASymmetricSphereGiveIdenticalBasePlanes) {
+  auto view = [](const std::string& eye) {
+    return sphere(R"({"projection": "perspective", "fov": 40, "eye": )" + eye + R"(, "up": [1, 1, 1]})",
+                  R"(, "shading": false)");
+  };
+  const auto first = test::setup(view("[11.5, 11.5, -30]"));
+  const golden::BasePlane ref = golden::render_fixed(first.volume, first.host.regs);
+  EXPECT_GT(alpha_sum(ref), 0);
+  for (const char* eye : {"[11.5, 11.5, 53]", "[-30, 11.5, 11.5]", "[53, 11.5, 11.5]", "[11.5, -30, 11.5]",
+                          "[11.5, 53, 11.5]"}) {
+    const auto s = test::setup(view(eye));
+    const golden::BasePlane bp = golden::render_fixed(s.volume, s.host.regs);
+    ASSERT_EQ(bp.width, ref.width) << eye;
+    ASSERT_EQ(bp.height, ref.height) << eye;
+    EXPECT_EQ(bp.rgba, ref.rgba) << eye;
+  }
+}
+
+TEST(PerspectiveRender, FixedFloatAndReferenceDrawThingsInTheSamePlace) {
+  // An off-centre sphere in a wide view: a ray grid misplaced by one
+  // base-plane pixel, or the warp by one image pixel, moves the centroid by
+  // more than half a pixel.
+  const auto s = test::setup(R"({"volume": {"synthetic": "sphere", "size": [64, 48, 80], "radius": 10,
+      "center": [12, 36, 60]}, "view": {"rotate": [30, -40, 10], "projection": "perspective", "fov": 60},
+      "output": {"width": 256, "height": 200}})");
+  auto centroid = [](const golden::ImageF& img) {
+    double sx = 0, sy = 0, sa = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const double a = img.pixel(x, y)[3];
+        sx += a * x;
+        sy += a * y;
+        sa += a;
+      }
+    return std::array<double, 3>{sx / sa, sy / sa, sa};
+  };
+  const auto fixed = centroid(test::final_fixed(s)), flt = centroid(test::final_float(s)),
+             ref = centroid(test::final_reference(s));
+  EXPECT_GT(ref[2], 100);
+  for (const auto& c : {fixed, flt}) {
+    EXPECT_NEAR(c[0], ref[0], 0.5);
+    EXPECT_NEAR(c[1], ref[1], 0.5);
+  }
+}
+
+TEST(PerspectiveRender, FixedMatchesFloatAsInParallelProjection) {
+  // The parallel projection's bound for the same comparison (test_renderers).
+  for (const char* fov : {"20", "45", "70"}) {
+    const auto s = test::setup(sphere(std::string(R"({"rotate": [20, 30, 0], "projection": "perspective", "fov": )") + fov + "}",
+                                      R"(, "output": {"width": 128, "height": 128})", "[40,40,40]"));
+    const auto e = test::compare(test::final_fixed(s), test::final_float(s));
+    EXPECT_GT(e.psnr, 35.0) << "fov " << fov;
+  }
+}
+
+TEST(PerspectiveRender, EverySampleIsCountedOnce) {
+  const auto s = test::setup(sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "distance": 40})",
+                                    R"(, "supersampling": 2)"));
+  golden::RenderStats stats;
+  golden::FixedOptions opt;
+  opt.stats = &stats;
+  golden::render_fixed(s.volume, s.host.regs, opt);
+  const golden::Registers& r = s.host.regs;
+  uint64_t expected = 0;
+  for (int k = 0; k < r.sample_slices(); ++k) {
+    const golden::RayRange x = r.rays_in_slice(0, k), y = r.rays_in_slice(1, k);
+    expected += static_cast<uint64_t>(std::max<int64_t>(0, x.hi - x.lo) * std::max<int64_t>(0, y.hi - y.lo));
+  }
+  EXPECT_EQ(stats.samples, expected);
+  EXPECT_EQ(stats.slices, 48);
+  // At most one sample per voxel column and slice: rays are at least a voxel apart.
+  EXPECT_LE(stats.samples, uint64_t{24} * 24 * 48);
+}
