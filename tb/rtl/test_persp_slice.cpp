@@ -18,6 +18,7 @@
 #include "golden/perspective.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "tb/rtl/persp_registers.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -116,26 +117,6 @@ class Bench {
   uint64_t cycle_ = 0;
 };
 
-// Frame registers as the host makes them: spacing from 1 at the first
-// slice to at most 3 at the last, rays meeting at an eye anywhere in x, y.
-g::Registers random_registers(rtl::Random& rng) {
-  g::Registers r;
-  r.perspective = true;
-  const int64_t one = int64_t{1} << kFracBits;
-  r.dim = {static_cast<int>(rng.range(1, 1023)), static_cast<int>(rng.range(1, 1023)),
-           static_cast<int>(rng.range(1, 300))};
-  r.supersampling = static_cast<int>(rng.range(1, 4));
-  const int K = r.sample_slices();
-  r.scale_start = one;
-  r.scale_step = rng.range(0, K > 1 ? 2 * one / (K - 1) : 2 * one);
-  const int64_t ex = rng.range(-2000, 3000), ey = rng.range(-2000, 3000);
-  r.x_start = rng.range(0, one - 1);
-  r.y_start = rng.range(0, one - 1);
-  r.x_step = (r.x_start - ex * one) / one * r.scale_step / 1 + rng.range(-1000, 1000);
-  r.y_step = (r.y_start - ey * one) / one * r.scale_step + rng.range(-1000, 1000);
-  return r;
-}
-
 TEST(RtlPerspSlice, FracBitsIsGoldens) { EXPECT_EQ(g::Precision{}.dda_frac_bits, kFracBits); }
 
 TEST(RtlPerspSlice, RandomRegistersAndSlicesMatchGolden) {
@@ -145,7 +126,7 @@ TEST(RtlPerspSlice, RandomRegistersAndSlicesMatchGolden) {
   const long n = rtl::vector_count(20000);
   rtl::Timer t("cube4_persp_slice: " + std::to_string(n) + " random slices");
   for (long i = 0; i < n && c.ok(); ++i) {
-    const g::Registers r = random_registers(rng);
+    const g::Registers r = cube4::rtl::random_perspective_registers(rng, kFracBits);
     const int K = r.sample_slices();
     // The first and the last slice (no neighbour behind, none ahead) often.
     const int k = i % 4 == 0 ? 0 : i % 4 == 1 ? K - 1 : static_cast<int>(rng.range(0, K - 1));
