@@ -28,7 +28,7 @@ OPS = [
     (r"!(?=[a-z(])", ""), (r"~(?=[a-z(])", ""),
 ]
 SKIP = re.compile(r"^\s*(//|input|output|parameter|localparam|logic|module|function|endfunction|typedef|`)")
-RTL_TESTS = ["test_rtl_addr", "test_rtl_interp", "test_rtl_gradient", "test_rtl_shade", "test_rtl_composite",
+RTL_TESTS = ["test_rtl_addr", "test_rtl_interp", "test_rtl_interp_box", "test_rtl_gradient", "test_rtl_shade", "test_rtl_composite",
              "test_rtl_compose"]
 
 
