@@ -2,9 +2,9 @@
 
 namespace cube4::sysc {
 
-TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels)
-    : plan_(plan), pixels_(pixels), slice_(static_cast<size_t>(plan.nx) * plan.ny) {
-  compositor_.emplace(plan.r, pixels.plane());
+TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels, const golden::PolygonFrame* polygons)
+    : plan_(plan), pixels_(pixels), polygons_(polygons), slice_(static_cast<size_t>(plan.nx) * plan.ny) {
+  compositor_.emplace(plan.r, pixels.plane(), polygons_);
 }
 
 void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
@@ -30,7 +30,7 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   if (in.slice + 1 == static_cast<uint32_t>(plan_.K)) {
     compositor_->finish();
     out.frame_done = true;
-    compositor_.emplace(plan_.r, pixels_.plane());
+    compositor_.emplace(plan_.r, pixels_.plane(), polygons_);
   }
 }
 
