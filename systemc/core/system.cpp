@@ -265,8 +265,8 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     forced.gradient = true;
     rs = &forced;
   }
-  check_system_limits(*rs, cfg);
   if (polygons) check_polygon_levels(cfg);
+  check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
   res.levels = cfg.levels;

@@ -25,7 +25,7 @@ class TlmComposite final : public CompositeIf {
   const FramePlan& plan_;
   PixelMemory& pixels_;
   const golden::PolygonFrame* polygons_;
-  std::optional<golden::SliceCompositor> compositor_;  // a new one per frame
+  std::optional<golden::SliceCompositor> compositor_;  // a new one per frame, from its first slice
   std::vector<golden::ShadedSample> slice_;
 };
 
