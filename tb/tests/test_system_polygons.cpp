@@ -188,13 +188,19 @@ TEST(SystemPolygons, RtlUnitsRefusePolygons) {
   }
 }
 
-// Through the host interface: registers and volume over the bus, the
-// polygon frame handed to the machine; the base plane read back over the
-// bus equals golden's with the polygons.
+// Through the host interface: registers (the margins too) and volume over
+// the bus, the polygon frame handed to the machine; the base plane read
+// back over the bus equals golden's with the polygons.
 TEST(SystemPolygons, ThroughTheHostInterfaceTlm) {
   if (!sysc::host_interface_available(4))
     GTEST_SKIP() << "this process cannot build the host interface for p = 4 any more (ctest runs each test alone)";
-  const Hybrid h = scene_file("brain_probe_translucent.json");
+  // The small scene's plate beside the volume: the base plane has margins,
+  // which MARGIN_U and MARGIN_V carry.
+  const std::string d = kDirections[2];
+  const Hybrid h = hybrid(setup(small_scene(d, up_for(d), kMeshes)));
+  ASSERT_GT(h.s.host.regs.margin_lo[0] + h.s.host.regs.margin_lo[1] + h.s.host.regs.margin_hi[0] +
+                h.s.host.regs.margin_hi[1],
+            0);
   const sysc::SystemResult res =
       sysc::render_through_host(h.s.host.regs, h.s.volume, tlm_config(4, false), {}, nullptr, h.polygons());
   expect_same_plane(golden_plane(h, h.polygons()), res.plane);
@@ -202,4 +208,10 @@ TEST(SystemPolygons, ThroughTheHostInterfaceTlm) {
   // keeps no frame's polygons.
   const sysc::SystemResult plain = sysc::render_through_host(h.s.host.regs, h.s.volume, tlm_config(4, false), {});
   expect_same_plane(golden_plane(h, nullptr), plain.plane);
+  // And brain_probe_translucent, the scene of scenes/.
+  const Hybrid probe = scene_file("brain_probe_translucent.json");
+  expect_same_plane(golden_plane(probe, probe.polygons()),
+                    sysc::render_through_host(probe.s.host.regs, probe.s.volume, tlm_config(4, false), {}, nullptr,
+                                              probe.polygons())
+                        .plane);
 }
