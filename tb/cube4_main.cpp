@@ -395,11 +395,17 @@ int run_render(const RenderArgs& args) {
   const std::string trace_temp = a.trace.empty() ? "" : outputs.add_trace(a.trace, kTraceUnits);
   if (!a.scene.empty()) outputs.check_not_output(a.scene, "the scene");
   Loaded l = load(a.scene, true);
-  if (system && !l.meshes.empty())
-    throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) + ": \"polygons\" (" +
-                     std::to_string(l.meshes.size()) + (l.meshes.size() == 1 ? " mesh" : " meshes") +
-                     ") render with --model fixed, float or reference so far; the system model (--model " + a.model +
-                     ") does not draw polygons yet");
+  if (system && !l.meshes.empty()) {
+    sysc::SystemConfig levels;
+    levels.levels = parse_levels(a.model);
+    try {
+      sysc::check_polygon_levels(levels);
+    } catch (const std::invalid_argument& e) {
+      throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) + ": \"polygons\" (" +
+                       std::to_string(l.meshes.size()) + (l.meshes.size() == 1 ? " mesh" : " meshes") + "), --model " +
+                       a.model + ": " + e.what() + "; or render with --model fixed, float or reference");
+    }
+  }
   if (l.scene.volume.kind == "den" || l.scene.volume.kind == "raw" || l.scene.volume.kind == "nifti")
     outputs.check_not_output(l.volume.source, "the volume");
   const int golden_threads = a.threads > 0 ? a.threads : golden::default_threads();
@@ -488,7 +494,7 @@ int run_render(const RenderArgs& args) {
   // warps them: an image as the hardware plus companion card would deliver it.
   std::vector<double> frame_seconds;
   std::optional<golden::BlockRanges> ranges;
-  std::optional<golden::PolygonFrame::Counts> polygon_counts;  // the fixed model's first frame's
+  std::optional<golden::PolygonFrame::Counts> polygon_counts;  // the fixed and system models' first frame's
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
@@ -531,9 +537,16 @@ int run_render(const RenderArgs& args) {
         keep_plane(bp, i);
         continue;
       }
+      // The polygons are host work of every frame, like its registers.
+      std::optional<golden::PolygonFrame> polygons;
+      if (!l.meshes.empty() && (system || a.model == "fixed")) {
+        polygons = golden::rasterise_polygons(sub_scenes[i], l.meshes, host);
+        if (i == 0) polygon_counts = polygons->counts;
+      }
+      const golden::PolygonFrame* frame_polygons = polygons ? &*polygons : nullptr;
       if (system) {
         try {
-          sys = sysc::render_through_host(host.regs, l.volume, cfg, cb, &bus_seconds);
+          sys = sysc::render_through_host(host.regs, l.volume, cfg, cb, &bus_seconds, frame_polygons);
         } catch (const std::invalid_argument& e) {
           throw InputError(e.what());
         } catch (const sysc::HostError& e) {  // registers the built hardware cannot take
@@ -546,6 +559,7 @@ int run_render(const RenderArgs& args) {
         if (last && cfg.check && check_failure.empty()) {
           golden::FixedOptions opt;
           opt.threads = a.threads;
+          opt.polygons = frame_polygons;
           const std::string diff = first_pixel_difference(golden::render_fixed(l.volume, host.regs, opt), bp);
           if (!diff.empty() || sys->mismatch) {
             check_failure = sub_frame_name(i) + (diff.empty() ? "base plane equal, but " : diff + "; ");
@@ -562,13 +576,7 @@ int run_render(const RenderArgs& args) {
         // Built once: the volume is the same for every repetition and frame.
         if (!ranges) ranges = golden::block_ranges(l.volume);
         opt.ranges = &*ranges;
-        // The polygons are host work of every frame, like its registers.
-        std::optional<golden::PolygonFrame> polygons;
-        if (!l.meshes.empty()) {
-          polygons = golden::rasterise_polygons(sub_scenes[i], l.meshes, host);
-          opt.polygons = &*polygons;
-          if (i == 0) polygon_counts = polygons->counts;
-        }
+        opt.polygons = frame_polygons;
         const golden::BasePlane bp = golden::render_fixed(l.volume, host.regs, opt);
         samples += frame_stats.samples;
         frames.push_back(golden::warp(bp.to_float(), bp.shift_x, bp.shift_y, host.view));

@@ -35,7 +35,7 @@ uint16_t Machine::read_voxel(int k, int x, int y, int z) const {
 void Machine::start_frame(const golden::Registers& regs, int k) {
   error_ = nullptr;
   try {
-    last_ = run_frame(regs, volumes_[static_cast<size_t>(k)], cfg_, progress_);
+    last_ = run_frame(regs, volumes_[static_cast<size_t>(k)], cfg_, progress_, polygons_);
   } catch (...) {
     // The host interface reports a refused frame as a status code; the
     // reason is kept for the program that drives the host.
@@ -119,12 +119,19 @@ HostSession host_session(const SystemConfig& cfg, const golden::Precision& p, in
 }
 
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
-                                 const golden::Progress& progress, double* bus_seconds) {
+                                 const golden::Progress& progress, double* bus_seconds,
+                                 const golden::PolygonFrame* polygons) {
   Hosted& h = hosted(cfg, r.p, std::max({vol.dim[0], vol.dim[1], vol.dim[2]}));
   h.machine->set_progress(progress);
   TlmTarget& target = h.host->target();
   sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
   program_over_tlm(target, r, vol, delay);
+  // The polygons are this frame's only, whatever START does.
+  struct ThisFrame {
+    Machine& m;
+    ~ThisFrame() { m.set_polygons(nullptr); }
+  } this_frame{*h.machine};
+  h.machine->set_polygons(polygons);
   try {
     start_frame_over_tlm(target, delay);
   } catch (const HostError&) {

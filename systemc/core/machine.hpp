@@ -26,6 +26,11 @@ class Machine final : public HostBackend {
 
   void set_config(const SystemConfig& cfg) { cfg_ = cfg; }
   void set_progress(golden::Progress p) { progress_ = std::move(p); }
+  // The polygon images of the frames START runs (Cube-5), or none: a frame
+  // input handed to the machine directly, beside the host interface (which
+  // has no windows for them yet; docs/registers.md). The frame must outlive
+  // the frames that use it.
+  void set_polygons(const golden::PolygonFrame* polygons) { polygons_ = polygons; }
   const std::optional<SystemResult>& last() const { return last_; }
   // Why the last START failed (null if it did not).
   std::exception_ptr error() const { return error_; }
@@ -49,6 +54,7 @@ class Machine final : public HostBackend {
   int tag_bits_;
   std::array<golden::Volume, regmap::kSubvolumes> volumes_;
   golden::Progress progress_;
+  const golden::PolygonFrame* polygons_ = nullptr;
   std::optional<SystemResult> last_;
   uint64_t frames_ = 0;
   std::exception_ptr error_;
@@ -57,11 +63,14 @@ class Machine final : public HostBackend {
 // A frame as a host runs it: program the registers, tables and volume
 // through the host interface (TLM-2.0 transactions), start it, read the
 // base plane back. The result's plane is what the host read. `bus_time`
-// returns the annotated host-bus time of the whole exchange. The host
+// returns the annotated host-bus time of the whole exchange. `polygons`:
+// the frame's polygon images, handed to the machine directly
+// (Machine::set_polygons(); not over the bus, so not in its time). The host
 // interface and machine are built once per process (SystemC elaborates
 // once), for the first call's p and precision.
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
-                                 const golden::Progress& progress, double* bus_seconds = nullptr);
+                                 const golden::Progress& progress, double* bus_seconds = nullptr,
+                                 const golden::PolygonFrame* polygons = nullptr);
 // The process's host interface and machine, as render_through_host()
 // builds them (for cfg.p, precision p, volumes up to max_dim per axis), for
 // a host program of its own: several subvolumes, slab updates between

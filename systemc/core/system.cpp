@@ -245,8 +245,15 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   }
 }
 
+void check_polygon_levels(const SystemConfig& cfg) {
+  if (!cfg.all_tlm())
+    throw std::invalid_argument(
+        "polygons: the system model draws a scene's polygons with every unit at transaction level only "
+        "(--model tlm); the RTL compositing unit is not wired to the polygon images yet (--model rtl, mixed:...)");
+}
+
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
-                       const golden::Progress& progress) {
+                       const golden::Progress& progress, const golden::PolygonFrame* polygons) {
   const auto t0 = std::chrono::steady_clock::now();
   // A scene without gradients does not run the gradient unit (and its
   // frame has no zero pass), unless asked to simulate it anyway (to measure
@@ -258,6 +265,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     forced.gradient = true;
     rs = &forced;
   }
+  if (polygons) check_polygon_levels(cfg);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
@@ -300,7 +308,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   if (cfg.check) checker = std::make_unique<StreamChecker>(plan, vol);
 
   if (cfg.all_tlm() && !cfg.cycle_level) {
-    res.plane = run_tlm_frame(plan, vol, progress, cfg.accumulators);
+    res.plane = run_tlm_frame(plan, vol, progress, cfg.accumulators, polygons);
     res.frame_cycles = cc.latency;
     for (int pass = 0; pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
@@ -332,7 +340,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     }
     u.shade = rtl[2] ? make_rtl_shade(plan, *rtl_ctx, cfg.trace, cfg.simulate_unneeded) : std::make_unique<TlmShade>(plan);
     u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded)
-                         : std::make_unique<TlmComposite>(plan, pixels);
+                         : std::make_unique<TlmComposite>(plan, pixels, polygons);
     u.checker = checker.get();
     u.progress = progress;
     u.total_beats = cc.stream;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "golden/polygon_frame.hpp"
 #include "golden/registers.hpp"
 #include "golden/renderers.hpp"
 #include "golden/volume.hpp"
@@ -80,8 +81,19 @@ struct SystemResult {
   std::optional<Mismatch> mismatch;      // --check: the first unit output that differs
 };
 
+// `polygons`: the frame's polygon images (Cube-5; golden/polygon_frame.hpp,
+// made by golden::rasterise_polygons() for these registers), a frame input
+// like the volume, which the compositing unit composites with the samples.
+// Only the transaction-level compositing unit draws them so far
+// (check_polygon_levels()).
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
-                       const golden::Progress& progress = {});
+                       const golden::Progress& progress = {}, const golden::PolygonFrame* polygons = nullptr);
+
+// Whether `cfg` can draw a frame's polygons: every unit at transaction level
+// (loosely timed or clocked). The RTL compositing ring takes polygon streams
+// in its unit tests (systemc/rtl/polygon_streams.hpp) but is not wired to
+// them in the system yet. Throws std::invalid_argument saying so.
+void check_polygon_levels(const SystemConfig& cfg);
 
 // Whether the built system can run `cfg` on registers `r`, from the
 // registers alone (so before any voxel is loaded; run_frame() checks the

@@ -253,8 +253,10 @@ HostInterface::Outcome HostInterface::start_frame() {
     if (r.dim[i] != vol[r.perm[i]]) return fail(ErrorCode::ViewMismatch);
   // The pixel memory holds BASE_MAX x BASE_MAX pixels.
   const int f = r.p.dda_frac_bits;
-  const __int128 w = r.dim[0] + last_offset(r.x_start, r.x_step, r.sample_slices(), f);
-  const __int128 h = r.dim[1] + last_offset(r.y_start, r.y_step, r.sample_slices(), f);
+  const __int128 w =
+      r.dim[0] + last_offset(r.x_start, r.x_step, r.sample_slices(), f) + r.margin_lo[0] + r.margin_hi[0];
+  const __int128 h =
+      r.dim[1] + last_offset(r.y_start, r.y_step, r.sample_slices(), f) + r.margin_lo[1] + r.margin_hi[1];
   const int base_max = 2 * config_.hw.max_dim;
   if (w < 1 || w > base_max || h < 1 || h > base_max) return fail(ErrorCode::BasePlaneTooLarge);
   if (r.cut_enabled && r.cut.falloff < 0) return fail(ErrorCode::CutFalloffNegative);

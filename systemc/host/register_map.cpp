@@ -164,6 +164,7 @@ std::string describe_address(uint64_t a) {
       break;
     }
     case Region::Volume: name = indexed("VOLUME", (a - kVolumeBase) / 2, " (voxel index)"); break;
+    case Region::Slab: name = indexed("SLAB", (a - kSlabBase) / 2, " (voxel index in the slab)"); break;
     case Region::None: name = "unmapped"; break;
   }
   return name + " (" + hex(a) + ")";

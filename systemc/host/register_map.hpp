@@ -250,6 +250,22 @@ inline constexpr Register kListed[] = {
      "— (FramePlan slice control)", ""},
     {"Y_STEP", 0x130, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(y_step),
      "— (FramePlan slice control)", ""},
+#define CUBE4_MARGIN(reg, addr, axis, meaning)                                                                     \
+    {reg, addr, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Width,                                 \
+     "margin_lo[" #axis "], margin_hi[" #axis "]",                                                                 \
+     [](const RegisterValues& v, const HardwareParams&) {                                                          \
+       return static_cast<uint64_t>(v.regs.margin_lo[axis]) | static_cast<uint64_t>(v.regs.margin_hi[axis]) << 16; \
+     },                                                                                                            \
+     [](RegisterValues& v, uint64_t w) {                                                                           \
+       v.regs.margin_lo[axis] = static_cast<int>(w & 0xFFFF);                                                      \
+       v.regs.margin_hi[axis] = static_cast<int>(w >> 16 & 0xFFFF);                                                \
+     },                                                                                                            \
+     "— (pixel memory: the base plane's size and origin)", meaning}
+    CUBE4_MARGIN("MARGIN_U", 0x138, 0,
+                 "polygon margins (Cube-5): base-plane pixels before (bits 15:0) and after (31:16) the volume's rays "
+                 "in u; 0 without polygons"),
+    CUBE4_MARGIN("MARGIN_V", 0x13C, 1, "the same in v"),
+#undef CUBE4_MARGIN
 
     // ---- Mode.
     {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(15), Sign::Unsigned, Rule::Mode,

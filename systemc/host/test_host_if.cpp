@@ -788,8 +788,8 @@ std::vector<ErrorCase> error_cases() {
   const uint64_t class_end = rm::kClassBase + 8 * 4096;
   return {
       {"hole in register space", none, TLM_READ_COMMAND, 0x00C, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, 0x00C},
-      {"write to a hole", none, TLM_WRITE_COMMAND, 0x138, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, 0x138},
-      {"burst into a hole", none, TLM_WRITE_COMMAND, rm::kMode - 4, {0, 0}, 0, false, 0, addr_err, ErrorCode::Unmapped, rm::kMode - 4},
+      {"write to a hole", none, TLM_WRITE_COMMAND, 0x148, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, 0x148},
+      {"burst into a hole", none, TLM_WRITE_COMMAND, rm::kCropSlab - 4, {0, 0}, 0, false, 0, addr_err, ErrorCode::Unmapped, rm::kCropSlab - 4},
       {"between windows", none, TLM_READ_COMMAND, 0x5000, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, 0x5000},
       {"class entry past 2^voxel_bits", none, TLM_WRITE_COMMAND, class_end, {0}, 0, false, 0, addr_err, ErrorCode::Unmapped, class_end},
       {"burst past the class table", none, TLM_WRITE_COMMAND, class_end - 8, {0, 0, 0, 0}, 0, false, 0, addr_err, ErrorCode::Unmapped, class_end},

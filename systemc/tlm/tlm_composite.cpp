@@ -2,10 +2,8 @@
 
 namespace cube4::sysc {
 
-TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels)
-    : plan_(plan), pixels_(pixels), slice_(static_cast<size_t>(plan.nx) * plan.ny) {
-  compositor_.emplace(plan.r, pixels.plane());
-}
+TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels, const golden::PolygonFrame* polygons)
+    : plan_(plan), pixels_(pixels), polygons_(polygons), slice_(static_cast<size_t>(plan.nx) * plan.ny) {}
 
 void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   out = CompositeOut{};
@@ -21,6 +19,10 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
     s.visible = true;
   }
   if (!(in.f.slice_end && in.f.beam_end)) return;
+  // A frame's compositor starts with its first slice: with polygons it
+  // writes every pixel's front-over-back value then, which must not
+  // overwrite the previous frame's plane before that frame is done.
+  if (!compositor_) compositor_.emplace(plan_.r, pixels_.plane(), polygons_);
   const golden::SliceControl& c = plan_.slices[in.slice];
   auto shade = [&](int x, int y, const golden::RayAcc&, golden::ShadedSample& s) {
     s = golden::crop_and_cut(plan_.r, c, x, y, slice_[static_cast<size_t>(y) * plan_.nx + x]);
@@ -30,7 +32,7 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   if (in.slice + 1 == static_cast<uint32_t>(plan_.K)) {
     compositor_->finish();
     out.frame_done = true;
-    compositor_.emplace(plan_.r, pixels_.plane());
+    compositor_.reset();
   }
 }
 

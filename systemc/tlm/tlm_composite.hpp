@@ -1,7 +1,8 @@
 // Compositing unit at transaction level: collects a slice of shaded samples,
 // then crops, cuts, aligns and blends it with the golden SliceCompositor
 // (the renderer's own), which writes the leaving rays into pixel memory.
-// Latency: a slice.
+// With a polygon frame the compositor draws the polygons too (the front
+// image, the Z test, each slice's slab, the back image). Latency: a slice.
 #pragma once
 #include <memory>
 #include <optional>
@@ -16,14 +17,15 @@ namespace cube4::sysc {
 
 class TlmComposite final : public CompositeIf {
  public:
-  TlmComposite(const FramePlan& plan, PixelMemory& pixels);
+  TlmComposite(const FramePlan& plan, PixelMemory& pixels, const golden::PolygonFrame* polygons = nullptr);
   void clock(const ShadedBeat& in, CompositeOut& out) override;
   Level level() const override { return Level::Tlm; }
 
  private:
   const FramePlan& plan_;
   PixelMemory& pixels_;
-  std::optional<golden::SliceCompositor> compositor_;  // a new one per frame
+  const golden::PolygonFrame* polygons_;
+  std::optional<golden::SliceCompositor> compositor_;  // a new one per frame, from its first slice
   std::vector<golden::ShadedSample> slice_;
 };
 

@@ -133,9 +133,9 @@ TEST_F(Cli, BadInputExitsTwoNamingTheCulprit) {
 }
 
 // The scene's meshes are loaded and checked by every command, drawn by the
-// golden models, and refused by name by the system model, which does not
-// draw them yet; an empty list is no list.
-TEST_F(Cli, MeshesAreCheckedDrawnAndRefusedByTheSystemModel) {
+// golden models and the system model at transaction level, and refused by
+// name by the system model with a unit at RTL; an empty list is no list.
+TEST_F(Cli, MeshesAreCheckedDrawnAndRefusedByTheSystemModelsRtl) {
   const std::string plain(kSphere);
   const std::string with_mesh =
       plain.substr(0, plain.rfind('}')) +
@@ -155,10 +155,17 @@ TEST_F(Cli, MeshesAreCheckedDrawnAndRefusedByTheSystemModel) {
     const float* centre = &ib.rgba[(static_cast<size_t>(24) * 64 + 32) * 4];
     EXPECT_GT(centre[0], centre[1] + 0.05f) << model;
   }
-  for (const std::string model : {"tlm", "mixed:composite"}) {
+  // At TLM the system model draws them, bit-exact with fixed (--check).
+  const CliResult tlm = run("render " + scene + " --model tlm --check -q -o " + path("tlm.exr"));
+  EXPECT_EQ(tlm.code, 0) << tlm.err;
+  EXPECT_TRUE(cube4::tb::read_image(path("tlm.exr")).rgba == cube4::tb::read_image(path("fixed.exr")).rgba)
+      << "the tlm image differs from the fixed one";
+  for (const std::string model : {"rtl", "mixed:composite", "mixed:interp"}) {
     const CliResult r = run("render " + scene + " --model " + model + " -q -o " + path("sys.png"));
     EXPECT_EQ(r.code, 2) << model << ": " << r.err;
-    EXPECT_NE(r.err.find("\"polygons\" (1 mesh) render with --model fixed, float or reference so far"),
+    EXPECT_NE(r.err.find("\"polygons\" (1 mesh), --model " + model +
+                         ": polygons: the system model draws a scene's polygons with every unit at transaction "
+                         "level only (--model tlm)"),
               std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(path("sys.png")));
@@ -172,6 +179,26 @@ TEST_F(Cli, MeshesAreCheckedDrawnAndRefusedByTheSystemModel) {
     EXPECT_NE(r.err.find(path("nowhere.obj")), std::string::npos) << r.err;
   }
   EXPECT_FALSE(fs::exists(path("c.png")));
+}
+
+// Cube-5's scene through the system model at transaction level: the base
+// plane checked against golden fixed with its polygons (exit 0, and the
+// same image as fixed); at RTL refused (exit 2) by name.
+TEST_F(Cli, BrainProbeRendersThroughTheSystemModelAtTlm) {
+  const std::string scene = std::string(CUBE4_SOURCE_DIR) + "/scenes/brain_probe.json";
+  const CliResult tlm = run("render " + scene + " --model tlm --check -q -o " + path("tlm.exr") + " --report " +
+                            path("tlm.json"));
+  ASSERT_EQ(tlm.code, 0) << tlm.err;
+  ASSERT_EQ(run("render " + scene + " --model fixed -q -o " + path("fixed.exr")).code, 0);
+  EXPECT_TRUE(cube4::tb::read_image(path("tlm.exr")).rgba == cube4::tb::read_image(path("fixed.exr")).rgba);
+  std::ifstream report(path("tlm.json"));
+  const nlohmann::json j = nlohmann::json::parse(report);
+  EXPECT_GT(j["polygon_fragments"]["opaque"].get<uint64_t>(), 0u);
+  const CliResult rtl = run("render " + scene + " --model rtl -q -o " + path("rtl.png"));
+  EXPECT_EQ(rtl.code, 2) << rtl.err;
+  EXPECT_NE(rtl.err.find("the RTL compositing unit is not wired to the polygon images yet"), std::string::npos)
+      << rtl.err;
+  EXPECT_FALSE(fs::exists(path("rtl.png")));
 }
 
 TEST_F(Cli, TruncatedVolumeFileIsReportedWithItsName) {
