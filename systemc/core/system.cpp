@@ -252,6 +252,17 @@ void check_polygon_levels(const SystemConfig& cfg) {
         "(--model tlm); the RTL compositing unit is not wired to the polygon images yet (--model rtl, mixed:...)");
 }
 
+// Perspective registers drive only the loosely timed transaction (the
+// golden perspective renderer); the per-unit models and the RTL rings
+// stream parallel projection's samples.
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
+  if (r.perspective && (!cfg.all_tlm() || cfg.cycle_level))
+    throw std::invalid_argument(
+        "perspective: the system model renders perspective frames loosely timed with every unit at transaction "
+        "level only (--model tlm); the units' clocked models and RTL are not built for it yet "
+        "(docs/perspective.md)");
+}
+
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress, const golden::PolygonFrame* polygons) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -266,6 +277,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     rs = &forced;
   }
   if (polygons) check_polygon_levels(cfg);
+  check_perspective_levels(r, cfg);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
