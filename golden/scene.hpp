@@ -55,6 +55,10 @@ struct View {
   // base plane and the reference ray caster do.
   double zoom = 1;
   std::optional<Vec3> look_at;
+  // The part of the (zoomed) view the image shows: [x0, y0, x1, y1] in
+  // [-1, 1], x right, y up (glOrtho's and glFrustum's window); the default
+  // is all of it. Both projections; the hardware never sees it.
+  std::array<double, 4> window{-1, -1, 1, 1};
   // Cube-4's perspective projection (docs/scene.md, docs/perspective.md):
   // the eye at `distance` (physical units) from look_at against the viewing
   // direction, or at `eye` (voxel coordinates; then the direction is

@@ -460,6 +460,7 @@ void read_view(const Node& n, View& v) {
   const auto offset = r.get("ray_offset");
   const auto zoom = r.get("zoom");
   const auto look_at = r.get("look_at");
+  const auto window = r.get("window");
   const auto projection = r.get("projection");
   const auto fov = r.get("fov");
   const auto distance = r.get("distance");
@@ -500,6 +501,12 @@ void read_view(const Node& n, View& v) {
   // fraction of a voxel: either way the image says nothing the range does not.
   if (zoom) v.zoom = zoom->number_in(1.0 / 64, 1024);
   if (look_at) v.look_at = look_at->vec3();
+  if (window) {
+    const auto e = window->elements(4, 4);
+    for (size_t i = 0; i < 4; ++i) v.window[i] = e[i].number_in(-1, 1);
+    if (!(v.window[2] > v.window[0])) e[2].fail("is not right of x0 = " + fmt(v.window[0]) + " (window [x0, y0, x1, y1])");
+    if (!(v.window[3] > v.window[1])) e[3].fail("is not above y0 = " + fmt(v.window[1]) + " (window [x0, y0, x1, y1])");
+  }
 }
 
 void read_output(const Node& n, Scene& s) {

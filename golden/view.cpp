@@ -149,6 +149,7 @@ ViewFactorisation factorise_view(const Scene& s, const Volume& vol) {
   f.spacing = vol.spacing;
   f.image_width = s.width;
   f.image_height = s.height;
+  f.window = s.view.window;
   for (int i = 0; i < 3; ++i) f.view_dir_object[i] = -f.object_to_world[2][i];
   for (int i = 0; i < 3; ++i) f.view_dir_voxel[i] = f.view_dir_object[i] / vol.spacing[i];
 
@@ -205,19 +206,16 @@ std::array<double, 2> ViewFactorisation::image_of(const Vec3& ov) const {
     Vec3 phys{};
     for (int i = 0; i < 3; ++i) phys[i] = (ov[i] - eye_object[i]) * spacing[i];
     const double depth = dot(view_dir_object, phys);
-    const double wx = dot(object_to_world[0], phys) / depth, wy = dot(object_to_world[1], phys) / depth;
-    return {image_width / 2.0 - 0.5 + wx / pixel_tan, image_height / 2.0 - 0.5 - wy / pixel_tan};
+    return image_point(dot(object_to_world[0], phys) / depth, dot(object_to_world[1], phys) / depth);
   }
   const Vec3& c = look_at;
   Vec3 phys{};
   for (int i = 0; i < 3; ++i) phys[i] = (ov[i] - c[i]) * spacing[i];
-  const double wx = dot(object_to_world[0], phys), wy = dot(object_to_world[1], phys);
-  return {image_width / 2.0 - 0.5 + wx / pixel_size, image_height / 2.0 - 0.5 - wy / pixel_size};
+  return image_point(dot(object_to_world[0], phys), dot(object_to_world[1], phys));
 }
 
 Vec3 ViewFactorisation::object_of_image(double X, double Y) const {
-  const double wx = (X - image_width / 2.0 + 0.5) * pixel_size;
-  const double wy = -(Y - image_height / 2.0 + 0.5) * pixel_size;
+  const auto [wx, wy] = view_plane(X, Y);
   const Vec3& c = look_at;
   Vec3 o{};
   for (int i = 0; i < 3; ++i)
@@ -244,7 +242,7 @@ ViewFactorisation::Ray ViewFactorisation::ray_of_image(double X, double Y) const
     for (int i = 0; i < 3; ++i) r.direction[i] = view_dir_object[i] / spacing[i];
     return r;
   }
-  const double tx = (X - image_width / 2.0 + 0.5) * pixel_tan, ty = -(Y - image_height / 2.0 + 0.5) * pixel_tan;
+  const auto [tx, ty] = view_plane(X, Y);
   Vec3 d{};
   for (int i = 0; i < 3; ++i) d[i] = view_dir_object[i] + tx * object_to_world[0][i] + ty * object_to_world[1][i];
   d = normalised(d);
@@ -266,6 +264,34 @@ std::optional<std::array<double, 2>> ViewFactorisation::base_of_image(double X, 
   if (!(d[2] > 0)) return std::nullopt;
   const double t = -o[2] / d[2];
   return std::array<double, 2>{o[0] + t * d[0] + shift_x, o[1] + t * d[1] + shift_y};
+}
+
+}  // namespace cube4::golden
+
+namespace cube4::golden {
+
+// The whole view spans [-1, 1] in both axes at one view-plane unit per
+// pixel (pixel_size or pixel_tan); the window picks the part the image shows.
+namespace {
+constexpr std::array<double, 4> kWholeView{-1, -1, 1, 1};
+}  // namespace
+
+// Without a window the arithmetic is the one images were always made with,
+// so that no default image moves by a rounding.
+std::array<double, 2> ViewFactorisation::view_plane(double X, double Y) const {
+  const double unit = perspective ? pixel_tan : pixel_size;
+  if (window == kWholeView) return {(X - image_width / 2.0 + 0.5) * unit, -(Y - image_height / 2.0 + 0.5) * unit};
+  const double hx = image_width / 2.0 * unit, hy = image_height / 2.0 * unit;
+  const double fx = (X + 0.5) / image_width, fy = (Y + 0.5) / image_height;
+  return {(window[0] + fx * (window[2] - window[0])) * hx, (window[3] - fy * (window[3] - window[1])) * hy};
+}
+
+std::array<double, 2> ViewFactorisation::image_point(double wx, double wy) const {
+  const double unit = perspective ? pixel_tan : pixel_size;
+  if (window == kWholeView) return {image_width / 2.0 - 0.5 + wx / unit, image_height / 2.0 - 0.5 - wy / unit};
+  const double hx = image_width / 2.0 * unit, hy = image_height / 2.0 * unit;
+  return {(wx / hx - window[0]) / (window[2] - window[0]) * image_width - 0.5,
+          (window[3] - wy / hy) / (window[3] - window[1]) * image_height - 0.5};
 }
 
 }  // namespace cube4::golden

@@ -37,6 +37,7 @@ struct ViewFactorisation {
   // Perspective (view.projection): the eye, object voxel coordinates; the
   // tangent of the angle one pixel spans at the image centre; the eye's
   // distance from look_at (physical units).
+  std::array<double, 4> window{-1, -1, 1, 1};  // view.window
   bool perspective = false;
   Vec3 eye_object{};
   double pixel_tan = 0;
@@ -70,6 +71,11 @@ struct ViewFactorisation {
   std::optional<std::array<double, 2>> base_of_image(double X, double Y, double shift_x, double shift_y) const;
   // The eye in permuted voxel coordinates (perspective).
   Vec3 eye_permuted() const { return to_permuted(eye_object); }
+  // Image point (X, Y) (pixel centres at integers) -> view-plane coordinates
+  // (physical units in parallel projection, tangents in perspective), x
+  // right, y up, through view.window; and back.
+  std::array<double, 2> view_plane(double X, double Y) const;
+  std::array<double, 2> image_point(double wx, double wy) const;
 };
 
 Mat3 rotation_of(const View& v);

@@ -297,3 +297,29 @@ TEST_F(PerspectiveCli, RendersAtTheGoldenLevelsAndRefusesTheOthersSayingWhy) {
     EXPECT_FALSE(test::fs::exists(path("no.png")));
   }
 }
+
+TEST(PerspectiveCamera, AWindowShowsThatPartOfTheViewInBothProjections) {
+  // The upper right quadrant as a 32 x 24 image is the upper right quarter
+  // of the whole view at 64 x 48: the same base plane sampled at the same
+  // points (up to the rounding of two formulas).
+  for (const std::string projection : {R"("parallel")", R"("perspective", "fov": 40)"}) {
+    const std::string view = R"({"rotate": [10, 20, 0], "projection": )" + projection;
+    const auto whole = test::setup(sphere(view + "}", R"(, "output": {"width": 64, "height": 48})"));
+    const auto part = test::setup(sphere(view + R"(, "window": [0, 0, 1, 1]})", R"(, "output": {"width": 32, "height": 24})"));
+    const golden::ImageF a = test::final_fixed(whole), b = test::final_fixed(part);
+    double worst = 0, sum = 0;
+    for (int y = 0; y < 24; ++y)
+      for (int x = 0; x < 32; ++x)
+        for (int c = 0; c < 4; ++c) {
+          worst = std::max(worst, static_cast<double>(std::fabs(a.pixel(32 + x, y)[c] - b.pixel(x, y)[c])));
+          sum += b.pixel(x, y)[c];
+        }
+    EXPECT_GT(sum, 1.0) << projection << ": the quadrant shows something";
+    EXPECT_LT(worst, 1e-4) << projection;
+  }
+  auto message = [](const std::string& json) { return error_of([&] { test::setup(json); }); };
+  EXPECT_NE(message(sphere(R"({"window": [0.5, 0, 0.5, 1]})")).find("\"view.window[2]\" = 0.5 is not right of x0"),
+            std::string::npos);
+  EXPECT_NE(message(sphere(R"({"window": [0, 0, 1, 2]})")).find("\"view.window[3]\" = 2 is out of range"),
+            std::string::npos);
+}
