@@ -20,12 +20,15 @@
 //   FracBits   - DDA fraction bits (golden Precision::dda_frac_bits, 20)
 //   WeightBits - weights' fraction (cube4_pkg::WeightBits)
 //   PosBits    - positions and DDA values, signed (48)
+//   RayBits    - ray indices u, v, signed (16: base planes up to 32767 rays
+//                a side); the beam start's multiplies are RayBits x PosBits
 `include "cube4_pkg.sv"
 
 module cube4_persp_ray #(
   parameter int unsigned FracBits   = 20,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits,
-  parameter int unsigned PosBits    = 48
+  parameter int unsigned PosBits    = 48,
+  parameter int unsigned RayBits    = 16
 ) (
   input  logic                       clk_i,
   input  logic                       rst_ni,
@@ -41,8 +44,8 @@ module cube4_persp_ray #(
   input  logic signed [PosBits-1:0]  ahead_step_i,
   // The beam.
   input  logic                       start_i,
-  input  logic signed [PosBits-1:0]  u0_i,
-  input  logic signed [PosBits-1:0]  v_i,
+  input  logic signed [RayBits-1:0]  u0_i,
+  input  logic signed [RayBits-1:0]  v_i,
   input  logic                       advance_i,
   // The current ray.
   output logic signed [PosBits-1:0]  pos_x_o,

@@ -99,8 +99,8 @@ TEST(RtlPerspRay, EveryRayOfRandomBeamsMatchesGolden) {
       const int64_t v = rng.range(s.rays_y.lo, s.rays_y.hi - 1);
       const int64_t u0 = rng.chance(0.8) ? s.rays_x.lo : rng.range(s.rays_x.lo, s.rays_x.hi - 1);
       const int64_t u1 = std::min(s.rays_x.hi, u0 + 3000);
-      m.u0_i = word(u0);
-      m.v_i = word(v);
+      m.u0_i = static_cast<uint16_t>(u0);  // RayBits = 16, two's complement
+      m.v_i = static_cast<uint16_t>(v);
       m.start_i = 1;
       m.advance_i = 0;
       int64_t u = u0;
