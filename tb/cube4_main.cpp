@@ -398,6 +398,7 @@ int run_render(const RenderArgs& args) {
   if (system && !l.meshes.empty()) {
     sysc::SystemConfig levels;
     levels.levels = parse_levels(a.model);
+    levels.p = a.pipes > 0 ? a.pipes : l.scene.pipelines;
     try {
       sysc::check_polygon_levels(levels);
     } catch (const std::invalid_argument& e) {
@@ -540,7 +541,10 @@ int run_render(const RenderArgs& args) {
       // The polygons are host work of every frame, like its registers.
       std::optional<golden::PolygonFrame> polygons;
       if (!l.meshes.empty() && (system || a.model == "fixed")) {
-        polygons = golden::rasterise_polygons(sub_scenes[i], l.meshes, host);
+        // Slab images are laid out for the pipelines that decode them.
+        golden::Scene lanes = sub_scenes[i];
+        if (system) lanes.pipelines = cfg.p;
+        polygons = golden::rasterise_polygons(lanes, l.meshes, host);
         if (i == 0) polygon_counts = polygons->counts;
       }
       const golden::PolygonFrame* frame_polygons = polygons ? &*polygons : nullptr;

@@ -245,11 +245,10 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   }
 }
 
+// Only the compositing unit sees the polygons; at RTL it needs the ring
+// verilated with polygon hardware for the frame's p.
 void check_polygon_levels(const SystemConfig& cfg) {
-  if (!cfg.all_tlm())
-    throw std::invalid_argument(
-        "polygons: the system model draws a scene's polygons with every unit at transaction level only "
-        "(--model tlm); the RTL compositing unit is not wired to the polygon images yet (--model rtl, mixed:...)");
+  if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl) require_rtl_polygons(cfg.p);
 }
 
 // Perspective registers drive only the loosely timed transaction (the
@@ -351,7 +350,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       u.gradient = rtl[1] ? make_rtl_gradient(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmGradient>(plan);
     }
     u.shade = rtl[2] ? make_rtl_shade(plan, *rtl_ctx, cfg.trace, cfg.simulate_unneeded) : std::make_unique<TlmShade>(plan);
-    u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded)
+    u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
                          : std::make_unique<TlmComposite>(plan, pixels, polygons);
     u.checker = checker.get();
     u.progress = progress;

@@ -83,16 +83,16 @@ struct SystemResult {
 
 // `polygons`: the frame's polygon images (Cube-5; golden/polygon_frame.hpp,
 // made by golden::rasterise_polygons() for these registers), a frame input
-// like the volume, which the compositing unit composites with the samples.
-// Only the transaction-level compositing unit draws them so far
-// (check_polygon_levels()).
+// like the volume, which the compositing unit composites with the samples
+// (at TLM through the golden slice compositor, at RTL through the ring
+// verilated with polygon hardware: check_polygon_levels()).
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress = {}, const golden::PolygonFrame* polygons = nullptr);
 
-// Whether `cfg` can draw a frame's polygons: every unit at transaction level
-// (loosely timed or clocked). The RTL compositing ring takes polygon streams
-// in its unit tests (systemc/rtl/polygon_streams.hpp) but is not wired to
-// them in the system yet. Throws std::invalid_argument saying so.
+// Whether `cfg` can draw a frame's polygons: the compositing unit at
+// transaction level, or at RTL for a p whose ring is verilated with polygon
+// hardware (CMake CUBE4_SYSTEM_POLYGON_PIPES). Throws std::invalid_argument
+// naming the p values that have it.
 void check_polygon_levels(const SystemConfig& cfg);
 
 // Whether the built system can run `cfg` on registers `r`, from the

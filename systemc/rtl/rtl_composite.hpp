@@ -5,10 +5,12 @@
 // with the samples.
 #pragma once
 #include <stdexcept>
+#include <vector>
 
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/pixel_memory.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/polygon_streams.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/unit_registers.hpp"
 #include "systemc/rtl/unit_streams.hpp"
@@ -20,9 +22,13 @@ class RtlComposite final : public CompositeIf {
  public:
   static constexpr int kPosBits = golden::kPositionBits, kLatency = 7;
 
-  RtlComposite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx, const TraceWindow& trace)
-      : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite") {
-    rtl::drive_composite_registers(*m_, plan.r);
+  // polygons: the frame's polygon images (Cube-5), for a ring verilated
+  // with HasPolygons; null for a frame without polygons.
+  RtlComposite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx, const TraceWindow& trace,
+               const golden::PolygonFrame* polygons = nullptr)
+      : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite"), poly_(polygons) {
+    rtl::drive_composite_registers(*m_, plan.r, poly_ != nullptr);
+    if (poly_) start_polygons();
   }
 
   void clock(const ShadedBeat& in, CompositeOut& out) override {
@@ -39,7 +45,13 @@ class RtlComposite final : public CompositeIf {
       control_.valid = false;  // the rest is held: the ring ignores it
     }
     rtl::drive_composite_stream(m, control_, in, p, plan_.r.p);
+    if (poly_) drive_polygons(in);
     m_.settle();
+    if (poly_)
+      for (size_t q = 0; q < slabs_.size(); ++q) {
+        consumed_[q] = static_cast<int>(get_bits(m.slab_consume_o, static_cast<int>(q) * 3, 3));
+        next_line_[q] = get_bits(m.slab_line_o, static_cast<int>(q), 1) != 0;
+      }
     out.pixels.valid = static_cast<uint32_t>(get_bits(m.pixel_valid_o, 0, p));
     for (int k = 0; out.pixels.valid >> k; ++k) {
       if (!(out.pixels.valid >> k & 1)) continue;
@@ -52,16 +64,54 @@ class RtlComposite final : public CompositeIf {
       if (pixels_.keeps_accumulators()) pixels_.write_acc(u, w, rtl::composite_pixel_acc(m, k, plan_.r.p));
     }
     m_.rise();
+    for (size_t q = 0; q < slabs_.size(); ++q) slabs_[q].clocked(consumed_[q], next_line_[q]);
     out.frame_done = drain_ > 0 && --drain_ == 0;
   }
   Level level() const override { return Level::Rtl; }
 
  private:
+  // The host's start of a polygon frame (golden start_polygons()): every
+  // pixel front over back, which the rays that meet samples overwrite.
+  void start_polygons() {
+    golden::BasePlane& bp = pixels_.plane();
+    for (size_t i = 0; i < poly_->front.size(); ++i) {
+      const golden::Pixel px =
+          golden::leave_with_polygons(golden::pixel_to_acc(poly_->front[i], plan_.r.p), poly_->back[i], plan_.r.p);
+      bp.rgba[i * 4] = px.r;
+      bp.rgba[i * 4 + 1] = px.g;
+      bp.rgba[i * 4 + 2] = px.b;
+      bp.rgba[i * 4 + 3] = px.a;
+    }
+    for (int q = 0; q < plan_.p; ++q) slabs_.emplace_back(*poly_, q, plan_.p);
+    consumed_.assign(slabs_.size(), 0);
+    next_line_.assign(slabs_.size(), false);
+  }
+  // Each sample's ray data (Z, front and back pixels, by the ray's
+  // base-plane pixel) and each pipeline's slab-line window.
+  void drive_polygons(const ShadedBeat& in) {
+    rtl::PolygonBeat b;
+    if (in.valid) {
+      const golden::SliceControl& c = plan_.slices[in.slice];
+      b.slice = in.slice;
+      for (int q = 0; q < plan_.p; ++q) {
+        const int x = in.x + q;
+        if (x < plan_.nx)
+          rtl::put_ray(b, q, *poly_, x - c.ix + plan_.r.base_origin_x(), in.y - c.iy + plan_.r.base_origin_y());
+      }
+    }
+    rtl::drive_composite_polygons(*m_, b, plan_.p, plan_.r.p.alpha_bits);
+    for (const rtl::SlabLineSource& src : slabs_) src.present(*m_);
+  }
+
   const FramePlan& plan_;
   PixelMemory& pixels_;
   RtlModel<M> m_;
   rtl::CompositeControl control_;
   int drain_ = 0;
+  const golden::PolygonFrame* poly_;
+  std::vector<rtl::SlabLineSource> slabs_;
+  std::vector<int> consumed_;
+  std::vector<bool> next_line_;
 };
 
 }  // namespace cube4::sysc

@@ -94,6 +94,26 @@ void require_rtl_tags(int p, int tag_bits) {
                               "; add it to CMake's CUBE4_SYSTEM_TAG_PIPES, or run --model tlm)");
 }
 
+std::vector<int> rtl_polygon_pipes() {
+  return {
+#define CUBE4_RTL_POLY_P(p) p,
+#include "rtl_poly_variant_list.inc"
+#undef CUBE4_RTL_POLY_P
+  };
+}
+
+void require_rtl_polygons(int p) {
+  std::string list;
+  for (int q : rtl_polygon_pipes()) {
+    if (q == p) return;
+    list += (list.empty() ? "" : ", ") + std::to_string(q);
+  }
+  throw std::invalid_argument("pipelines: " + std::to_string(p) +
+                              " has no RTL compositing unit with polygon hardware (built for p = " +
+                              (list.empty() ? std::string("none") : list) +
+                              "; add it to CMake's CUBE4_SYSTEM_POLYGON_PIPES, or run the compositing unit at TLM)");
+}
+
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
                                       const TraceWindow& trace) {
   switch (plan.p) {
@@ -154,7 +174,17 @@ std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext&
 }
 
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
-                                                const TraceWindow& trace, bool full) {
+                                                const TraceWindow& trace, bool full,
+                                                const golden::PolygonFrame* polygons) {
+  if (polygons) {
+    require_rtl_polygons(plan.p);
+    switch (plan.p) {
+#define CUBE4_RTL_POLY_P(p) \
+  case p: return std::make_unique<RtlComposite<Vsys_composite_poly_p##p>>(plan, pixels, ctx, trace, polygons);
+#include "rtl_poly_variant_list.inc"
+#undef CUBE4_RTL_POLY_P
+    }
+  }
   switch (plan.p) {
 #define CUBE4_RTL_P(p)                                                                              \
   case p:                                                                                           \

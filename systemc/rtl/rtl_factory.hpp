@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "golden/polygon_frame.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/pixel_memory.hpp"
 #include "systemc/core/unit_if.hpp"
@@ -33,6 +34,10 @@ void require_rtl(int p);
 // with tags (tag_bits > 0) has no such RTL at p.
 std::vector<int> rtl_tag_pipes();
 void require_rtl_tags(int p, int tag_bits);
+// The p values whose compositing ring is verilated with polygon hardware
+// (Cube-5; CMake CUBE4_SYSTEM_POLYGON_PIPES); throws, naming them, if p has none.
+std::vector<int> rtl_polygon_pipes();
+void require_rtl_polygons(int p);
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
                                       const TraceWindow& trace);
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);
@@ -43,9 +48,12 @@ std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedCo
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace,
                                         bool full = false);
 // Scenes without a cut plane get the ring without cut-plane hardware
-// (HasCutPlane = 0): that logic is not simulated.
+// (HasCutPlane = 0): that logic is not simulated. A frame with polygons
+// gets the ring with polygon hardware (and cut plane), fed the frame's
+// polygon images.
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
-                                                const TraceWindow& trace, bool full = false);
+                                                const TraceWindow& trace, bool full = false,
+                                                const golden::PolygonFrame* polygons = nullptr);
 
 // The composition network's units (systemc/core/compose_network.hpp),
 // verilated once at the default widths; `index` names the node.

@@ -18,6 +18,8 @@ namespace {
 void require_rtl(int) { unavailable(); }
 std::vector<int> rtl_tag_pipes() { return {}; }
 void require_rtl_tags(int, int) { unavailable(); }
+std::vector<int> rtl_polygon_pipes() { return {}; }
+void require_rtl_polygons(int) { unavailable(); }
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan&, const golden::SkewLayout&, VerilatedContext&, const TraceWindow&) {
   unavailable();
 }
@@ -25,7 +27,7 @@ std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan&, VerilatedContext&, c
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&, bool) { unavailable(); }
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, VerilatedContext&, const TraceWindow&,
-                                                bool) {
+                                                bool, const golden::PolygonFrame*) {
   unavailable();
 }
 
