@@ -88,8 +88,10 @@ struct RealignDda {
 };
 constexpr RealignDda realign_dda(int64_t ray0_here, int64_t spacing_here, int64_t ray0_there, int64_t spacing_there,
                                  int frac_bits) {
-  return {floor_div(static_cast<__int128>(ray0_here - ray0_there) << frac_bits, spacing_there),
-          floor_div(static_cast<__int128>(spacing_here) << frac_bits, spacing_there)};
+  // Scaled by multiplying: a left shift of a negative value is undefined.
+  const __int128 one = static_cast<__int128>(1) << frac_bits;
+  return {floor_div(static_cast<__int128>(ray0_here - ray0_there) * one, spacing_there),
+          floor_div(static_cast<__int128>(spacing_here) * one, spacing_there)};
 }
 constexpr RayPoint realigned_ray(const RealignDda& d, int64_t u, int frac_bits, int weight_bits) {
   const int64_t pos = d.start + u * d.step;
