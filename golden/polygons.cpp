@@ -250,4 +250,30 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   return out;
 }
 
+PolygonTraffic polygon_traffic(const PolygonFrame& f, const Precision& p) {
+  PolygonTraffic t;
+  const uint64_t channel = static_cast<uint64_t>((p.alpha_bits + 7) / 8);
+  t.image_bytes = static_cast<uint64_t>(f.width) * static_cast<uint64_t>(f.height) * (8 * channel + (kZBits + 7) / 8);
+  for (const SlabImage& s : f.slabs) {
+    ++t.slabs;
+    t.raw_bytes += static_cast<uint64_t>(s.width()) * static_cast<uint64_t>(s.beams()) * 4 * channel;
+    t.slice_cycles = static_cast<uint64_t>(s.beams() + 1) * static_cast<uint64_t>(s.lane_width(0));
+    uint64_t busiest = 0;
+    for (int lane = 0; lane < s.lanes(); ++lane) {
+      const RleLine cleared = rle_clear(s.lane_width(lane));
+      uint64_t lane_flits = 0;
+      for (int y = 0; y < s.beams(); ++y) {
+        const RleLine& line = s.empty() ? cleared : s.line(y, lane);
+        lane_flits += rle_flits(line);
+        t.rle_bytes += 2 * line.size();
+      }
+      t.flits += lane_flits;
+      busiest = std::max(busiest, lane_flits);
+    }
+    t.rle_cycles += std::max(busiest, t.slice_cycles);
+    if (busiest > t.slice_cycles) ++t.slabs_over_slice;
+  }
+  return t;
+}
+
 }  // namespace cube4::golden

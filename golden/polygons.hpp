@@ -57,6 +57,27 @@ HostProgram program_host(const Scene& s, const Volume& vol, const std::vector<Me
 // base plane's origin) of a triangle that reaches the base plane.
 PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes, const HostProgram& h);
 
+// What moving a frame's polygon images costs (Cube-5 §5-6), counted from
+// the frame itself. The run-length connection sends every slab line the
+// decoders read (an empty slab as cleared lines, a run flit each), a flit
+// per pipeline per cycle; without encoding every slab would be a full RGBA
+// image of the slice. Widths are the frame's: RGBA channels alpha_bits wide
+// (whole bytes), Z kZBits.
+struct PolygonTraffic {
+  uint64_t slabs = 0;            // one per sample slice
+  uint64_t flits = 0;            // over every line of every slab
+  uint64_t rle_bytes = 0;        // those lines' 16-bit words
+  uint64_t raw_bytes = 0;        // every slab as a plain RGBA image, nx x ny
+  uint64_t image_bytes = 0;      // front and back (RGBA) and Z, once per frame
+  uint64_t slice_cycles = 0;     // a pass's beats, zero beam included: (ny + 1) ceil(nx / p)
+  // Sum over slabs of max(the busiest pipeline's flits, slice_cycles):
+  // Cube-5's T = sum max(flits / f_rle, slice time) for the run-length
+  // connection, in cycles of the volume pipeline's clock.
+  uint64_t rle_cycles = 0;
+  uint64_t slabs_over_slice = 0; // slabs whose busiest pipeline needs more than slice_cycles
+};
+PolygonTraffic polygon_traffic(const PolygonFrame& f, const Precision& p);
+
 // Snapped vertex positions: 1/2^kSubpixelBits of a pixel, depth in units of
 // 2^-kZFracBits sample slices, both rounded half up.
 inline constexpr int kSubpixelBits = 8;

@@ -496,6 +496,7 @@ int run_render(const RenderArgs& args) {
   std::vector<double> frame_seconds;
   std::optional<golden::BlockRanges> ranges;
   std::optional<golden::PolygonFrame::Counts> polygon_counts;  // the fixed and system models' first frame's
+  std::optional<golden::PolygonTraffic> polygon_traffic;       // and what moving its images costs
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
@@ -545,7 +546,10 @@ int run_render(const RenderArgs& args) {
         golden::Scene lanes = sub_scenes[i];
         if (system) lanes.pipelines = cfg.p;
         polygons = golden::rasterise_polygons(lanes, l.meshes, host);
-        if (i == 0) polygon_counts = polygons->counts;
+        if (i == 0) {
+          polygon_counts = polygons->counts;
+          polygon_traffic = golden::polygon_traffic(*polygons, lanes.precision);
+        }
       }
       const golden::PolygonFrame* frame_polygons = polygons ? &*polygons : nullptr;
       if (system) {
@@ -644,6 +648,15 @@ int run_render(const RenderArgs& args) {
       r["polygon_fragments"] = {{"opaque", polygon_counts->opaque},      {"translucent", polygon_counts->translucent},
                                 {"hidden", polygon_counts->hidden},      {"in_front", polygon_counts->in_front},
                                 {"in_slabs", polygon_counts->in_slabs},  {"behind", polygon_counts->behind}};
+    if (polygon_traffic)  // Cube-5 §5-6: the run-length connection against plain images (golden/polygons.hpp)
+      r["polygon_traffic"] = {{"slabs", polygon_traffic->slabs},
+                              {"flits", polygon_traffic->flits},
+                              {"rle_bytes", polygon_traffic->rle_bytes},
+                              {"raw_bytes", polygon_traffic->raw_bytes},
+                              {"image_bytes", polygon_traffic->image_bytes},
+                              {"slice_cycles", polygon_traffic->slice_cycles},
+                              {"rle_cycles", polygon_traffic->rle_cycles},
+                              {"slabs_over_slice", polygon_traffic->slabs_over_slice}};
     if (header_plan) {
       r["blocks"] = tb::describe_blocks(*header_plan);
     } else if (partitioned(counts)) {

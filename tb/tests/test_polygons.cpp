@@ -650,3 +650,25 @@ TEST(PolygonAccuracy, FixedAgainstFloatWithinTheDerivedBound) {
       std::printf("fragment at %.2f, S %d: worst |fixed - float| %.3g, bound %.3g\n", z_fragment, S, worst, bound);
     }
 }
+
+TEST(PolygonTraffic, CountsTheSlabLinesTheDecodersReadAndTheFullImagesTheyReplace) {
+  // A translucent plane covering every ray between object slices 3 and 4 of
+  // a 10^3 volume, p = 4: nine empty slabs, whose cleared lines are a run
+  // flit each (10 beams x 4 lanes), and one slab with a pixel flit per ray.
+  const int n = 10;
+  golden::Vec3 centre{4.5, 4.5, 3.5};
+  const auto h = hybrid(constant_scene(n, direction(2, 1), plane(2, centre, 30, "[0.1, 0.3, 1]", 0.4), "", 1));
+  ASSERT_EQ(h.frame.counts.in_slabs, static_cast<uint64_t>(n * n));
+  const golden::PolygonTraffic t = golden::polygon_traffic(h.frame, h.scene.precision);
+  EXPECT_EQ(t.slabs, 10u);
+  EXPECT_EQ(t.flits, 9u * 10 * 4 + 100);
+  // 16-bit channels: 8 bytes a pixel, plain.
+  EXPECT_EQ(t.raw_bytes, 10u * 10 * 10 * 8);
+  EXPECT_EQ(t.image_bytes, static_cast<uint64_t>(h.frame.width) * h.frame.height * (16 + 3));
+  // A pass is (ny + 1) beams of ceil(nx / p) beats; the busiest lane's 30
+  // pixel flits fit it, so the run-length connection costs no cycle.
+  EXPECT_EQ(t.slice_cycles, 11u * 3);
+  EXPECT_EQ(t.slabs_over_slice, 0u);
+  EXPECT_EQ(t.rle_cycles, 10u * t.slice_cycles);
+  EXPECT_GT(t.raw_bytes, t.rle_bytes);
+}

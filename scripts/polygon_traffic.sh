@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Cube-5's polygon traffic (§5-6), measured on our hybrid scenes: renders
+# each at the fixed level and reads the report's polygon_traffic (golden
+# polygon_traffic(): slab lines as the run-length connection sends them,
+# against plain RGBA slab images), and sets beside them the paper's
+# arithmetic for 256^3 at 30 Hz; writes the "polygon-traffic" section of
+# docs/performance.md.
+#   scripts/polygon_traffic.sh        (CUBE4_BUILD: the build folder, default build/)
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${CUBE4_BUILD:-$here/build}
+[ -n "${CUBE4_BUILD:-}" ] || "$here/scripts/setup.sh" >/dev/null
+python=${CUBE4_PYTHON:-python3}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for scene in brain_probe brain_probe_translucent sphere_box; do
+  echo "polygon_traffic: $scene..." >&2
+  "$build/tb/cube4" render "$here/scenes/$scene.json" --model fixed -q -o "$tmp/$scene.png" --report "$tmp/$scene.json"
+done
+"$python" - "$tmp" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" polygon-traffic
+import json, sys, datetime
+tmp = sys.argv[1]
+print(f"Measured {datetime.date.today()} by `scripts/polygon_traffic.sh`: each scene's first frame at p = 4, "
+      "16-bit RGBA channels (8 bytes a pixel), as `cube4 render --report` gives it (`polygon_traffic`).")
+print()
+print("| scene | slabs | flits | run-length bytes | plain slab bytes | ratio | front/back/Z bytes | slice cycles | run-length connection cycles | slabs over their slice |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+for scene in ("brain_probe", "brain_probe_translucent", "sphere_box"):
+    t = json.load(open(f"{tmp}/{scene}.json"))["polygon_traffic"]
+    print(f"| scenes/{scene}.json | {t['slabs']} | {t['flits']:,} | {t['rle_bytes']:,} | {t['raw_bytes']:,} | "
+          f"{t['raw_bytes'] / t['rle_bytes']:.1f}x | {t['image_bytes']:,} | {t['slice_cycles']:,} | "
+          f"{t['rle_cycles']:,} | {t['slabs_over_slice']} |")
+print()
+# Cube-5 §6's arithmetic for 256^3 at 30 Hz with 8-bit RGBA slab images.
+slabs, side, fps = 256, 256, 30
+raw = slabs * side * side * 4
+print(f"Cube-5's figures from the same formulas: 256 slabs of 256 x 256 8-bit RGBA pixels are "
+      f"{raw / 2**20:.0f} MiB a frame without encoding, {raw * fps / 2**30:.2f} GiB/s at 30 Hz, and a slab has "
+      f"{1e6 / fps / slabs:.0f} µs (1/30 s over 256 slices) to arrive: the paper's 64 MB, 1.9 GB/s and 130 µs.")
+PY
+echo "polygon_traffic: docs/performance.md updated" >&2
