@@ -323,3 +323,20 @@ TEST(PerspectiveCamera, AWindowShowsThatPartOfTheViewInBothProjections) {
   EXPECT_NE(message(sphere(R"({"window": [0, 0, 1, 2]})")).find("\"view.window[3]\" = 2 is out of range"),
             std::string::npos);
 }
+
+TEST(PerspectiveRender, CroppingAndCutPlaneAgreeWithFloat) {
+  // The parallel projection's test (test_renderers) in perspective: the
+  // crop and the cut plane see each sample at its ray's position.
+  const std::string view = R"({"rotate": [20, 30, 10], "projection": "perspective", "fov": 50})";
+  for (const std::string& extra :
+       {std::string(R"(, "cropping": {"x": [0, 11], "combine": "intersection"})"),
+        std::string(R"(, "cropping": {"x": [6, 17], "y": [6, 17], "z": [6, 17], "combine": "cross", "invert": true})"),
+        std::string(R"(, "cut_plane": {"normal": [1, 1, 0], "dmin": 14, "dmax": 20, "falloff": 2})"),
+        std::string(R"(, "cut_plane": {"normal": [0, 0, 1], "dmin": 8, "dmax": 14, "keep": "outside"})")}) {
+    const auto s = test::setup(sphere(view, extra));
+    const auto e = test::compare(test::final_fixed(s), test::final_float(s));
+    EXPECT_GT(e.psnr, 35.0) << extra << " max error " << e.max_error;
+    const auto plain = test::setup(sphere(view));
+    EXPECT_LT(test::compare(test::final_fixed(s), test::final_fixed(plain)).psnr, 30.0) << extra;
+  }
+}
