@@ -417,11 +417,11 @@ int run_render(const RenderArgs& args) {
   const bool blocked = partitioned(counts) && (system || a.model == "fixed");
   const std::string what_blocks = blocks_what(a, l.scene);
   std::optional<golden::BlockPlan> header_plan;
-  if (l.scene.view.perspective() && ((system && a.model != "tlm") || a.model == "splat" || blocked))
+  if (l.scene.view.perspective() && (system || a.model == "splat" || blocked))
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
-                     ": \"view.projection\": \"perspective\" renders with --model fixed, float, reference or tlm "
-                     "so far " + (blocked ? std::string("and in one block") : "(not " + a.model + ")") +
-                     "; the RTL follows (docs/perspective.md)");
+                     ": \"view.projection\": \"perspective\" renders with --model fixed, float or reference so far " +
+                     (blocked ? std::string("and in one block") : "(not " + a.model + ")") +
+                     "; the system model follows (docs/perspective.md)");
   if (a.model == "splat" && !l.meshes.empty())
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
                      ": \"polygons\": the splat model draws the volume only (bela's voxel projection)");
