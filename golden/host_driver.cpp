@@ -247,6 +247,7 @@ HostProgram program_host(const Scene& s, const Volume& vol) {
   r.perm = f.perm;
   r.flip = f.flip;
   r.supersampling = s.supersampling;
+  r.z_gradient = s.z_gradient;
   const double one = std::ldexp(1.0, p.dda_frac_bits);
   constexpr int64_t kDda = std::numeric_limits<int64_t>::max() / 2;  // 64-bit signed, with headroom for the sum
   r.x_start = to_register(s, "view.ray_offset", s.view.ray_offset[0], one, 0, kDda, "X_START");

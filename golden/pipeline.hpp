@@ -60,13 +60,17 @@ inline SliceControl slice_control(const Registers& r, int k) {
 // `tag` is the centre's (sample_tag()): it travels with the centre sample
 // through the gradient unit, and only the classification and the material
 // use it.
+// With the voxel-difference z gradient, `z_difference` is the sample's
+// interpolated_z_difference() and behind/ahead are not used.
 struct Neighbourhood {
   uint32_t centre = 0, left = 0, right = 0, up = 0, down = 0;
   std::array<uint32_t, 4> behind{}, ahead{};
+  int64_t z_difference = 0;
   uint32_t tag = 0;
 };
 
 inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const Neighbourhood& n) {
+  if (r.z_gradient == ZGradient::VoxelDifferences) return gradient_voxel_z(n.left, n.right, n.up, n.down, n.z_difference, r.p);
   const int w = r.p.weight_bits;
   const uint32_t behind = abc_sample(n.behind[0], n.behind[1], n.behind[2], n.behind[3],
                                      c.behind_x.weight, c.behind_y.weight, w);

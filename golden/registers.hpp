@@ -15,6 +15,7 @@
 #include "golden/units/composite_window.hpp"
 #include "golden/units/dda.hpp"
 #include "golden/units/dda_perspective.hpp"
+#include "golden/units/gradient.hpp"
 #include "golden/units/shade_phong.hpp"
 #include "golden/units/shade_reflection.hpp"
 
@@ -48,6 +49,7 @@ struct Registers {
   // Mode bits: decided by the scene's effect set.
   bool gradient = false, magnitude = false, shading = false, specular = false;
   bool gm_opacity = false, gm_diffuse = false, gm_specular = false;
+  ZGradient z_gradient = ZGradient::Abc;  // the gradient unit's z method (units/gradient.hpp)
   BlendMode blend = BlendMode::Composite;
   bool crop_enabled = false;
   CropRegs crop;

@@ -9,6 +9,7 @@
 // the image is the same for every thread count. A band interpolates the
 // beams its gradients read too, one beyond its own on each side.
 #include <algorithm>
+#include <array>
 #include <exception>
 #include <memory>
 #include <thread>
@@ -37,9 +38,14 @@ class Band {
  public:
   Band(const Frame& f, int v0, int v1)
       : f_(f), r_(f.r), nx_(r_.dim[0]), ny_(r_.dim[1]), K_(r_.sample_slices()), reach_(r_.gradient ? 1 : 0),
-        iy_last_(r_.base_origin_y()), v0_(v0), v1_(v1), tagged_(r_.p.tag_bits > 0), vox_lo_(nx_, ny_, 1),
+        iy_last_(r_.base_origin_y()), v0_(v0), v1_(v1), tagged_(r_.p.tag_bits > 0),
+        voxel_z_(r_.gradient && r_.z_gradient == ZGradient::VoxelDifferences), vox_lo_(nx_, ny_, 1),
         vox_hi_(nx_, ny_, 1), interp_(nx_, ny_, r_.p.weight_bits), spans_(static_cast<size_t>(ny_)) {
     if (tagged_) tag_lo_ = tag_hi_ = tag_current_ = tag_ahead_ = Plane(nx_, ny_, 1);
+    if (voxel_z_) {
+      for (Plane& v : zvox_) v = Plane(nx_, ny_, 1);
+      zdiff_lo_ = zdiff_hi_ = zdiff_ = Plane(nx_, ny_, 1);
+    }
   }
 
   void run(const Progress* progress) {
@@ -74,6 +80,7 @@ class Band {
         if (f_.may_skip && (classify(r.classification, tag, centre, r.p).a == 0 || ray.a == opaque)) return false;
         if (r.gradient) {
           gather_neighbourhood(behind, current, ahead, c, x, y, n);
+          if (voxel_z_) n.z_difference = zdiff_.row(y)[x];
         } else {
           n.centre = centre;
         }
@@ -86,6 +93,7 @@ class Band {
         }
         return true;
       };
+      if (voxel_z_) z_differences_of(c);
       f_.compositor.slice(c, shade, beam, v0_, v1_);
       if (r.gradient) {
         std::swap(behind, current);
@@ -149,10 +157,42 @@ class Band {
     if (tagged_) interp_.tags(tag_lo_, tag_hi_, c, tags, b.first, b.second, spans_.data());
   }
 
+  // VolumePro's z gradient: the voxel z differences D(z) = V(z+1) - V(z-1)
+  // of voxel slices z_voxel and z_voxel + 1 interpolated to slice k's own
+  // samples (those of the band's beams the compositor may shade). Whole
+  // slices: D(z + 1) of one voxel slice is D(z) of the next.
+  void z_differences_of(const SliceControl& c) {
+    const int z = c.z_voxel;
+    auto difference = [](const Plane& above, const Plane& below, Plane& out) {
+      for (size_t i = 0; i < out.v.size(); ++i) out.v[i] = voxel_z_difference(above.v[i], below.v[i]);
+    };
+    if (z != zvox_z_) {
+      if (z == zvox_z_ + 1) {
+        std::swap(zvox_[0], zvox_[1]);
+        std::swap(zvox_[1], zvox_[2]);
+        std::swap(zvox_[2], zvox_[3]);
+        std::swap(zdiff_lo_, zdiff_hi_);
+        load_voxel_slice(f_.access, z + 2, zvox_[3]);
+      } else {
+        for (int i = 0; i < 4; ++i) load_voxel_slice(f_.access, z - 1 + i, zvox_[static_cast<size_t>(i)]);
+        difference(zvox_[2], zvox_[0], zdiff_lo_);
+      }
+      difference(zvox_[3], zvox_[1], zdiff_hi_);
+      zvox_z_ = z;
+    }
+    const Beams b = beams(c.k);
+    for (int y = b.first; y < b.second; ++y) spans_[static_cast<size_t>(y)] = f_.skip.samples_needed(c.k, y);
+    interp_.slice(zdiff_lo_, zdiff_hi_, c, zdiff_, b.first, b.second, spans_.data());
+  }
+
   const Frame& f_;
   const Registers& r_;
   int nx_, ny_, K_, reach_, iy_last_, v0_, v1_;
-  bool tagged_;
+  bool tagged_, voxel_z_;
+  std::array<Plane, 4> zvox_;  // voxel slices z_voxel - 1 .. z_voxel + 2
+  Plane zdiff_lo_, zdiff_hi_;  // D(z_voxel), D(z_voxel + 1)
+  Plane zdiff_;                // the shaded slice's interpolated z differences
+  int zvox_z_ = -2;
   Plane vox_lo_, vox_hi_;  // voxel slices z_voxel and z_voxel + 1
   // With tags: the tags of those voxel slices and of the samples of the
   // slice being shaded and the one ahead (empty planes without tags).

@@ -1,5 +1,5 @@
 // The fixed-point renderer's algorithm in double precision: same sheared
-// slices, 12-neighbourhood gradient and ray alignment, but exact weights,
+// slices, gradient estimators and ray alignment, but exact weights,
 // no rounding or saturation, and the optical model evaluated directly instead
 // of through tables. The difference to render_fixed is the price of the widths.
 #include <algorithm>
@@ -53,10 +53,14 @@ void load_slice(const PermutedVolume& pv, int z, PlaneF& out) {
   }
 }
 
-void interpolate(const FloatView& fv, const PermutedVolume& pv, int k, PlaneF& lo, PlaneF& hi, PlaneF& out) {
+// Sample slice k's values, or with dz != 0 those of the same rays dz voxel
+// slices further in z (VolumePro's z gradient: interpolating voxel
+// differences is, in real arithmetic, the difference of these).
+void interpolate(const FloatView& fv, const PermutedVolume& pv, int k, PlaneF& lo, PlaneF& hi, PlaneF& out,
+                 int dz = 0) {
   if (k < 0 || k >= fv.K) { out.clear(); return; }
   const Offset ox = fv.x_offset(k), oy = fv.y_offset(k);
-  const int z = k / fv.S;
+  const int z = k / fv.S + dz;
   const double wz = static_cast<double>(k % fv.S) / fv.S;
   load_slice(pv, z, lo);
   load_slice(pv, z + 1, hi);
@@ -205,6 +209,8 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
   PlaneF vox_lo(nx, ny), vox_hi(nx, ny);
   auto interpolate_slice = [&](int k, PlaneF& out) { interpolate(fv, pv, k, vox_lo, vox_hi, out); };
   PlaneF behind(nx, ny), current(nx, ny), ahead(nx, ny);
+  const bool voxel_z = e.gradient && s.z_gradient == ZGradient::VoxelDifferences;
+  PlaneF below(nx, ny), above(nx, ny);
   interpolate_slice(0, current);
   if (e.gradient) interpolate_slice(1, ahead);
   std::vector<AccF> prev(static_cast<size_t>(nx) * ny), cur(prev.size());
@@ -215,15 +221,20 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
     const int dx = k == 0 ? 0 : ox.integer - pox.integer, dy = k == 0 ? 0 : oy.integer - poy.integer;
     const int zv = k / S;
     const double z = zv + static_cast<double>(k % S) / S;
+    if (voxel_z) {
+      interpolate(fv, pv, k, vox_lo, vox_hi, below, -1);
+      interpolate(fv, pv, k, vox_lo, vox_hi, above, +1);
+    }
     for (int y = 0; y < ny; ++y)
       for (int x = 0; x < nx; ++x) {
         const double v = current.at(x, y);
         Vec3 g{0, 0, 0};
         if (e.gradient) {
-          const double b = realigned(behind, x, y, ox.frac - pox.frac, oy.frac - poy.frac);
-          const double a = realigned(ahead, x, y, ox.frac - nox.frac, oy.frac - noy.frac);
+          const double dz = voxel_z ? above.at(x, y) - below.at(x, y)
+                                    : (realigned(ahead, x, y, ox.frac - nox.frac, oy.frac - noy.frac) -
+                                       realigned(behind, x, y, ox.frac - pox.frac, oy.frac - poy.frac)) * S;
           g = {(current.at(x + 1, y) - current.at(x - 1, y)) * gscale,
-               (current.at(x, y + 1) - current.at(x, y - 1)) * gscale, (a - b) * S * gscale};
+               (current.at(x, y + 1) - current.at(x, y - 1)) * gscale, dz * gscale};
         }
         // The nearest voxel's tag, as the interpolation unit picks it (ties up).
         const int tag = e.tags ? pv.tag_at(x + (ox.frac >= 0.5), y + (oy.frac >= 0.5), zv + (z - zv >= 0.5)) : 0;

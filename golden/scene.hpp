@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "golden/precision.hpp"
+#include "golden/units/gradient.hpp"
 
 namespace cube4::golden {
 
@@ -180,6 +181,7 @@ struct Scene {
   Blend blend = Blend::Composite;
   GradientModulation gm;
   int supersampling = 1;             // z only, 1..8
+  ZGradient z_gradient = ZGradient::Abc;  // "z_gradient": "abc" | "voxel_differences"
   int xy_supersampling = 1;          // rays per base-plane pixel and axis, 1..4: n² frames blended on the host
   Cropping cropping;
   CutPlane cut;

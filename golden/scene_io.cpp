@@ -944,6 +944,8 @@ Scene parse_scene(const std::string& json_text, const std::string& file_name) {
   if (auto n = r.get("gradient_modulation")) read_gradient_modulation(*n, s.gm);
   if (auto n = r.get("supersampling")) s.supersampling = n->int_in(1, 8);
   if (auto n = r.get("xy_supersampling")) s.xy_supersampling = n->int_in(1, 4);
+  if (auto n = r.get("z_gradient"))
+    s.z_gradient = n->one_of({"abc", "voxel_differences"}) == "abc" ? ZGradient::Abc : ZGradient::VoxelDifferences;
   if (auto n = r.get("cropping")) read_cropping(*n, s.cropping);
   if (auto n = r.get("cut_plane")) read_cut_plane(*n, s.cut);
   if (auto n = r.get("pipelines")) s.pipelines = n->int_in(1, 256);
@@ -998,6 +1000,9 @@ void check_perspective(const Scene& s) {
   if (s.blocks != std::array<int, 3>{1, 1, 1})
     fail_value(s.file, "blocks", show_array(s.blocks),
                "cannot be rendered with \"view.projection\": \"perspective\" yet (one block only)");
+  if (s.z_gradient != ZGradient::Abc)
+    fail_value(s.file, "z_gradient", "\"voxel_differences\"",
+               "is not built for \"view.projection\": \"perspective\" yet (its slices are scaled; use \"abc\")");
 }
 
 void finish_scene(Scene& s) {

@@ -1,7 +1,9 @@
-// Gradient unit: central differences of samples in x and y, and Cube-4's
-// 12-neighbourhood ABC method in z (ahead and behind slices bilinearly
-// re-aligned to the current ray), signed and saturating.
+// Gradient unit: central differences of samples in x and y, and in z either
+// Cube-4's 12-neighbourhood ABC method (ahead and behind slices bilinearly
+// re-aligned to the current ray) or VolumePro's interpolated voxel
+// differences; signed and saturating.
 #pragma once
+#include <array>
 #include <cstdint>
 
 #include "golden/fixed.hpp"
@@ -38,6 +40,36 @@ constexpr Gradient gradient_12n(uint32_t left, uint32_t right, uint32_t up, uint
   return {gradient_component(static_cast<int64_t>(right) - left, p),
           gradient_component(static_cast<int64_t>(down) - up, p),
           gradient_component((static_cast<int64_t>(ahead) - behind) * supersampling, p)};
+}
+
+// How the z component is estimated (scene key "z_gradient"):
+//  Abc: Cube-4's 12-neighbourhood, the sample slices just ahead and behind
+//    re-aligned to the ray; they are 2/S voxels apart at supersampling S.
+//  VoxelDifferences: VolumePro §3.2, central differences of voxels in z
+//    (two voxel slices apart, like x and y) interpolated to the sample with
+//    its own trilinear weights: the span stays 2 voxels at every S. The
+//    hardware interpolates one more (signed) value per sample.
+enum class ZGradient { Abc, VoxelDifferences };
+
+// The voxel one slice above minus the one below: voxel_bits + 1 bits, signed.
+constexpr int32_t voxel_z_difference(uint32_t above, uint32_t below) {
+  return static_cast<int32_t>(above) - static_cast<int32_t>(below);
+}
+
+// d[i]: voxel_z_difference() at trilinear_t()'s corner i; the same lerps
+// (and rounding) as the sample's value, so the result needs no saturation
+// and keeps voxel_bits + 1 signed bits.
+constexpr int64_t interpolated_z_difference(const std::array<int32_t, 8>& d, uint32_t wx, uint32_t wy, uint32_t wz,
+                                            int weight_bits) {
+  return trilinear_t(d, wx, wy, wz, weight_bits);
+}
+
+// The interpolated voxel difference already spans two voxels, as right -
+// left does: no scaling by S.
+constexpr Gradient gradient_voxel_z(uint32_t left, uint32_t right, uint32_t up, uint32_t down, int64_t z_difference,
+                                    const Precision& p) {
+  return {gradient_component(static_cast<int64_t>(right) - left, p),
+          gradient_component(static_cast<int64_t>(down) - up, p), gradient_component(z_difference, p)};
 }
 
 // Perspective: the rays beside a sample are `spacing` voxels away, not one,

@@ -27,12 +27,18 @@ constexpr int64_t bilerp(int64_t v00, int64_t v10, int64_t v01, int64_t v11,
   return lerp(lerp(v00, v10, wx, weight_bits), lerp(v01, v11, wx, weight_bits), wy, weight_bits);
 }
 
-// v[i] is the voxel at (x + (i & 1), y + (i >> 1 & 1), z + (i >> 2)).
-constexpr uint32_t trilinear(const std::array<uint32_t, 8>& v, uint32_t wx, uint32_t wy,
-                             uint32_t wz, int weight_bits) {
+// v[i] is the value at (x + (i & 1), y + (i >> 1 & 1), z + (i >> 2)): voxels,
+// or (signed) voxel differences for VolumePro's z gradient.
+template <class T>
+constexpr int64_t trilinear_t(const std::array<T, 8>& v, uint32_t wx, uint32_t wy, uint32_t wz, int weight_bits) {
   const int64_t front = bilerp(v[0], v[1], v[2], v[3], wx, wy, weight_bits);
   const int64_t back = bilerp(v[4], v[5], v[6], v[7], wx, wy, weight_bits);
-  return static_cast<uint32_t>(lerp(front, back, wz, weight_bits));
+  return lerp(front, back, wz, weight_bits);
+}
+
+constexpr uint32_t trilinear(const std::array<uint32_t, 8>& v, uint32_t wx, uint32_t wy,
+                             uint32_t wz, int weight_bits) {
+  return static_cast<uint32_t>(trilinear_t(v, wx, wy, wz, weight_bits));
 }
 
 // Voxel tags (bela §III) are labels, not quantities: a sample is never

@@ -114,7 +114,8 @@ constexpr uint32_t kModeBlendMask = 3u << kModeBlendShift;
 constexpr uint32_t kModeCrop = 1u << 12;
 constexpr uint32_t kModeCut = 1u << 13;
 constexpr uint32_t kModeWindow = 1u << 14;
-constexpr uint32_t kModeMask = 0x7F | kModeBlendMask | kModeCrop | kModeCut | kModeWindow;
+constexpr uint32_t kModeVoxelZGradient = 1u << 15;  // golden::ZGradient::VoxelDifferences
+constexpr uint32_t kModeMask = 0x7F | kModeBlendMask | kModeCrop | kModeCut | kModeWindow | kModeVoxelZGradient;
 
 constexpr uint32_t kCutKeepInside = 1u << 0;
 
@@ -131,6 +132,7 @@ constexpr uint32_t mode_word(const golden::Registers& r) {
   if (r.crop_enabled) m |= kModeCrop;
   if (r.cut_enabled) m |= kModeCut;
   if (r.window_enabled) m |= kModeWindow;
+  if (r.z_gradient == golden::ZGradient::VoxelDifferences) m |= kModeVoxelZGradient;
   return m;
 }
 constexpr void set_mode(golden::Registers& r, uint64_t v) {
@@ -145,6 +147,7 @@ constexpr void set_mode(golden::Registers& r, uint64_t v) {
   r.crop_enabled = v & kModeCrop;
   r.cut_enabled = v & kModeCut;
   r.window_enabled = v & kModeWindow;
+  r.z_gradient = v & kModeVoxelZGradient ? golden::ZGradient::VoxelDifferences : golden::ZGradient::Abc;
 }
 
 // The classification table's address is {tag, value} (golden class_address).
@@ -268,15 +271,17 @@ inline constexpr Register kListed[] = {
 #undef CUBE4_MARGIN
 
     // ---- Mode.
-    {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(15), Sign::Unsigned, Rule::Mode,
-     "gradient … window_enabled",
+    {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(16), Sign::Unsigned, Rule::Mode,
+     "gradient … z_gradient",
      [](const RegisterValues& v, const HardwareParams&) { return uint64_t{mode_word(v.regs)}; },
      [](RegisterValues& v, uint64_t w) { set_mode(v.regs, w); },
      "cube4_shade_unit magnitude_i … gm_specular_i, cube4_composite_ring blend_mode_i, crop_enabled_i, "
      "cut_enabled_i, window_enabled_i",
      "bit 0 `gradient`, 1 `magnitude`, 2 `shading`, 3 `specular`, 4 `gm_opacity`, 5 `gm_diffuse`, "
      "6 `gm_specular`, bits 9:8 `blend` (0 composite, 1 MIP, 2 MinIP; 3 is out of range), "
-     "bit 12 `crop_enabled`, bit 13 `cut_enabled`, bit 14 `window_enabled` (a block of a partitioned volume)"},
+     "bit 12 `crop_enabled`, bit 13 `cut_enabled`, bit 14 `window_enabled` (a block of a partitioned volume), "
+     "bit 15 `z_gradient` (0 the 12-neighbourhood, 1 VolumePro's interpolated voxel differences: loosely timed "
+     "TLM only so far)"},
 
     // ---- Cropping.
     {"CROP_X_LO", 0x180, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,

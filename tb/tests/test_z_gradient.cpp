@@ -1,0 +1,157 @@
+// VolumePro's z gradient (interpolated voxel differences, golden/units/
+// gradient.hpp): the renderer's slice-wide path against the per-sample unit
+// functions, its agreement with the 12-neighbourhood where the two must
+// agree, threads and skipping, and the scene key's errors.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "golden/permuted_volume.hpp"
+#include "tb/tests/cli_support.hpp"
+#include "tb/tests/test_support.hpp"
+
+using namespace cube4;
+
+namespace {
+
+std::string sphere(const std::string& rest) {
+  return R"({"volume": {"synthetic": "sphere", "size": [24, 20, 28]}, )" + rest + "}";
+}
+
+std::string brainsmall(const std::string& rest) {
+  return R"({"volume": {"file": ")" + golden::default_brainsmall_path() + R"("}, )" + rest + "}";
+}
+
+// Checks every sample's z component against interpolated_z_difference() of
+// its own eight voxel differences, read straight from the volume.
+struct ZDifferenceChecker : golden::SampleProbe {
+  const golden::Registers& r;
+  std::vector<uint32_t> permuted;  // the volume in permuted order, beam by beam
+  int samples = 0, nonzero = 0, mismatches = 0;
+  ZDifferenceChecker(const golden::Volume& v, const golden::Registers& regs)
+      : r(regs), permuted(static_cast<size_t>(regs.dim[0]) * regs.dim[1] * regs.dim[2]) {
+    const golden::PermutedVolume pv(v, regs.perm, regs.flip);
+    for (int z = 0; z < r.dim[2]; ++z)
+      for (int y = 0; y < r.dim[1]; ++y) pv.load_beam(y, z, &permuted[(static_cast<size_t>(z) * r.dim[1] + y) * r.dim[0]]);
+  }
+  uint32_t voxel(int x, int y, int z) const {
+    if (x < 0 || y < 0 || z < 0 || x >= r.dim[0] || y >= r.dim[1] || z >= r.dim[2]) return 0;
+    return permuted[(static_cast<size_t>(z) * r.dim[1] + y) * r.dim[0] + x];
+  }
+  void sample(int x, int y, const golden::SliceControl& c, uint32_t, const golden::Gradient& g) override {
+    std::array<int32_t, 8> d{};
+    for (int i = 0; i < 8; ++i) {
+      const int vx = x + (i & 1), vy = y + (i >> 1 & 1), vz = c.z_voxel + (i >> 2);
+      d[static_cast<size_t>(i)] = golden::voxel_z_difference(voxel(vx, vy, vz + 1), voxel(vx, vy, vz - 1));
+    }
+    const int32_t want = golden::gradient_component(
+        golden::interpolated_z_difference(d, c.wx, c.wy, c.wz, r.p.weight_bits), r.p);
+    ++samples;
+    if (want != 0) ++nonzero;
+    if (g.z != want && mismatches++ == 0)
+      ADD_FAILURE() << "first mismatch: sample (" << x << ", " << y << ") of slice " << c.k << ": z component "
+                    << g.z << ", its voxel differences give " << want;
+  }
+};
+
+golden::BasePlane render(const test::Setup& s, int threads, bool skip) {
+  golden::FixedOptions o;
+  o.threads = threads;
+  o.skip_empty = skip;
+  return golden::render_fixed(s.volume, s.host.regs, o);
+}
+
+}  // namespace
+
+TEST(ZGradient, EverySampleIsItsVoxelDifferencesInterpolated) {
+  for (const std::string& json :
+       {sphere(R"("z_gradient": "voxel_differences", "view": {"direction": [0.6, -0.5, 0.7]})"),
+        sphere(R"("z_gradient": "voxel_differences", "supersampling": 3, "view": {"rotate": [30, 200, 10]})"),
+        brainsmall(R"("z_gradient": "voxel_differences", "supersampling": 2, "view": {"rotate": [20, 60, 180]},
+                      "precision": {"voxel_bits": 16, "weight_bits": 14})")}) {
+    const test::Setup s = test::setup(json);
+    ASSERT_EQ(s.host.regs.z_gradient, golden::ZGradient::VoxelDifferences);
+    ZDifferenceChecker check(s.volume, s.host.regs);
+    golden::Registers r = s.host.regs;
+    r.gradient = true;
+    golden::render_fixed(s.volume, r, nullptr, {}, &check);
+    EXPECT_EQ(check.samples, r.dim[0] * r.dim[1] * r.sample_slices()) << json;
+    EXPECT_GT(check.nonzero, check.samples / 100) << json << ": too few surfaces to test anything";
+    EXPECT_EQ(check.mismatches, 0) << json;
+  }
+}
+
+// Axis-aligned, one sample slice per voxel slice: every weight is zero, so
+// the 12-neighbourhood's ahead and behind samples are the voxels above and
+// below, and the two methods are one.
+TEST(ZGradient, EqualsTheTwelveNeighbourhoodAxisAlignedAtOneSlicePerVoxel) {
+  const test::Setup abc = test::setup(sphere(R"("view": {"rotate": [0, 0, 0]})"));
+  const test::Setup vd = test::setup(sphere(R"("view": {"rotate": [0, 0, 0]}, "z_gradient": "voxel_differences")"));
+  const golden::BasePlane a = render(abc, 1, true), b = render(vd, 1, true);
+  EXPECT_EQ(a.rgba, b.rgba);
+  // ... and differ once the rays are sheared.
+  const test::Setup abc2 = test::setup(sphere(R"("view": {"rotate": [25, 35, 0]})"));
+  const test::Setup vd2 = test::setup(sphere(R"("view": {"rotate": [25, 35, 0]}, "z_gradient": "voxel_differences")"));
+  EXPECT_NE(render(abc2, 1, true).rgba, render(vd2, 1, true).rgba);
+}
+
+TEST(ZGradient, EveryThreadCountAndSkippingGiveTheSameImage) {
+  for (const std::string& json :
+       {brainsmall(R"("z_gradient": "voxel_differences", "view": {"rotate": [20, 60, 180]})"),
+        brainsmall(R"("z_gradient": "voxel_differences", "supersampling": 3, "view": {"rotate": [45, 45, 45]})"),
+        sphere(R"("z_gradient": "voxel_differences", "view": {"direction": [1, 0, 1], "up": [0, 1, 0]})")}) {
+    const test::Setup s = test::setup(json);
+    const golden::BasePlane one = render(s, 1, false);
+    for (int threads : {1, 2, 3, 7})
+      for (bool skip : {true, false})
+        EXPECT_EQ(render(s, threads, skip).rgba, one.rgba) << json << ", " << threads << " threads, skip " << skip;
+  }
+}
+
+TEST(ZGradient, SceneErrorsNameTheKey) {
+  auto error_of = [](const std::string& json) {
+    try {
+      test::setup(json);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string bad = error_of(sphere(R"("z_gradient": "sobel")"));
+  EXPECT_NE(bad.find("z_gradient"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("sobel"), std::string::npos) << bad;
+  const std::string persp = error_of(
+      sphere(R"("z_gradient": "voxel_differences", "view": {"projection": "perspective", "fov": 30})"));
+  EXPECT_NE(persp.find("z_gradient"), std::string::npos) << persp;
+  EXPECT_NE(persp.find("perspective"), std::string::npos) << persp;
+}
+
+using ZGradientCli = test::Cli;
+
+// The host's MODE register carries the choice to the loosely timed system
+// model, which renders the golden frame; the clocked and RTL levels refuse.
+TEST_F(ZGradientCli, TlmRendersTheFixedFrameAndTheRtlLevelsRefuseSayingWhy) {
+  const std::string scene = write("z.json", sphere(R"("z_gradient": "voxel_differences", "supersampling": 2,
+      "view": {"rotate": [25, 35, 0]}, "output": {"width": 64, "height": 64})"));
+  for (const char* model : {"fixed", "tlm"}) {
+    const test::CliResult r = run("render " + scene + " -q --model " + model + " --report " +
+                                  path(std::string(model) + ".json") + " -o " + path(std::string(model) + ".png"));
+    ASSERT_EQ(r.code, 0) << model << ": " << r.err;
+  }
+  auto hash = [&](const std::string& model) {
+    nlohmann::json j;
+    std::ifstream(path(model + ".json")) >> j;
+    return j.value("baseplane_hash_fnv1a64", std::string());
+  };
+  EXPECT_EQ(hash("fixed").size(), 16u);
+  EXPECT_EQ(hash("tlm"), hash("fixed"));
+  for (const char* model : {"rtl", "mixed:gradient"}) {
+    const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("no.png"));
+    EXPECT_EQ(r.code, 2) << model;
+    EXPECT_NE(r.err.find("\"z_gradient\": \"voxel_differences\" renders at --model tlm"), std::string::npos) << r.err;
+    EXPECT_FALSE(test::fs::exists(path("no.png")));
+  }
+}
