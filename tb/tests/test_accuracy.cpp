@@ -5,16 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <set>
 
 #include "golden/shading_model.hpp"
+#include "tb/tests/sphere_normals.hpp"
 #include "tb/tests/test_support.hpp"
 
 using namespace cube4;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Largest difference between a bilinearly interpolated fixed-point map and
 // the exact intensity it samples, over a fine grid of directions: the map
@@ -111,48 +109,13 @@ TEST(Accuracy, FloatAgainstReferenceWithPolygons) {
   EXPECT_LT(e.max_error, 0.5);
 }
 
-namespace {
-
-// Collects, for every ray, the first sample above a threshold and the angle
-// between its fixed-point gradient and the sphere's analytic normal.
-struct FirstHitProbe : golden::SampleProbe {
-  const golden::ViewFactorisation& view;
-  golden::Vec3 centre;
-  uint32_t threshold;
-  int weight_bits;
-  std::set<std::pair<int, int>> hit;
-  double angle_sum = 0;
-  int count = 0;
-  FirstHitProbe(const golden::ViewFactorisation& v, golden::Vec3 c, uint32_t t, int w)
-      : view(v), centre(c), threshold(t), weight_bits(w) {}
-  void sample(int x, int y, const golden::SliceControl& c, uint32_t value, const golden::Gradient& g) override {
-    if (value < threshold) return;
-    if (!hit.insert({x - c.ix, y - c.iy}).second) return;
-    const double one = std::ldexp(1.0, weight_bits);
-    const golden::Vec3 pos = view.to_object({x + c.wx / one, y + c.wy / one, c.z_voxel + c.wz / one});
-    const golden::Vec3 grad = view.direction_to_object({double(g.x), double(g.y), double(g.z)});
-    double dot = 0, gn = 0, nn = 0;
-    for (int i = 0; i < 3; ++i) {
-      const double n = pos[i] - centre[i];
-      dot += -grad[i] * n;
-      gn += grad[i] * grad[i];
-      nn += n * n;
-    }
-    if (gn == 0 || nn == 0) return;
-    angle_sum += std::acos(std::clamp(dot / std::sqrt(gn * nn), -1.0, 1.0)) * 180 / kPi;
-    ++count;
-  }
-};
-
-}  // namespace
-
 TEST(Accuracy, TwelveNeighbourhoodGradientOnAVolumeSampledSphere) {
   // Towards-scalable §3, Fig. 2: mean angular error below 3° for rotations
   // about the vertical axis from 0° to 90° in 5° steps.
   for (int deg = 0; deg <= 90; deg += 5) {
-    const auto s = test::setup(R"({"volume": {"synthetic": "sphere", "size": [64, 64, 64], "radius": 24},
-        "shading": false, "view": {"rotate": [0, )" + std::to_string(deg) + R"(, 0]}})");
-    FirstHitProbe probe(s.host.view, {31.5, 31.5, 31.5}, 2048, s.scene.precision.weight_bits);
+    const auto s = test::rotated_sphere(deg);
+    test::FirstHitProbe probe(s.host.view, test::kSphereCentre, test::kSphereHalfDensity,
+                              s.scene.precision.weight_bits);
     golden::Registers r = s.host.regs;
     r.gradient = true;  // measured although this unshaded scene does not need it
     golden::render_fixed(s.volume, r, nullptr, {}, &probe);
