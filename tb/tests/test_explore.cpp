@@ -96,6 +96,7 @@ TEST(Explore, BadSweepsAreRefusedNamingFileKeyAndValue) {
           {"precision.alpha_bits = 40", "alpha_bits"});
   refused(R"({"scene": "scene.json", "axes": {"supersampling": [9]}})", {"supersampling = 9"});
   refused(R"({"scene": "scene.json", "axes": {"supersampling": []}})", {"supersampling", "non-empty"});
+  refused(R"({"scene": "scene.json", "axes": {"z_gradient": ["abc", "sobel"]}})", {"z_gradient = sobel", "sobel"});
   refused(R"({"scene": "scene.json", "model": "gates"})", {"gates", "cannot be explored"});
   refused(R"({"scene": "scene.json", "frames": 3})", {"unknown key \"frames\""});
   refused(R"({"scene": "missing.json"})", {"missing.json"});
