@@ -29,12 +29,15 @@
 //                (Precision::weight_bits, 8)
 //   VoxelTagBits - voxel tag width (Precision::tag_bits, 0: none); the tag
 //                ports are at least one bit wide
+//   Signed     - 1: voxels and sample are two's complement (cube4_interp_zdiff
+//                interpolates signed voxel differences through this unit)
 `include "cube4_pkg.sv"
 
 module cube4_interp #(
   parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits,
-  parameter int unsigned VoxelTagBits = cube4_pkg::VoxelTagBits
+  parameter int unsigned VoxelTagBits = cube4_pkg::VoxelTagBits,
+  parameter bit          Signed     = 1'b0
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -72,7 +75,8 @@ module cube4_interp #(
   for (genvar i = 0; i < 4; i++) begin : g_x
     cube4_lerp #(
       .VoxelBits (VoxelBits),
-      .WeightBits(WeightBits)
+      .WeightBits(WeightBits),
+      .Signed    (Signed)
     ) u_lerp_x (
       .a_i(voxels_i[(2*i)*VoxelBits +: VoxelBits]),
       .b_i(voxels_i[(2*i+1)*VoxelBits +: VoxelBits]),
@@ -94,7 +98,8 @@ module cube4_interp #(
   for (genvar i = 0; i < 2; i++) begin : g_y
     cube4_lerp #(
       .VoxelBits (VoxelBits),
-      .WeightBits(WeightBits)
+      .WeightBits(WeightBits),
+      .Signed    (Signed)
     ) u_lerp_y (
       .a_i(x_q[(2*i)*VoxelBits +: VoxelBits]),
       .b_i(x_q[(2*i+1)*VoxelBits +: VoxelBits]),
@@ -113,7 +118,8 @@ module cube4_interp #(
 
   cube4_lerp #(
     .VoxelBits (VoxelBits),
-    .WeightBits(WeightBits)
+    .WeightBits(WeightBits),
+    .Signed    (Signed)
   ) u_lerp_z (
     .a_i(y_q[VoxelBits-1:0]),
     .b_i(y_q[2*VoxelBits-1:VoxelBits]),
