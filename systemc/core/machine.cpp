@@ -27,6 +27,18 @@ void Machine::write_voxel(int k, int x, int y, int z, uint16_t v) {
   if (tag_bits_ > 0) vol.tags[i] = static_cast<uint8_t>(v >> vol.bits);
 }
 
+void Machine::write_voxels(int k, uint64_t first, uint64_t count, const uint32_t* words, int /*nx*/, int /*ny*/) {
+  golden::Volume& vol = volumes_[static_cast<size_t>(k)];
+  const uint16_t max = static_cast<uint16_t>(vol.max_value());
+  auto word = [words](uint64_t i) { return static_cast<uint16_t>(words[i / 2] >> (16 * (i % 2))); };
+  uint16_t* data = vol.data.data() + first;
+  for (uint64_t i = 0; i < count; ++i) data[i] = word(i) & max;
+  if (tag_bits_ > 0) {
+    uint8_t* tags = vol.tags.data() + first;
+    for (uint64_t i = 0; i < count; ++i) tags[i] = static_cast<uint8_t>(word(i) >> vol.bits);
+  }
+}
+
 uint16_t Machine::read_voxel(int k, int x, int y, int z) const {
   const golden::Volume& vol = volumes_[static_cast<size_t>(k)];
   return static_cast<uint16_t>(vol.at(x, y, z) | vol.tag_at(x, y, z) << vol.bits);

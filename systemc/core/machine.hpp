@@ -37,6 +37,8 @@ class Machine final : public HostBackend {
 
   void set_volume_dims(int k, int nx, int ny, int nz) override;
   void write_voxel(int k, int x, int y, int z, uint16_t v) override;
+  // The voxel memory is golden::Volume's object order: a burst is a run.
+  void write_voxels(int k, uint64_t first, uint64_t count, const uint32_t* words, int nx, int ny) override;
   uint16_t read_voxel(int k, int x, int y, int z) const override;
   // Runs the frame to its end (the host interface's START is blocking).
   void start_frame(const golden::Registers& regs, int k) override;

@@ -22,6 +22,24 @@ struct HostBackend {
   // value}, the tag above voxel_bits, < 2^(voxel_bits + tag_bits).
   // Never while busy().
   virtual void write_voxel(int k, int x, int y, int z, uint16_t v) = 0;
+  // Voxels first .. first + count - 1 of subvolume k (object order, x
+  // fastest; dims nx, ny), two 16-bit words per 32-bit word, low half first:
+  // the VOLUME window's burst, already checked. By default write_voxel() per
+  // voxel; a backend that stores the volume in object order does better.
+  virtual void write_voxels(int k, uint64_t first, uint64_t count, const uint32_t* words, int nx, int ny) {
+    int x = static_cast<int>(first % nx), y = static_cast<int>(first / nx % ny),
+        z = static_cast<int>(first / nx / ny);
+    for (uint64_t i = 0; i < count; ++i) {
+      write_voxel(k, x, y, z, static_cast<uint16_t>(words[i / 2] >> (16 * (i % 2))));
+      if (++x == nx) {
+        x = 0;
+        if (++y == ny) {
+          y = 0;
+          ++z;
+        }
+      }
+    }
+  }
   virtual uint16_t read_voxel(int k, int x, int y, int z) const = 0;
   // Runs, or schedules, one frame of subvolume k with these register values
   // (a copy: the register file may be rewritten while the frame runs).

@@ -1,5 +1,6 @@
 #include "systemc/host/host_if.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <exception>
 #include <vector>
@@ -293,16 +294,7 @@ HostInterface::Outcome HostInterface::write_volume(uint64_t addr, const uint32_t
       return fail(ErrorCode::FieldRange, a);
   }
   commit_volume_dims(k);
-  for (unsigned i = 0; i < n; ++i) {
-    for (uint64_t h = 0; h < 2; ++h) {
-      const uint64_t v = first + 2 * uint64_t{i} + h;
-      if (v >= voxels) break;
-      const int x = static_cast<int>(v % d[0]);
-      const int y = static_cast<int>(v / d[0] % d[1]);
-      const int z = static_cast<int>(v / d[0] / d[1]);
-      backend_.write_voxel(k, x, y, z, static_cast<uint16_t>(words[i] >> (16 * h)));
-    }
-  }
+  backend_.write_voxels(k, first, std::min(voxels, first + 2 * uint64_t{n}) - first, words, d[0], d[1]);
   return {};
 }
 

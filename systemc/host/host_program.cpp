@@ -156,12 +156,26 @@ void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol
   const uint32_t dims[3] = {static_cast<uint32_t>(vol.dim[0]), static_cast<uint32_t>(vol.dim[1]),
                             static_cast<uint32_t>(vol.dim[2])};
   write_words(target, rm::kVolDim, dims, 3, delay);
-  // The voxel memory words: {tag, value}, the tag above the value's bits.
-  std::vector<uint16_t> voxels = vol.data;
-  for (size_t i = 0; i < vol.tags.size(); ++i)
-    voxels[i] = static_cast<uint16_t>(voxels[i] | uint32_t{vol.tags[i]} << vol.bits);
-  const std::vector<uint32_t> words = pack_voxels(voxels);
-  write_words(target, rm::kVolumeBase, words.data(), words.size(), delay);
+  // The voxel memory words: {tag, value}, the tag above the value's bits,
+  // two voxels a word. Packed a chunk at a time (whole bursts, so the
+  // transactions are those of one write_words call): a large volume is not
+  // copied twice on its way to the machine.
+  constexpr size_t kChunkWords = 256 * kBurstWords;
+  const size_t voxels = vol.data.size(), n = (voxels + 1) / 2;
+  const bool tagged = !vol.tags.empty();
+  auto word_of = [&](size_t v) {
+    if (v >= voxels) return uint32_t{0};
+    return tagged ? uint32_t{vol.data[v]} | uint32_t{vol.tags[v]} << vol.bits : uint32_t{vol.data[v]};
+  };
+  std::vector<uint32_t> chunk(std::min(kChunkWords, n));
+  for (size_t first = 0; first < n; first += kChunkWords) {
+    const size_t m = std::min(kChunkWords, n - first);
+    for (size_t i = 0; i < m; ++i) {
+      const size_t v = 2 * (first + i);
+      chunk[i] = word_of(v) | word_of(v + 1) << 16;
+    }
+    write_words(target, rm::kVolumeBase + 4 * first, chunk.data(), m, delay);
+  }
 }
 
 void select_subvolume_over_tlm(TlmTarget& target, int k, sc_core::sc_time& delay) {
