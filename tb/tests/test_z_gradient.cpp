@@ -1,7 +1,8 @@
 // VolumePro's z gradient (interpolated voxel differences, golden/units/
 // gradient.hpp): the renderer's slice-wide path against the per-sample unit
 // functions, its agreement with the 12-neighbourhood where the two must
-// agree, threads and skipping, and the scene key's errors.
+// agree and its difference where they must not, threads and skipping, and
+// the scene key's errors.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -127,6 +128,47 @@ TEST(ZGradient, SceneErrorsNameTheKey) {
       sphere(R"("z_gradient": "voxel_differences", "view": {"projection": "perspective", "fov": 30})"));
   EXPECT_NE(persp.find("z_gradient"), std::string::npos) << persp;
   EXPECT_NE(persp.find("perspective"), std::string::npos) << persp;
+}
+
+// The wood-grain mechanism, on a field quadratic in z (V = c z²): its exact
+// full z difference (twice the derivative, in per-voxel units) at depth z is
+// 4cz. Voxel differences interpolate D(z) = V(z+1) - V(z-1) = 4cz, linear in
+// z, so they are exact at every sample slice. The 12-neighbourhood at S = 4
+// differences samples a quarter voxel either side; trilinear samples are
+// linear within a voxel cell, so inside a cell it sees the cell's slope,
+// 2c(2n+1) for the whole difference: exact on the voxel slices and half way
+// between them, c off a quarter voxel from either. A ring per voxel slice.
+TEST(ZGradient, VoxelDifferencesAreExactOnAQuadraticFieldWhereTheTwelveNeighbourhoodSteps) {
+  constexpr int kC = 16, kNz = 16, kS = 4;
+  for (const char* method : {"voxel_differences", "abc"}) {
+    test::Setup s = test::setup(R"({"volume": {"synthetic": "constant", "size": [6, 6, 16], "value": 1},
+        "view": {"direction": [0, 0, 1], "up": [0, 1, 0]}, "supersampling": 4, "z_gradient": ")" +
+                                std::string(method) + R"(", "precision": {"gradient_shift": 0, "gradient_bits": 16}})");
+    for (int z = 0; z < kNz; ++z)
+      for (int i = 0; i < 36; ++i) s.volume.data[static_cast<size_t>(z * 36 + i)] = static_cast<uint16_t>(kC * z * z);
+    s.host = golden::program_host(s.scene, s.volume, s.meshes);
+    golden::Registers r = s.host.regs;
+    ASSERT_EQ(r.perm, (std::array<int, 3>{0, 1, 2}));
+    ASSERT_EQ(r.flip, (std::array<bool, 3>{false, false, false}));
+    ASSERT_EQ(r.supersampling, kS);
+    struct Column : golden::SampleProbe {
+      int worst = 0, checked = 0;
+      void sample(int x, int y, const golden::SliceControl& c, uint32_t, const golden::Gradient& g) override {
+        // Inside the volume, away from its first and last voxel slices.
+        if (x != 2 || y != 2 || c.z_voxel < 1 || c.z_voxel > kNz - 3) return;
+        const int exact = 4 * kC * (4 * c.z_voxel + c.k % kS) / kS;  // 4c z, z = z_voxel + (k mod S)/S
+        worst = std::max(worst, std::abs(g.z - exact));
+        ++checked;
+      }
+    } column;
+    golden::render_fixed(s.volume, r, nullptr, {}, &column);
+    EXPECT_EQ(column.checked, (kNz - 3) * kS) << method;
+    if (std::string(method) == "voxel_differences") {
+      EXPECT_EQ(column.worst, 0) << method;
+    } else {
+      EXPECT_EQ(column.worst, kC) << method;
+    }
+  }
 }
 
 using ZGradientCli = test::Cli;
