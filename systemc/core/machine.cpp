@@ -133,10 +133,6 @@ HostSession host_session(const SystemConfig& cfg, const golden::Precision& p, in
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds,
                                  const golden::PolygonFrame* polygons) {
-  if (r.perspective)
-    throw std::invalid_argument(
-        "perspective: the host interface has no perspective registers yet (docs/perspective.md); run_frame() "
-        "renders perspective registers loosely timed");
   Hosted& h = hosted(cfg, r.p, std::max({vol.dim[0], vol.dim[1], vol.dim[2]}));
   h.machine->set_progress(progress);
   TlmTarget& target = h.host->target();

@@ -115,7 +115,9 @@ constexpr uint32_t kModeCrop = 1u << 12;
 constexpr uint32_t kModeCut = 1u << 13;
 constexpr uint32_t kModeWindow = 1u << 14;
 constexpr uint32_t kModeVoxelZGradient = 1u << 15;  // golden::ZGradient::VoxelDifferences
-constexpr uint32_t kModeMask = 0x7F | kModeBlendMask | kModeCrop | kModeCut | kModeWindow | kModeVoxelZGradient;
+constexpr uint32_t kModePerspective = 1u << 16;
+constexpr uint32_t kModeMask =
+    0x7F | kModeBlendMask | kModeCrop | kModeCut | kModeWindow | kModeVoxelZGradient | kModePerspective;
 
 constexpr uint32_t kCutKeepInside = 1u << 0;
 
@@ -133,6 +135,7 @@ constexpr uint32_t mode_word(const golden::Registers& r) {
   if (r.cut_enabled) m |= kModeCut;
   if (r.window_enabled) m |= kModeWindow;
   if (r.z_gradient == golden::ZGradient::VoxelDifferences) m |= kModeVoxelZGradient;
+  if (r.perspective) m |= kModePerspective;
   return m;
 }
 constexpr void set_mode(golden::Registers& r, uint64_t v) {
@@ -148,6 +151,7 @@ constexpr void set_mode(golden::Registers& r, uint64_t v) {
   r.cut_enabled = v & kModeCut;
   r.window_enabled = v & kModeWindow;
   r.z_gradient = v & kModeVoxelZGradient ? golden::ZGradient::VoxelDifferences : golden::ZGradient::Abc;
+  r.perspective = v & kModePerspective;
 }
 
 // The classification table's address is {tag, value} (golden class_address).
@@ -271,8 +275,8 @@ inline constexpr Register kListed[] = {
 #undef CUBE4_MARGIN
 
     // ---- Mode.
-    {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(16), Sign::Unsigned, Rule::Mode,
-     "gradient … z_gradient",
+    {"MODE", 0x140, Block::Mode, Access::RW, 1, bits(17), Sign::Unsigned, Rule::Mode,
+     "gradient … perspective",
      [](const RegisterValues& v, const HardwareParams&) { return uint64_t{mode_word(v.regs)}; },
      [](RegisterValues& v, uint64_t w) { set_mode(v.regs, w); },
      "cube4_shade_unit magnitude_i … gm_specular_i, cube4_composite_ring blend_mode_i, crop_enabled_i, "
@@ -281,7 +285,15 @@ inline constexpr Register kListed[] = {
      "6 `gm_specular`, bits 9:8 `blend` (0 composite, 1 MIP, 2 MinIP; 3 is out of range), "
      "bit 12 `crop_enabled`, bit 13 `cut_enabled`, bit 14 `window_enabled` (a block of a partitioned volume), "
      "bit 15 `z_gradient` (0 the 12-neighbourhood, 1 VolumePro's interpolated voxel differences: loosely timed "
-     "TLM only so far)"},
+     "TLM only so far), bit 16 `perspective` (Cube-4's perspective projection: X_START … Y_STEP then give ray "
+     "0's position per slice; docs/perspective.md)"},
+    // Perspective: the rays' spacing per sample slice (golden Registers::ray_spacing()).
+    {"SCALE_START", 0x150, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width,
+     CUBE4_REG_FIELD(scale_start), "cube4_persp_slice.scale_start_i (not in the system yet)",
+     "perspective: the rays' spacing on the first sample slice, `dda_frac_bits` fraction (one)"},
+    {"SCALE_STEP", 0x158, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width,
+     CUBE4_REG_FIELD(scale_step), "cube4_persp_slice.scale_step_i (not in the system yet)",
+     "perspective: the spacing's growth per sample slice"},
 
     // ---- Cropping.
     {"CROP_X_LO", 0x180, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,
