@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace cube4::golden {
 namespace {
@@ -87,6 +88,14 @@ size_t rle_flits(const RleLine& line) {
   for (size_t at = 0; at + 4 <= line.size(); ++flits)
     at += (line[at] | line[at + 1] | line[at + 2] | line[at + 3]) ? 4 : 5;
   return flits;
+}
+
+SlabImage::SlabImage(int width, int beams, int lanes, std::vector<RleLine> lines)
+    : width_(width), beams_(beams), lanes_(lanes), lines_(std::move(lines)) {
+  if (lines_.size() != static_cast<size_t>(beams) * lanes)
+    throw std::logic_error("slab image: " + std::to_string(lines_.size()) + " lines for " + std::to_string(beams) +
+                           " beams of " + std::to_string(lanes) + " lanes");
+  for (size_t i = 0; i < lines_.size(); ++i) rle_decode(lines_[i], lane_width(static_cast<int>(i % lanes)));
 }
 
 void SlabImage::insert(int x, int y, const Pixel& px, const Precision& p) {

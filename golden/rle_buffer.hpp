@@ -49,6 +49,10 @@ class SlabImage {
  public:
   SlabImage() = default;
   SlabImage(int width, int beams, int lanes) : width_(width), beams_(beams), lanes_(lanes) {}
+  // An image from its beams x lanes lines, beam by beam (as line() orders
+  // them), e.g. as a bus delivered them. Throws std::logic_error unless
+  // every line holds exactly its lane's pixels.
+  SlabImage(int width, int beams, int lanes, std::vector<RleLine> lines);
   int width() const { return width_; }
   int beams() const { return beams_; }
   int lanes() const { return lanes_; }

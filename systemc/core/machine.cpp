@@ -44,10 +44,10 @@ uint16_t Machine::read_voxel(int k, int x, int y, int z) const {
   return static_cast<uint16_t>(vol.at(x, y, z) | vol.tag_at(x, y, z) << vol.bits);
 }
 
-void Machine::start_frame(const golden::Registers& regs, int k) {
+void Machine::start_frame(const golden::Registers& regs, int k, const golden::PolygonFrame* polygons) {
   error_ = nullptr;
   try {
-    last_ = run_frame(regs, volumes_[static_cast<size_t>(k)], cfg_, progress_, polygons_);
+    last_ = run_frame(regs, volumes_[static_cast<size_t>(k)], cfg_, progress_, polygons);
   } catch (...) {
     // The host interface reports a refused frame as a status code; the
     // reason is kept for the program that drives the host.
@@ -138,12 +138,7 @@ SystemResult render_through_host(const golden::Registers& r, const golden::Volum
   TlmTarget& target = h.host->target();
   sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
   program_over_tlm(target, r, vol, delay);
-  // The polygons are this frame's only, whatever START does.
-  struct ThisFrame {
-    Machine& m;
-    ~ThisFrame() { m.set_polygons(nullptr); }
-  } this_frame{*h.machine};
-  h.machine->set_polygons(polygons);
+  write_polygons_over_tlm(target, polygons, delay);
   try {
     start_frame_over_tlm(target, delay);
   } catch (const HostError&) {

@@ -26,11 +26,6 @@ class Machine final : public HostBackend {
 
   void set_config(const SystemConfig& cfg) { cfg_ = cfg; }
   void set_progress(golden::Progress p) { progress_ = std::move(p); }
-  // The polygon images of the frames START runs (Cube-5), or none: a frame
-  // input handed to the machine directly, beside the host interface (which
-  // has no windows for them yet; docs/registers.md). The frame must outlive
-  // the frames that use it.
-  void set_polygons(const golden::PolygonFrame* polygons) { polygons_ = polygons; }
   const std::optional<SystemResult>& last() const { return last_; }
   // Why the last START failed (null if it did not).
   std::exception_ptr error() const { return error_; }
@@ -40,8 +35,9 @@ class Machine final : public HostBackend {
   // The voxel memory is golden::Volume's object order: a burst is a run.
   void write_voxels(int k, uint64_t first, uint64_t count, const uint32_t* words, int nx, int ny) override;
   uint16_t read_voxel(int k, int x, int y, int z) const override;
-  // Runs the frame to its end (the host interface's START is blocking).
-  void start_frame(const golden::Registers& regs, int k) override;
+  // Runs the frame to its end (the host interface's START is blocking),
+  // with the polygon images the host loaded through the POLY_* windows.
+  void start_frame(const golden::Registers& regs, int k, const golden::PolygonFrame* polygons) override;
   // Subvolume k as the voxel memory holds it.
   const golden::Volume& volume(int k) const { return volumes_[static_cast<size_t>(k)]; }
   bool busy() const override { return false; }
@@ -56,7 +52,6 @@ class Machine final : public HostBackend {
   int tag_bits_;
   std::array<golden::Volume, regmap::kSubvolumes> volumes_;
   golden::Progress progress_;
-  const golden::PolygonFrame* polygons_ = nullptr;
   std::optional<SystemResult> last_;
   uint64_t frames_ = 0;
   std::exception_ptr error_;
@@ -66,8 +61,8 @@ class Machine final : public HostBackend {
 // through the host interface (TLM-2.0 transactions), start it, read the
 // base plane back. The result's plane is what the host read. `bus_time`
 // returns the annotated host-bus time of the whole exchange. `polygons`:
-// the frame's polygon images, handed to the machine directly
-// (Machine::set_polygons(); not over the bus, so not in its time). The host
+// the frame's polygon images (Cube-5), written through the POLY_* windows
+// (write_polygons_over_tlm), so their transfer is in the bus time. The host
 // interface and machine are built once per process (SystemC elaborates
 // once), for the first call's p and precision.
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 
+#include "golden/polygon_frame.hpp"
 #include "golden/registers.hpp"
 
 namespace cube4::sysc {
@@ -42,10 +43,12 @@ struct HostBackend {
   }
   virtual uint16_t read_voxel(int k, int x, int y, int z) const = 0;
   // Runs, or schedules, one frame of subvolume k with these register values
-  // (a copy: the register file may be rewritten while the frame runs).
+  // (a copy: the register file may be rewritten while the frame runs) and
+  // these polygon images (Cube-5; nullptr: none), which live only for the
+  // call: a backend that needs them later keeps a copy.
   // Never while busy(). May throw std::exception to refuse the frame
   // (GENERIC_ERROR).
-  virtual void start_frame(const golden::Registers& regs, int k) = 0;
+  virtual void start_frame(const golden::Registers& regs, int k, const golden::PolygonFrame* polygons) = 0;
   virtual bool busy() const = 0;
   virtual uint64_t frames_done() const = 0;
   virtual uint64_t last_frame_cycles() const = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <exception>
+#include <optional>
 #include <vector>
 
 namespace cube4::sysc {
@@ -36,6 +37,10 @@ uint64_t region_base(Region r) {
     case Region::Base: return rm::kBaseBase;
     case Region::Volume: return rm::kVolumeBase;
     case Region::Slab: return rm::kSlabBase;
+    case Region::PolyFront: return rm::kPolyFrontBase;
+    case Region::PolyBack: return rm::kPolyBackBase;
+    case Region::PolyZ: return rm::kPolyZBase;
+    case Region::PolySlab: return rm::kPolySlabBase;
     default: return 0;
   }
 }
@@ -106,6 +111,10 @@ uint64_t HostInterface::mapped_bytes(Region r) const {
     case Region::Base: return 8 * (2 * n) * (2 * n);
     case Region::Volume:
     case Region::Slab: return (2 * n * n * n + 3) / 4 * 4;
+    case Region::PolyFront:
+    case Region::PolyBack: return 8 * (2 * n) * (2 * n);
+    case Region::PolyZ: return 4 * (2 * n) * (2 * n);
+    case Region::PolySlab: return rm::kPolySlabStride * rm::kMaxSupersampling * n;
     case Region::None: return 0;
     default: return regs_.table_bytes(r);
   }
@@ -148,6 +157,17 @@ HostInterface::Outcome HostInterface::execute(tlm::tlm_generic_payload& t, bool 
       if (debug && write) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
       o = access_slab(write, addr, words.data(), n);
       break;
+    case Region::PolyFront:
+    case Region::PolyBack:
+    case Region::PolyZ:
+    case Region::PolySlab:
+      if (!write) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::WriteOnly, addr};
+      if (debug) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
+      // The composite buffer is the running frame's.
+      if (backend_.busy()) return {status_of(ErrorCode::Busy), ErrorCode::Busy, addr};
+      if (const auto f = polygons_.write(addr, words.data(), n, regs_.poly_size(), config_.hw.precision))
+        return {status_of(f->code), f->code, f->addr};
+      break;
     case Region::Base:
       if (write) return {tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCode::ReadOnly, addr};
       o = read_base_plane(addr, words.data(), n);
@@ -178,6 +198,8 @@ HostInterface::Outcome HostInterface::access_registers(bool write, uint64_t addr
   if (!write) return {};
   if (addr == rm::kCtrl) return write_ctrl(words[0]);  // alone: checked above
   for (unsigned i = 0; i < n; ++i) regs_.write(addr + 4 * uint64_t{i}, words[i]);
+  // Writing the polygon images' size starts them blank.
+  if (addr < rm::kPolySize + 12 && addr + 4 * uint64_t{n} > rm::kPolySize) polygons_.clear();
   return {};
 }
 
@@ -225,6 +247,7 @@ HostInterface::Outcome HostInterface::write_ctrl(uint32_t v) {
   }
   if (v & rm::kCtrlReset) {
     regs_.reset();
+    polygons_.clear();
     told_dims_ = {};  // the system model hears the volumes' dims again
     started_ = false;        // DONE waits for the next frame
   }
@@ -264,13 +287,22 @@ HostInterface::Outcome HostInterface::start_frame() {
   if (const rm::Register* wide = regs_.wide_value_out_of_range())
     return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, wide->addr};
 
+  std::optional<golden::PolygonFrame> polygons;
+  if (regs_.poly_enable()) {
+    polygons.emplace();
+    if (const auto f = polygons_.frame(regs_.poly_size(), static_cast<int>(w), static_cast<int>(h), r.sample_slices(),
+                                       r.dim[0], r.dim[1], config_.hw.pipelines, *polygons))
+      return {status_of(f->code), f->code, f->addr};
+  }
+
   const uint64_t before = backend_.frames_done();
   try {
     if (commit_volume_dims(k) != ErrorCode::None) return fail(ErrorCode::VolumeDimsUnset);
-    backend_.start_frame(r, k);
+    backend_.start_frame(r, k, polygons ? &*polygons : nullptr);
   } catch (const std::exception&) {
     return fail(ErrorCode::BackendFailure);
   }
+  if (polygons) polygons_.clear();  // the frame has consumed them
   started_ = true;
   done_target_ = before + 1;
   return {};

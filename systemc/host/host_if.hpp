@@ -25,6 +25,7 @@
 
 #include "golden/registers.hpp"
 #include "systemc/host/host_backend.hpp"
+#include "systemc/host/polygon_buffer.hpp"
 #include "systemc/host/register_file.hpp"
 
 namespace cube4::sysc {
@@ -79,6 +80,7 @@ class HostInterface : public sc_core::sc_module {
   HostConfig config_;
   HostBackend& backend_;
   RegisterFile regs_;
+  PolygonBuffer polygons_;  // the POLY_* windows, until START consumes them
   // What the backend was last given, per subvolume.
   std::array<std::array<int, 3>, regmap::kSubvolumes> told_dims_{};
   bool error_ = false;

@@ -1,8 +1,11 @@
 #include "systemc/host/host_program.hpp"
 
+#include "systemc/host/polygon_buffer.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "systemc/host/register_map.hpp"
@@ -80,12 +83,13 @@ void check_table(size_t size, size_t expected, bool used, const char* field) {
 }
 
 // The frame's writable registers' words (not the voxel memory's: VOL_DIM,
-// VOL_INDEX, VOL_SELECT, the slab), one block per run of consecutive addresses.
+// VOL_INDEX, VOL_SELECT, the slab; not the polygon images': POLY_*), one
+// block per run of consecutive addresses.
 std::vector<RegisterBlock> writable_blocks(const rm::RegisterValues& v) {
   const HardwareParams no_hardware;  // writable registers' getters read only the values
   std::vector<RegisterBlock> blocks;
   for (const rm::Register& reg : rm::kRegisters) {
-    if (!reg.set || reg.block == rm::Block::Volume) continue;
+    if (!rm::carries_frame_field(reg)) continue;
     if (blocks.empty() || blocks.back().addr + 4 * blocks.back().words.size() != reg.addr)
       blocks.push_back({reg.addr, {}});
     const uint64_t value = reg.get(v, no_hardware);
@@ -176,6 +180,33 @@ void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol
     }
     write_words(target, rm::kVolumeBase + 4 * first, chunk.data(), m, delay);
   }
+}
+
+void write_polygons_over_tlm(TlmTarget& target, const golden::PolygonFrame* f, sc_core::sc_time& delay) {
+  if (!f) return write_word(target, rm::kPolyEnable, 0, delay);
+  const uint32_t size[3] = {static_cast<uint32_t>(f->width), static_cast<uint32_t>(f->height),
+                            static_cast<uint32_t>(f->slabs.size())};
+  write_words(target, rm::kPolySize, size, 3, delay);
+  const size_t pixels = static_cast<size_t>(f->width) * f->height;
+  check(f->front.size() == pixels && f->back.size() == pixels && f->z.size() == pixels,
+        "polygon images of " + std::to_string(f->front.size()) + ", " + std::to_string(f->back.size()) + " and " +
+            std::to_string(f->z.size()) + " pixels for a " + std::to_string(f->width) + " x " +
+            std::to_string(f->height) + " base plane");
+  for (const auto& [image, base] : {std::pair{&f->front, rm::kPolyFrontBase}, std::pair{&f->back, rm::kPolyBackBase}}) {
+    std::vector<uint32_t> words(2 * pixels);
+    for (size_t i = 0; i < pixels; ++i) {
+      const golden::Pixel& px = (*image)[i];
+      words[2 * i] = uint32_t{px.r} | uint32_t{px.g} << 16;
+      words[2 * i + 1] = uint32_t{px.b} | uint32_t{px.a} << 16;
+    }
+    write_words(target, base, words.data(), words.size(), delay);
+  }
+  write_words(target, rm::kPolyZBase, f->z.data(), pixels, delay);
+  for (size_t k = 0; k < f->slabs.size(); ++k) {
+    const std::vector<uint32_t> stream = encode_slab_stream(f->slabs[k]);
+    if (!stream.empty()) write_words(target, rm::kPolySlabBase + k * rm::kPolySlabStride, stream.data(), stream.size(), delay);
+  }
+  write_word(target, rm::kPolyEnable, 1, delay);
 }
 
 void select_subvolume_over_tlm(TlmTarget& target, int k, sc_core::sc_time& delay) {

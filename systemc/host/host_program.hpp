@@ -20,6 +20,7 @@
 #include <systemc>
 #include <vector>
 
+#include "golden/polygon_frame.hpp"
 #include "golden/registers.hpp"
 #include "golden/renderers.hpp"
 #include "golden/volume.hpp"
@@ -86,6 +87,12 @@ void write_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& ori
                          const std::vector<uint16_t>& voxels, sc_core::sc_time& delay);
 std::vector<uint16_t> read_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& origin,
                                          const std::array<int, 3>& size, sc_core::sc_time& delay);
+
+// The frame's polygon images (Cube-5) through the POLY_* windows, then
+// POLY_ENABLE; with none, POLY_ENABLE = 0. Every image is written, blank or
+// not (the host does not know what the composite buffer held); a slab image
+// without fragments is not (the buffer starts each frame without).
+void write_polygons_over_tlm(TlmTarget& target, const golden::PolygonFrame* polygons, sc_core::sc_time& delay);
 
 void start_frame_over_tlm(TlmTarget& target, sc_core::sc_time& delay);
 uint32_t read_status_over_tlm(TlmTarget& target, sc_core::sc_time& delay);

@@ -47,6 +47,8 @@ class RegisterFile {
   int vol_select() const { return values_.vol_select; }
   std::array<int, 3> slab_origin() const { return values_.slab_origin; }
   std::array<int, 3> slab_size() const { return values_.slab_size; }
+  bool poly_enable() const { return values_.poly_enable; }
+  std::array<int, 3> poly_size() const { return values_.poly_size; }
   const HardwareParams& hardware() const { return hw_; }
 
  private:

@@ -86,7 +86,7 @@ constexpr Section kSections[] = {
     {Block::Control, "Control and status"}, {Block::Identification, "Identification, read-only"},
     {Block::Precision, "Precision, read-only"}, {Block::View, "View and DDA"}, {Block::Mode, "Mode"},
     {Block::Cropping, "Cropping"}, {Block::Window, "Block window"}, {Block::CutPlane, "Cut plane"}, {Block::Shading, "Shading"},
-    {Block::Volume, "Volume"},
+    {Block::Volume, "Volume"}, {Block::Polygons, "Polygons (Cube-5)"},
 };
 
 }  // namespace
@@ -165,6 +165,19 @@ std::string describe_address(uint64_t a) {
     }
     case Region::Volume: name = indexed("VOLUME", (a - kVolumeBase) / 2, " (voxel index)"); break;
     case Region::Slab: name = indexed("SLAB", (a - kSlabBase) / 2, " (voxel index in the slab)"); break;
+    case Region::PolyFront:
+    case Region::PolyBack: {
+      const bool front = region_of(a) == Region::PolyFront;
+      const uint64_t off = a - (front ? kPolyFrontBase : kPolyBackBase);
+      name = indexed(front ? "POLY_FRONT" : "POLY_BACK", off / 8, (off & 4) ? ".ba" : ".rg");
+      break;
+    }
+    case Region::PolyZ: name = indexed("POLY_Z", (a - kPolyZBase) / 4, ""); break;
+    case Region::PolySlab: {
+      const uint64_t off = a - kPolySlabBase;
+      name = indexed("POLY_SLAB", off / kPolySlabStride, (" word " + std::to_string(off % kPolySlabStride / 4)).c_str());
+      break;
+    }
     case Region::None: name = "unmapped"; break;
   }
   return name + " (" + hex(a) + ")";

@@ -49,11 +49,16 @@ struct RegisterValues {
   std::array<std::array<int, 3>, kSubvolumes> vol_dims{};
   int vol_index = 0, vol_select = 0;
   std::array<int, 3> slab_origin{0, 0, 0}, slab_size{0, 0, 0};
+  // The polygon images (Cube-5) the next START composites: whether it does,
+  // and the base plane's width and height and the sample slices they were
+  // made for (START checks them against the frame's).
+  bool poly_enable = false;
+  std::array<int, 3> poly_size{0, 0, 0};
   const std::array<int, 3>& vol_dim() const { return vol_dims[static_cast<size_t>(vol_index)]; }
   std::array<int, 3>& vol_dim() { return vol_dims[static_cast<size_t>(vol_index)]; }
 };
 
-enum class Block { Control, Identification, Precision, View, Mode, Cropping, Window, CutPlane, Shading, Volume };
+enum class Block { Control, Identification, Precision, View, Mode, Cropping, Window, CutPlane, Shading, Volume, Polygons };
 enum class Access { R, W, RW };
 // Symmetric: ±(2^(width-1)-1), as golden saturates.
 enum class Sign { Unsigned, Signed, Symmetric };
@@ -398,6 +403,20 @@ inline constexpr Register kListed[] = {
     CUBE4_SLAB("SLAB_NY", 0x264, slab_size, 1, ""),
     CUBE4_SLAB("SLAB_NZ", 0x268, slab_size, 2, ""),
 #undef CUBE4_SLAB
+
+    // ---- Polygons (Cube-5): what the POLY_* windows hold, for the next START.
+    {"POLY_ENABLE", 0x26C, Block::Polygons, Access::RW, 1, bits(1), Sign::Unsigned, Rule::Width, "— (frame input)",
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.poly_enable); },
+     [](RegisterValues& v, uint64_t w) { v.poly_enable = w != 0; }, "— (composite buffer)",
+     "START composites the polygon images of the POLY_* windows with the volume; they are consumed by it"},
+#define CUBE4_POLY(reg, addr, i, meaning)                                                                         \
+    {reg, addr, Block::Polygons, Access::RW, 1, bits(16), Sign::Unsigned, Rule::Width, "— (golden::PolygonFrame)", \
+     [](const RegisterValues& v, const HardwareParams&) { return static_cast<uint64_t>(v.poly_size[i]); },         \
+     [](RegisterValues& v, uint64_t w) { v.poly_size[i] = static_cast<int>(w); }, "— (composite buffer)", meaning}
+    CUBE4_POLY("POLY_WIDTH", 0x270, 0, "the polygon images' width: the frame's BASE_WIDTH, margins included"),
+    CUBE4_POLY("POLY_HEIGHT", 0x274, 1, "their height (BASE_HEIGHT); writing any of the three clears the images"),
+    CUBE4_POLY("POLY_SLICES", 0x278, 2, "slab images: the frame's sample slices (DIM_Z · SUPERSAMPLING)"),
+#undef CUBE4_POLY
 };
 
 #undef CUBE4_REG_FIELD
@@ -442,6 +461,13 @@ constexpr std::array<Register, kRegisterCount> sorted_registers(std::index_seque
 // Every register, by address.
 inline constexpr std::array<Register, detail::kRegisterCount> kRegisters =
     detail::sorted_registers(std::make_index_sequence<golden::kPrecisionFieldCount>{});
+
+// Whether a register carries a writable field of golden::Registers: not the
+// voxel memory's (VOL_*, SLAB_*) nor the polygon images' (POLY_*), which the
+// host writes beside a frame's registers.
+constexpr bool carries_frame_field(const Register& r) {
+  return r.set && r.block != Block::Volume && r.block != Block::Polygons;
+}
 
 // The register named `name` (for 64-bit ones also NAME_LO and NAME_HI), or nullptr.
 constexpr const Register* find_register(std::string_view name) {
@@ -530,6 +556,8 @@ constexpr uint64_t kVolDim = address_of("VOL_DIM_X");      // x, y, z
 constexpr uint64_t kVolIndex = address_of("VOL_INDEX");
 constexpr uint64_t kVolSelect = address_of("VOL_SELECT");
 constexpr uint64_t kSlab = address_of("SLAB_X0");          // x0, y0, z0, nx, ny, nz
+constexpr uint64_t kPolyEnable = address_of("POLY_ENABLE");
+constexpr uint64_t kPolySize = address_of("POLY_WIDTH");   // width, height, slices
 
 constexpr uint64_t kRegisterSpace = 0x1000;   // everything above is a window
 static_assert(kRegisters.back().addr + 4 * kRegisters.back().words <= kRegisterSpace);
@@ -553,8 +581,21 @@ constexpr uint64_t kVolumeBase = 0x1'0000'0000;  // two voxels per word, x faste
 constexpr uint64_t kVolumeSize = 0x1'0000'0000;
 constexpr uint64_t kSlabBase = 0x2'0000'0000;    // the slab's voxels, two per word, x fastest
 constexpr uint64_t kSlabSize = 0x1'0000'0000;
+// Polygon images (Cube-5), base-plane pixels row-major, POLY_WIDTH wide:
+constexpr uint64_t kPolyFrontBase = 0x1000'0000;  // 8 bytes per pixel, as BASE_PLANE: the rays' starting values
+constexpr uint64_t kPolyBackBase = 0x1800'0000;   // the same: composited behind each ray
+constexpr uint64_t kPolyPixelSize = 0x0800'0000;
+constexpr uint64_t kPolyZBase = 0x2000'0000;      // 1 word per pixel: the Z test's depth
+constexpr uint64_t kPolyZSize = 0x0400'0000;
+// One run-length slab image per sample slice k at kPolySlabBase + k·kPolySlabStride:
+// its lines, beam by beam and lane by lane, each a word holding the line's
+// 16-bit word count and then those words, two a word, low half first.
+constexpr uint64_t kPolySlabBase = 0x100'0000'0000;
+constexpr uint64_t kPolySlabStride = 0x200'0000;  // 32 MiB
+constexpr uint64_t kPolySlabSize = kPolySlabStride * kMaxSupersampling * kMaxDimLimit;
 
-enum class Region { None, Registers, Class, GmLut, Diffuse, Specular, Material, Base, Volume, Slab };
+enum class Region { None, Registers, Class, GmLut, Diffuse, Specular, Material, Base, Volume, Slab, PolyFront, PolyBack,
+                    PolyZ, PolySlab };
 
 constexpr Region region_of(uint64_t a) {
   if (a < kRegisterSpace) return Region::Registers;
@@ -566,6 +607,10 @@ constexpr Region region_of(uint64_t a) {
   if (a >= kBaseBase && a - kBaseBase < kBaseSize) return Region::Base;
   if (a >= kVolumeBase && a - kVolumeBase < kVolumeSize) return Region::Volume;
   if (a >= kSlabBase && a - kSlabBase < kSlabSize) return Region::Slab;
+  if (a >= kPolyFrontBase && a - kPolyFrontBase < kPolyPixelSize) return Region::PolyFront;
+  if (a >= kPolyBackBase && a - kPolyBackBase < kPolyPixelSize) return Region::PolyBack;
+  if (a >= kPolyZBase && a - kPolyZBase < kPolyZSize) return Region::PolyZ;
+  if (a >= kPolySlabBase && a - kPolySlabBase < kPolySlabSize) return Region::PolySlab;
   return Region::None;
 }
 
@@ -610,6 +655,8 @@ enum class ErrorCode : uint32_t {
   BackendFailure = 16,    // GENERIC_ERROR: the system model refused the frame
   SlabOutOfVolume = 17,   // GENERIC_ERROR: slab window access with an empty slab or one past its subvolume
   VoxelMemoryFull = 18,   // GENERIC_ERROR: VOL_DIM write past ID_VOXEL_MEMORY with the other subvolumes
+  PolygonSize = 19,       // GENERIC_ERROR: polygon image access past POLY_WIDTH x POLY_HEIGHT or POLY_SLICES, or START with them not the frame's
+  PolygonImage = 20,      // GENERIC_ERROR at START: a slab image whose lines do not hold the beam's pixels (ERROR_ADDR: the line's first word)
 };
 
 constexpr const char* error_name(ErrorCode e) {
@@ -633,6 +680,8 @@ constexpr const char* error_name(ErrorCode e) {
     case ErrorCode::BackendFailure: return "backend failure";
     case ErrorCode::SlabOutOfVolume: return "slab outside its subvolume";
     case ErrorCode::VoxelMemoryFull: return "voxel memory full";
+    case ErrorCode::PolygonSize: return "polygon images not the frame's size";
+    case ErrorCode::PolygonImage: return "malformed slab image";
   }
   return "unknown";
 }

@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "golden/host_driver.hpp"
+#include "golden/mesh.hpp"
+#include "golden/polygons.hpp"
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
@@ -51,6 +53,7 @@ class TestBackend : public HostBackend {
   sc_time frame_time = SC_ZERO_TIME;
   uint64_t done = 0, cycles = 0;
   golden::BasePlane plane;
+  std::vector<std::optional<golden::PolygonFrame>> polygons;  // each frame's, as START handed them
   bool render = false;  // start_frame renders with golden::render_fixed
   bool refuse = false;  // start_frame throws
 
@@ -72,10 +75,11 @@ class TestBackend : public HostBackend {
     const golden::Volume& vol = volumes.at(static_cast<size_t>(k));
     return vol.data.at(vol.index(x, y, z));
   }
-  void start_frame(const golden::Registers& regs, int k) override {
+  void start_frame(const golden::Registers& regs, int k, const golden::PolygonFrame* poly) override {
     if (refuse) throw std::runtime_error("refused");
     frames.push_back(regs);
     rendered.push_back(k);
+    polygons.push_back(poly ? std::optional<golden::PolygonFrame>(*poly) : std::nullopt);
     if (render) {
       golden::Volume& vol = volumes.at(static_cast<size_t>(k));
       vol.bits = regs.p.voxel_bits;
@@ -750,6 +754,209 @@ TEST(HostInterface, FramesRenderedFromDecodedRegistersEqualTheGoldenBasePlane) {
     EXPECT_GT(alpha, 0) << s.name << ": an empty image would prove little";
   }
   e.backend.render = false;
+}
+
+// ---- Polygon images (Cube-5) ---------------------------------------------------------
+
+namespace {
+
+// A translucent box and sphere and an opaque box around a 24³ sphere, rasterised for the
+// interface's four pipelines: margins, blank and covered pixels, Z, and
+// slab images with runs and pixels in every lane.
+struct PolygonSetup {
+  golden::Volume volume;
+  golden::HostProgram host;
+  golden::PolygonFrame frame;
+};
+
+PolygonSetup polygon_setup() {
+  const golden::Scene s = golden::parse_scene(R"({
+    "volume": {"synthetic": "sphere", "size": [24, 24, 24]},
+    "pipelines": 4,
+    "view": {"rotate": [20, 30, 0]},
+    "polygons": [
+      {"shape": "box", "size": [60, 10, 10], "transform": {"translate": [12, 12, 12]}, "color": [1, 0.5, 0.2], "opacity": 0.4},
+      {"shape": "box", "size": [6, 6, 30], "transform": {"translate": [12, 4, 12]}, "color": [0.2, 0.8, 0.2]},
+      {"shape": "sphere", "radius": 5, "transform": {"translate": [9, 15, 12]}, "color": [0.9, 0.9, 0.2], "opacity": 0.6}
+    ]})", "polygons.json");
+  PolygonSetup r;
+  r.volume = golden::load_volume(s.volume, s.precision.voxel_bits, ".");
+  const std::vector<golden::Mesh> meshes = golden::load_meshes(s, ".");
+  r.host = golden::program_host(s, r.volume, meshes);
+  r.frame = golden::rasterise_polygons(s, meshes, r.host);
+  return r;
+}
+
+void expect_frames_equal(const golden::PolygonFrame& want, const golden::PolygonFrame& got) {
+  ASSERT_EQ(got.width, want.width);
+  ASSERT_EQ(got.height, want.height);
+  const auto same_pixel = [](const golden::Pixel& a, const golden::Pixel& b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
+  };
+  expect_table_equal(want.front, got.front, same_pixel, "front");
+  expect_table_equal(want.back, got.back, same_pixel, "back");
+  expect_table_equal(want.z, got.z, [](uint32_t a, uint32_t b) { return a == b; }, "z");
+  ASSERT_EQ(got.slabs.size(), want.slabs.size());
+  for (size_t k = 0; k < want.slabs.size(); ++k) {
+    const golden::SlabImage &w = want.slabs[k], &g = got.slabs[k];
+    ASSERT_EQ(g.empty(), w.empty()) << "slab " << k;
+    if (w.empty()) continue;
+    ASSERT_EQ(g.width(), w.width()) << "slab " << k;
+    ASSERT_EQ(g.beams(), w.beams()) << "slab " << k;
+    ASSERT_EQ(g.lanes(), w.lanes()) << "slab " << k;
+    for (int y = 0; y < w.beams(); ++y)
+      for (int l = 0; l < w.lanes(); ++l) ASSERT_EQ(g.line(y, l), w.line(y, l)) << "slab " << k << " beam " << y << " lane " << l;
+  }
+}
+
+void start_polygon_frame(Env& e, const PolygonSetup& s, sc_time& delay) {
+  program_over_tlm(e.host.target(), s.host.regs, s.volume, delay);
+  write_polygons_over_tlm(e.host.target(), &s.frame, delay);
+  start_frame_over_tlm(e.host.target(), delay);
+}
+
+}  // namespace
+
+TEST(HostInterface, PolygonImagesReachTheFrameAsWrittenAndAreConsumedByIt) {
+  Env& e = env();
+  fresh(e.host, e.backend);
+  const PolygonSetup s = polygon_setup();
+  size_t slabs_with_fragments = 0;
+  for (const golden::SlabImage& slab : s.frame.slabs) slabs_with_fragments += !slab.empty();
+  ASSERT_GT(slabs_with_fragments, 0u) << "a frame without slab images would prove little";
+  // Lanes that differ, so that a decoder mixing them up shows.
+  bool lanes_differ = false;
+  for (const golden::SlabImage& slab : s.frame.slabs)
+    for (int y = 0; !slab.empty() && y < slab.beams(); ++y) lanes_differ |= slab.line(y, 0) != slab.line(y, 1);
+  ASSERT_TRUE(lanes_differ);
+  ASSERT_GT(s.frame.counts.opaque, 0u);
+  ASSERT_GT(s.host.regs.margin_lo[0] + s.host.regs.margin_hi[0] + s.host.regs.margin_lo[1] + s.host.regs.margin_hi[1], 0)
+      << "the boxes should reach past the volume's rays";
+
+  sc_time delay = SC_ZERO_TIME;
+  start_polygon_frame(e, s, delay);
+  ASSERT_EQ(e.backend.polygons.size(), 1u);
+  ASSERT_TRUE(e.backend.polygons[0].has_value());
+  expect_frames_equal(s.frame, *e.backend.polygons[0]);
+
+  // START consumed them: the next frame (POLY_ENABLE still set) gets blank images.
+  start_frame_over_tlm(e.host.target(), delay);
+  ASSERT_EQ(e.backend.polygons.size(), 2u);
+  ASSERT_TRUE(e.backend.polygons[1].has_value());
+  golden::PolygonFrame blank;
+  blank.width = s.frame.width;
+  blank.height = s.frame.height;
+  blank.front.resize(s.frame.front.size());
+  blank.back.resize(s.frame.back.size());
+  blank.z.assign(s.frame.z.size(), golden::kZNone);
+  blank.slabs.resize(s.frame.slabs.size());
+  expect_frames_equal(blank, *e.backend.polygons[1]);
+
+  // Without polygons the host clears POLY_ENABLE and the frame gets none.
+  write_polygons_over_tlm(e.host.target(), nullptr, delay);
+  start_frame_over_tlm(e.host.target(), delay);
+  ASSERT_EQ(e.backend.polygons.size(), 3u);
+  EXPECT_FALSE(e.backend.polygons[2].has_value());
+  fresh(e.host, e.backend);
+}
+
+TEST(HostInterface, PolygonWindowsRefuseWhatTheFrameCannotTake) {
+  Env& e = env();
+  const PolygonSetup s = polygon_setup();
+  const int w = s.frame.width, h = s.frame.height, slices = static_cast<int>(s.frame.slabs.size());
+  auto last_error = [&e] {
+    return std::pair{static_cast<ErrorCode>(read(e.host, rm::kLastError)),
+                     read(e.host, rm::kErrorAddrLo) | uint64_t{read(e.host, rm::kErrorAddrHi)} << 32};
+  };
+  auto sized = [&](int width, int height, int k) {
+    fresh(e.host, e.backend);
+    sc_time delay = SC_ZERO_TIME;
+    program_over_tlm(e.host.target(), s.host.regs, s.volume, delay);
+    const uint32_t size[3] = {static_cast<uint32_t>(width), static_cast<uint32_t>(height), static_cast<uint32_t>(k)};
+    write_words(e.host.target(), rm::kPolySize, size, 3, delay);
+    write_word(e.host.target(), rm::kPolyEnable, 1, delay);
+  };
+  const uint64_t pixels = uint64_t(w) * h;
+
+  // Past the images' size, in each window.
+  sized(w, h, slices);
+  EXPECT_EQ(write(e.host, rm::kPolyZBase + 4 * pixels, {0}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(last_error(), std::pair(ErrorCode::PolygonSize, rm::kPolyZBase + 4 * pixels));
+  EXPECT_EQ(write(e.host, rm::kPolyFrontBase + 8 * pixels - 4, {0, 0}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(last_error(), std::pair(ErrorCode::PolygonSize, rm::kPolyFrontBase + 8 * pixels));
+  const uint64_t past_slices = rm::kPolySlabBase + uint64_t(slices) * rm::kPolySlabStride;
+  EXPECT_EQ(write(e.host, past_slices, {0}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(last_error(), std::pair(ErrorCode::PolygonSize, past_slices));
+  // A value wider than its field: Z past kZNone. (A colour channel past
+  // alpha_bits is refused too, but at this hardware's 16 bits every
+  // 16-bit half fits.)
+  EXPECT_EQ(write(e.host, rm::kPolyZBase + 4, {golden::kZNone + 1}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(last_error(), std::pair(ErrorCode::FieldRange, rm::kPolyZBase + 4));
+  // Write-only, and not while a frame runs.
+  EXPECT_EQ(transact(e.host, tlm::TLM_READ_COMMAND, rm::kPolyZBase, {0}).status, tlm::TLM_COMMAND_ERROR_RESPONSE);
+  EXPECT_EQ(last_error().first, ErrorCode::WriteOnly);
+  e.backend.is_busy = true;
+  EXPECT_EQ(write(e.host, rm::kPolyZBase, {0}), tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(last_error().first, ErrorCode::Busy);
+  e.backend.is_busy = false;
+
+  // START with images of another size than the frame's: refused, no frame.
+  for (const auto& [size, reg] : {std::pair{std::array{w + 1, h, slices}, rm::kPolySize},
+                                  std::pair{std::array{w, h - 1, slices}, rm::kPolySize + 4},
+                                  std::pair{std::array{w, h, slices + 1}, rm::kPolySize + 8}}) {
+    sized(size[0], size[1], size[2]);
+    EXPECT_EQ(transact(e.host, tlm::TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}).status,
+              tlm::TLM_GENERIC_ERROR_RESPONSE);
+    EXPECT_EQ(last_error(), std::pair(ErrorCode::PolygonSize, reg));
+    EXPECT_TRUE(e.backend.frames.empty());
+  }
+
+  // Malformed slab lines: each refuses START naming the first word of the line at fault.
+  const golden::SlabImage* slab = nullptr;
+  size_t k = 0;
+  for (; k < s.frame.slabs.size() && !slab; ++k)
+    if (!s.frame.slabs[k].empty()) slab = &s.frame.slabs[k];
+  ASSERT_NE(slab, nullptr);
+  --k;
+  const std::vector<uint32_t> good = encode_slab_stream(*slab);
+  const uint64_t base = rm::kPolySlabBase + k * rm::kPolySlabStride;
+  struct Bad {
+    const char* what;
+    std::vector<uint32_t> stream;
+    uint64_t addr;
+  };
+  std::vector<Bad> bad;
+  {
+    std::vector<uint32_t> short_line = good;  // the first line claims one pixel flit less
+    short_line[0] -= 4;
+    bad.push_back({"a line without its last pixel", short_line, base});
+    std::vector<uint32_t> truncated(good.begin(), good.end() - 1);
+    size_t at = 0, last = 0;
+    while (at < truncated.size()) last = at, at += 1 + (truncated[at] + 1) / 2;
+    bad.push_back({"a stream ending inside its last line", truncated, base + 4 * last});
+    std::vector<uint32_t> extra = good;
+    extra.push_back(0);
+    bad.push_back({"a word past the last line", extra, base + 4 * good.size()});
+  }
+  for (const Bad& b : bad) {
+    SCOPED_TRACE(b.what);
+    sized(w, h, slices);
+    sc_time delay = SC_ZERO_TIME;
+    write_words(e.host.target(), base, b.stream.data(), b.stream.size(), delay);
+    EXPECT_EQ(transact(e.host, tlm::TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}).status,
+              tlm::TLM_GENERIC_ERROR_RESPONSE);
+    EXPECT_EQ(last_error(), std::pair(ErrorCode::PolygonImage, b.addr));
+    EXPECT_TRUE(e.backend.frames.empty());
+  }
+  // The same stream as encoded is taken.
+  sized(w, h, slices);
+  sc_time delay = SC_ZERO_TIME;
+  write_words(e.host.target(), base, good.data(), good.size(), delay);
+  start_frame_over_tlm(e.host.target(), delay);
+  ASSERT_EQ(e.backend.polygons.size(), 1u);
+  ASSERT_TRUE(e.backend.polygons[0].has_value());
+  EXPECT_EQ(e.backend.polygons[0]->slabs[k].line(0, 0), slab->line(0, 0));
+  fresh(e.host, e.backend);
 }
 
 // ---- Errors ---------------------------------------------------------------------------

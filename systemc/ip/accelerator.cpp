@@ -18,8 +18,8 @@ class Accelerator::Backend final : public HostBackend {
   void set_volume_dims(int k, int nx, int ny, int nz) override { machine_.set_volume_dims(k, nx, ny, nz); }
   void write_voxel(int k, int x, int y, int z, uint16_t v) override { machine_.write_voxel(k, x, y, z, v); }
   uint16_t read_voxel(int k, int x, int y, int z) const override { return machine_.read_voxel(k, x, y, z); }
-  void start_frame(const golden::Registers& regs, int k) override {
-    machine_.start_frame(regs, k);  // throws to refuse the frame: nothing changes then
+  void start_frame(const golden::Registers& regs, int k, const golden::PolygonFrame* polygons) override {
+    machine_.start_frame(regs, k, polygons);  // throws to refuse the frame: nothing changes then
     remaining_ = machine_.last()->frame_cycles;
     started_ = true;
   }

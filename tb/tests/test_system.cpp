@@ -443,7 +443,7 @@ TEST(System, RegistersAtTheirLimitsThroughTheHostInterface) {
   for (const rm::Register& reg : rm::kRegisters) {
     const std::optional<rm::Limits> l = rm::limits(reg, hw);
     // Narrow fields only; DIM and SUPERSAMPLING shape the frame, not a datapath field.
-    if (!reg.set || reg.block == rm::Block::Volume || reg.rule != rm::Rule::Width || l->lo == INT64_MIN ||
+    if (!rm::carries_frame_field(reg) || reg.rule != rm::Rule::Width || l->lo == INT64_MIN ||
         (reg.words == 1 && reg.width.of(hw.precision) >= 32))
       continue;
     // A window register bites only with the window on (the other bounds
