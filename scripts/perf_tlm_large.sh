@@ -3,8 +3,9 @@
 # (the goal: within 1.2x in time and in memory at every size): whole
 # `cube4 render` processes on a synthetic sphere, --model fixed and
 # --model tlm, one thread each, wall time and peak resident memory from
-# /usr/bin/time. The TLM run loads the volume through the host interface
-# (TLM-2.0 writes into the machine's voxel memory) and renders from there.
+# /usr/bin/time. The TLM run programs the frame through the host interface,
+# the volume mapped into voxel memory in place (HostInterface::map_volume,
+# the bus time of its bursts annotated), and renders from there.
 # Written to the "tlm-large" section of docs/performance.md.
 #   scripts/perf_tlm_large.sh [size ...]     (default: 512 1024; CUBE4_BUILD: the build folder)
 set -euo pipefail

@@ -560,7 +560,9 @@ int run_render(const RenderArgs& args) {
       const golden::PolygonFrame* frame_polygons = polygons ? &*polygons : nullptr;
       if (system) {
         try {
-          sys = sysc::render_through_host(host.regs, l.volume, cfg, cb, &bus_seconds, frame_polygons);
+          // Mapped: the voxel memory uses the loaded volume in place (same bus time, no copy).
+          sys = sysc::render_through_host(host.regs, l.volume, cfg, cb, &bus_seconds, frame_polygons,
+                                          sysc::VolumeLoad::Mapped);
         } catch (const std::invalid_argument& e) {
           throw InputError(e.what());
         } catch (const sysc::HostError& e) {  // registers the built hardware cannot take

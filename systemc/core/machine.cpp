@@ -15,20 +15,66 @@ namespace cube4::sysc {
 void Machine::set_volume_dims(int k, int nx, int ny, int nz) {
   golden::Volume& v = volumes_[static_cast<size_t>(k)];
   v.dim = {nx, ny, nz};
-  v.data.assign(v.size(), 0);
-  if (tag_bits_ > 0) v.tags.assign(v.size(), 0);
+  std::vector<uint16_t>().swap(v.data);
+  std::vector<uint8_t>().swap(v.tags);
   v.source = "host interface, subvolume " + std::to_string(k);
+  mapped_[static_cast<size_t>(k)] = nullptr;
+  cleared_[static_cast<size_t>(k)] = true;
+}
+
+golden::Volume& Machine::own(int k) {
+  const size_t i = static_cast<size_t>(k);
+  golden::Volume& v = volumes_[i];
+  if (mapped_[i]) {
+    const int bits = v.bits;
+    v = *mapped_[i];
+    v.bits = bits;
+    if (tag_bits_ > 0 && v.tags.empty()) v.tags.assign(v.size(), 0);
+    v.source = "host interface, subvolume " + std::to_string(k);
+    mapped_[i] = nullptr;
+  } else if (cleared_[i]) {
+    v.data.assign(v.size(), 0);
+    if (tag_bits_ > 0) v.tags.assign(v.size(), 0);
+  }
+  cleared_[i] = false;
+  return v;
+}
+
+const golden::Volume& Machine::volume(int k) const {
+  const size_t i = static_cast<size_t>(k);
+  if (mapped_[i]) return *mapped_[i];
+  // A cleared subvolume is allocated on first use, as the machine's own.
+  if (cleared_[i]) return const_cast<Machine*>(this)->own(k);
+  return volumes_[i];
+}
+
+void Machine::map_volume(int k, const golden::Volume& vol) {
+  const size_t i = static_cast<size_t>(k);
+  if (vol.dim != volumes_[i].dim || vol.bits != volumes_[i].bits)
+    throw std::invalid_argument("machine: mapped volume of other dims or voxel width than subvolume " +
+                                std::to_string(k));
+  std::vector<uint16_t>().swap(volumes_[i].data);
+  std::vector<uint8_t>().swap(volumes_[i].tags);
+  mapped_[i] = &vol;
+  cleared_[i] = false;
+}
+
+void Machine::unmap_volume(int k) {
+  const size_t i = static_cast<size_t>(k);
+  if (!mapped_[i]) return;
+  mapped_[i] = nullptr;
+  cleared_[i] = true;
 }
 
 void Machine::write_voxel(int k, int x, int y, int z, uint16_t v) {
-  golden::Volume& vol = volumes_[static_cast<size_t>(k)];
+  golden::Volume& vol = own(k);
   const size_t i = vol.index(x, y, z);
   vol.data[i] = static_cast<uint16_t>(v & vol.max_value());
   if (tag_bits_ > 0) vol.tags[i] = static_cast<uint8_t>(v >> vol.bits);
 }
 
 void Machine::write_voxels(int k, uint64_t first, uint64_t count, const uint32_t* words, int /*nx*/, int /*ny*/) {
-  golden::Volume& vol = volumes_[static_cast<size_t>(k)];
+  golden::Volume& vol = own(k);
   const uint16_t max = static_cast<uint16_t>(vol.max_value());
   auto word = [words](uint64_t i) { return static_cast<uint16_t>(words[i / 2] >> (16 * (i % 2))); };
   uint16_t* data = vol.data.data() + first;
@@ -40,14 +86,14 @@ void Machine::write_voxels(int k, uint64_t first, uint64_t count, const uint32_t
 }
 
 uint16_t Machine::read_voxel(int k, int x, int y, int z) const {
-  const golden::Volume& vol = volumes_[static_cast<size_t>(k)];
+  const golden::Volume& vol = volume(k);
   return static_cast<uint16_t>(vol.at(x, y, z) | vol.tag_at(x, y, z) << vol.bits);
 }
 
 void Machine::start_frame(const golden::Registers& regs, int k, const golden::PolygonFrame* polygons) {
   error_ = nullptr;
   try {
-    last_ = run_frame(regs, volumes_[static_cast<size_t>(k)], cfg_, progress_, polygons);
+    last_ = run_frame(regs, volume(k), cfg_, progress_, polygons);
   } catch (...) {
     // The host interface reports a refused frame as a status code; the
     // reason is kept for the program that drives the host.
@@ -132,12 +178,21 @@ HostSession host_session(const SystemConfig& cfg, const golden::Precision& p, in
 
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds,
-                                 const golden::PolygonFrame* polygons) {
+                                 const golden::PolygonFrame* polygons, VolumeLoad load) {
   Hosted& h = hosted(cfg, r.p, std::max({vol.dim[0], vol.dim[1], vol.dim[2]}));
   h.machine->set_progress(progress);
   TlmTarget& target = h.host->target();
   sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-  program_over_tlm(target, r, vol, delay);
+  // A mapped volume is the frame's only: the caller's may not outlive it.
+  struct Unmap {
+    HostInterface* host;
+    ~Unmap() {
+      if (host) host->unmap_volume();
+    }
+  } unmap{load == VolumeLoad::Mapped ? h.host.get() : nullptr};
+  VolumeMap map;
+  if (load == VolumeLoad::Mapped) map = [&h](const golden::Volume& v, sc_core::sc_time& d) { h.host->map_volume(v, d); };
+  program_over_tlm(target, r, vol, delay, map);
   write_polygons_over_tlm(target, polygons, delay);
   try {
     start_frame_over_tlm(target, delay);

@@ -34,12 +34,16 @@ class Machine final : public HostBackend {
   void write_voxel(int k, int x, int y, int z, uint16_t v) override;
   // The voxel memory is golden::Volume's object order: a burst is a run.
   void write_voxels(int k, uint64_t first, uint64_t count, const uint32_t* words, int nx, int ny) override;
+  // Subvolume k is vol itself (no copy) until unmap_volume() or a voxel
+  // write, which first makes it the machine's own.
+  void map_volume(int k, const golden::Volume& vol) override;
+  void unmap_volume(int k) override;
   uint16_t read_voxel(int k, int x, int y, int z) const override;
   // Runs the frame to its end (the host interface's START is blocking),
   // with the polygon images the host loaded through the POLY_* windows.
   void start_frame(const golden::Registers& regs, int k, const golden::PolygonFrame* polygons) override;
   // Subvolume k as the voxel memory holds it.
-  const golden::Volume& volume(int k) const { return volumes_[static_cast<size_t>(k)]; }
+  const golden::Volume& volume(int k) const;
   bool busy() const override { return false; }
   uint64_t frames_done() const override { return frames_; }
   uint64_t last_frame_cycles() const override { return last_ ? last_->frame_cycles : 0; }
@@ -50,7 +54,13 @@ class Machine final : public HostBackend {
  private:
   SystemConfig cfg_;
   int tag_bits_;
+  // Subvolume k: volumes_[k], or the host's volume mapped in its place, or
+  // (cleared_[k]) all zero, allocated only when first needed: a volume
+  // whose every voxel the host writes or maps is never zeroed first.
+  golden::Volume& own(int k);
   std::array<golden::Volume, regmap::kSubvolumes> volumes_;
+  std::array<const golden::Volume*, regmap::kSubvolumes> mapped_{};
+  std::array<bool, regmap::kSubvolumes> cleared_{};
   golden::Progress progress_;
   std::optional<SystemResult> last_;
   uint64_t frames_ = 0;
@@ -65,9 +75,14 @@ class Machine final : public HostBackend {
 // (write_polygons_over_tlm), so their transfer is in the bus time. The host
 // interface and machine are built once per process (SystemC elaborates
 // once), for the first call's p and precision.
+// `load`: the volume through the VOLUME window (Bus), or mapped in place for
+// the frame (Mapped: HostInterface::map_volume, the same bus time, no copy:
+// the loosely timed model's speed and memory on large volumes); after a
+// mapped frame the machine's subvolume 0 reads as cleared.
+enum class VolumeLoad { Bus, Mapped };
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds = nullptr,
-                                 const golden::PolygonFrame* polygons = nullptr);
+                                 const golden::PolygonFrame* polygons = nullptr, VolumeLoad load = VolumeLoad::Bus);
 // The process's host interface and machine, as render_through_host()
 // builds them (for cfg.p, precision p, volumes up to max_dim per axis), for
 // a host program of its own: several subvolumes, slab updates between

@@ -5,10 +5,13 @@
 // nothing of pipelines, memories or levels.
 #pragma once
 #include <array>
+#include <algorithm>
 #include <cstdint>
+#include <vector>
 
 #include "golden/polygon_frame.hpp"
 #include "golden/registers.hpp"
+#include "golden/volume.hpp"
 
 namespace cube4::sysc {
 
@@ -41,6 +44,25 @@ struct HostBackend {
       }
     }
   }
+  // Subvolume k (its dims already set) takes vol's voxels, checked to fit:
+  // by default a copy through write_voxels(). A backend that can use the
+  // host's buffer in place (until the frame ends or a voxel is written) does
+  // better: HostInterface::map_volume.
+  virtual void map_volume(int k, const golden::Volume& vol) {
+    const uint64_t n = vol.data.size();
+    std::vector<uint32_t> words(std::min<uint64_t>(n, uint64_t{1} << 20) / 2 + 1);
+    for (uint64_t first = 0; first < n; first += 2 * (words.size() - 1)) {
+      const uint64_t count = std::min<uint64_t>(n - first, 2 * (words.size() - 1));
+      for (uint64_t i = 0; i < count; ++i) {
+        const uint32_t w = vol.data[first + i] | (vol.tags.empty() ? 0u : uint32_t{vol.tags[first + i]} << vol.bits);
+        words[i / 2] = i % 2 ? words[i / 2] | w << 16 : w;
+      }
+      write_voxels(k, first, count, words.data(), vol.dim[0], vol.dim[1]);
+    }
+  }
+  // Ends a map_volume(): subvolume k reads as cleared (as after a new VOL_DIM)
+  // unless a write had made it the backend's own copy.
+  virtual void unmap_volume(int /*k*/) {}
   virtual uint16_t read_voxel(int k, int x, int y, int z) const = 0;
   // Runs, or schedules, one frame of subvolume k with these register values
   // (a copy: the register file may be rewritten while the frame runs) and

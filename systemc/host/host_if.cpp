@@ -1,9 +1,13 @@
 #include "systemc/host/host_if.hpp"
 
+#include "systemc/host/host_program.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <exception>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace cube4::sysc {
@@ -264,6 +268,34 @@ ErrorCode HostInterface::commit_volume_dims(int k) {
     told = d;
   }
   return ErrorCode::None;
+}
+
+void HostInterface::map_volume(const golden::Volume& vol, sc_core::sc_time& delay) {
+  const int k = regs_.vol_index();
+  if (backend_.busy()) throw std::invalid_argument("host interface: map_volume while a frame runs");
+  if (regs_.volume_dims(k) != vol.dim)
+    throw std::invalid_argument("host interface: map_volume of a " + std::to_string(vol.dim[0]) + "x" +
+                                std::to_string(vol.dim[1]) + "x" + std::to_string(vol.dim[2]) +
+                                " volume into subvolume " + std::to_string(k) + ", whose VOL_DIM differs");
+  // The checks the VOLUME window makes word by word.
+  const uint32_t max = rm::voxel_word_max(config_.hw.precision);
+  const bool tagged = !vol.tags.empty();
+  for (size_t i = 0; i < vol.data.size(); ++i) {
+    const uint32_t w = vol.data[i] | (tagged ? uint32_t{vol.tags[i]} << config_.hw.precision.voxel_bits : 0u);
+    if (w > max)
+      throw std::invalid_argument("host interface: map_volume: voxel " + std::to_string(i) + " holds " +
+                                  std::to_string(w) + ", wider than the voxel memory word (at most " +
+                                  std::to_string(max) + ")");
+  }
+  commit_volume_dims(k);
+  backend_.map_volume(k, vol);
+  mapped_ = k;
+  delay += volume_load_bus_time(vol.data.size(), config_.bus_period);
+}
+
+void HostInterface::unmap_volume() {
+  if (mapped_ >= 0) backend_.unmap_volume(mapped_);
+  mapped_ = -1;
 }
 
 HostInterface::Outcome HostInterface::start_frame() {

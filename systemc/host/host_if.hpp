@@ -48,6 +48,18 @@ class HostInterface : public sc_core::sc_module {
   const HostConfig& config() const { return config_; }
   void set_bus_period(const sc_core::sc_time& t) { config_.bus_period = t; }
 
+  // The model's DMI-style volume load (a VolumeMap for program_over_tlm):
+  // subvolume VOL_INDEX, whose VOL_DIM must be vol.dim, holds vol's voxels
+  // without their moving over the bus; `delay` gains the bus time of the
+  // bursts that would have moved them. The backend may use vol in place
+  // until unmap_volume(), so vol must outlive that; a voxel or slab write
+  // to the subvolume before then makes it the backend's own copy. Throws
+  // std::invalid_argument (and maps nothing) for other dims, a busy
+  // machine or a voxel wider than its word.
+  void map_volume(const golden::Volume& vol, sc_core::sc_time& delay);
+  // Ends it: the subvolume reads as cleared, as after a new VOL_DIM.
+  void unmap_volume();
+
   // The socket's forward interface, to call without binding an initiator
   // (tests, sc_main before elaboration).
   tlm::tlm_fw_transport_if<>& target() { return socket.get_base_interface(); }
@@ -81,6 +93,7 @@ class HostInterface : public sc_core::sc_module {
   HostBackend& backend_;
   RegisterFile regs_;
   PolygonBuffer polygons_;  // the POLY_* windows, until START consumes them
+  int mapped_ = -1;         // the subvolume map_volume() mapped, until unmap_volume()
   // What the backend was last given, per subvolume.
   std::array<std::array<int, 3>, regmap::kSubvolumes> told_dims_{};
   bool error_ = false;

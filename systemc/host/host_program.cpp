@@ -149,6 +149,18 @@ std::vector<uint32_t> pack_voxels(const std::vector<uint16_t>& v) {
 
 }  // namespace
 
+void set_subvolume_dims_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& dim, sc_core::sc_time& delay) {
+  write_word(target, rm::kVolIndex, static_cast<uint32_t>(k), delay);
+  const uint32_t dims[3] = {static_cast<uint32_t>(dim[0]), static_cast<uint32_t>(dim[1]), static_cast<uint32_t>(dim[2])};
+  write_words(target, rm::kVolDim, dims, 3, delay);
+}
+
+sc_core::sc_time volume_load_bus_time(uint64_t voxels, const sc_core::sc_time& bus_period) {
+  const uint64_t words = (voxels + 1) / 2;
+  const uint64_t transactions = (words + kBurstWords - 1) / kBurstWords;
+  return bus_period * static_cast<double>(words + transactions);
+}
+
 void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol, sc_core::sc_time& delay) {
   check(vol.data.size() == vol.size(), "the volume holds " + std::to_string(vol.data.size()) +
                                            " voxels, its dimensions say " + std::to_string(vol.size()));
@@ -156,10 +168,7 @@ void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol
                                            std::to_string(rm::kSubvolumes - 1));
   check(vol.tags.empty() || vol.tags.size() == vol.size(),
         "the volume holds " + std::to_string(vol.tags.size()) + " tags, its dimensions say " + std::to_string(vol.size()));
-  write_word(target, rm::kVolIndex, static_cast<uint32_t>(k), delay);
-  const uint32_t dims[3] = {static_cast<uint32_t>(vol.dim[0]), static_cast<uint32_t>(vol.dim[1]),
-                            static_cast<uint32_t>(vol.dim[2])};
-  write_words(target, rm::kVolDim, dims, 3, delay);
+  set_subvolume_dims_over_tlm(target, k, vol.dim, delay);
   // The voxel memory words: {tag, value}, the tag above the value's bits,
   // two voxels a word. Packed a chunk at a time (whole bursts, so the
   // transactions are those of one write_words call): a large volume is not
@@ -284,7 +293,7 @@ void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_co
 }
 
 void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const golden::Volume& vol,
-                      sc_core::sc_time& delay) {
+                      sc_core::sc_time& delay, const VolumeMap& map) {
   const HardwareId hw = read_hardware_id(target, delay);
   const golden::Precision& a = regs.p;
   if (const golden::PrecisionField* f = golden::first_difference(a, hw.precision))
@@ -307,7 +316,13 @@ void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const go
   check_table(regs.specular_map.size(), rm::map_entries(a), regs.specular, "specular_map");
   check_table(regs.tag_coefs.size(), rm::material_entries(a), regs.shading, "tag_coefs");
 
-  load_volume_over_tlm(target, vol, delay);
+  if (map) {
+    set_subvolume_dims_over_tlm(target, 0, vol.dim, delay);
+    map(vol, delay);
+    select_subvolume_over_tlm(target, 0, delay);
+  } else {
+    load_volume_over_tlm(target, vol, delay);
+  }
   write_tables_over_tlm(target, regs, delay);
   write_view_over_tlm(target, regs, delay);
 }

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <systemc>
 #include <vector>
@@ -67,14 +68,25 @@ void load_volume_over_tlm(TlmTarget& target, const golden::Volume& vol, sc_core:
 void write_tables_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay);
 void write_view_over_tlm(TlmTarget& target, const golden::Registers& regs, sc_core::sc_time& delay);
 
+// Puts vol into subvolume VOL_INDEX (its VOL_DIM already written) without
+// moving it over the bus, annotating the bus time its bursts would take:
+// HostInterface::map_volume, the model's DMI-style load.
+using VolumeMap = std::function<void(const golden::Volume& vol, sc_core::sc_time& delay)>;
+
 // Checks regs against the hardware (precision, table sizes) and the volume
-// (regs.dim[i] == vol.dim[regs.perm[i]]), then writes the volume, every
-// table the mode bits use, and every register. Does not start the frame.
+// (regs.dim[i] == vol.dim[regs.perm[i]]), then writes the volume (through
+// `map` if given), every table the mode bits use, and every register. Does
+// not start the frame.
 void program_over_tlm(TlmTarget& target, const golden::Registers& regs, const golden::Volume& vol,
-                      sc_core::sc_time& delay);
+                      sc_core::sc_time& delay, const VolumeMap& map = {});
 
 // Subvolumes (VolumePro §4.2, docs/registers.md "Subvolumes and slabs"):
 // several volumes resident in voxel memory, one rendered per START.
+// VOL_INDEX = k and its VOL_DIM.
+void set_subvolume_dims_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& dim, sc_core::sc_time& delay);
+// What loading that many voxels through the VOLUME window annotates: one
+// address cycle per burst of kBurstWords and one cycle per word.
+sc_core::sc_time volume_load_bus_time(uint64_t voxels, const sc_core::sc_time& bus_period);
 // Loads vol as subvolume k (VOL_INDEX = k, VOL_DIM, the volume window);
 // the other subvolumes keep theirs.
 void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol, sc_core::sc_time& delay);

@@ -643,6 +643,46 @@ TEST(HostInterface, VolumeLoadWritesEveryVoxelOnceAtItsObjectCoordinate) {
   EXPECT_EQ(e.backend.dims_calls, 1);
 }
 
+// map_volume, the DMI-style load: what the VOLUME window's bursts would
+// write (here a backend without in-place mapping copies through
+// write_voxels), with their bus time, and nothing for a volume the
+// subvolume or the voxel word cannot take.
+TEST(HostInterface, MappedVolumeWritesWhatTheBurstsWouldAndAnnotatesTheirTime) {
+  Env& e = env();
+  golden::Volume vol;
+  vol.dim = {5, 3, 7};
+  for (int i = 0; i < 105; ++i) vol.data.push_back(static_cast<uint16_t>(7 * i % 4096));
+  fresh(e.host, e.backend);
+  sc_time bus = SC_ZERO_TIME;
+  load_volume_over_tlm(e.host.target(), vol, bus);
+  const golden::Volume by_bus = e.backend.volumes[0];
+
+  fresh(e.host, e.backend);
+  sc_time delay = SC_ZERO_TIME;
+  set_subvolume_dims_over_tlm(e.host.target(), 0, vol.dim, delay);
+  const sc_time dims_time = delay;
+  e.host.map_volume(vol, delay);
+  select_subvolume_over_tlm(e.host.target(), 0, delay);
+  EXPECT_EQ(delay, bus) << "the same bus time as the bursts";
+  EXPECT_EQ(delay - dims_time - e.host.config().bus_period * 2.0,
+            volume_load_bus_time(vol.size(), e.host.config().bus_period));
+  EXPECT_EQ(e.backend.volumes[0].data, by_bus.data);
+  EXPECT_EQ(std::count(e.backend.writes_per_voxel.begin(), e.backend.writes_per_voxel.end(), 1), 105);
+  e.host.unmap_volume();
+
+  // Refused, nothing written: other dims, a voxel wider than the word.
+  fresh(e.host, e.backend);
+  set_subvolume_dims_over_tlm(e.host.target(), 0, {5, 3, 6}, delay);
+  EXPECT_THROW(e.host.map_volume(vol, delay), std::invalid_argument);
+  set_subvolume_dims_over_tlm(e.host.target(), 0, vol.dim, delay);
+  golden::Volume wide = vol;
+  wide.data[17] = 4096;
+  EXPECT_THROW(e.host.map_volume(wide, delay), std::invalid_argument);
+  EXPECT_EQ(std::count(e.backend.writes_per_voxel.begin(), e.backend.writes_per_voxel.end(), 0),
+            static_cast<std::ptrdiff_t>(e.backend.writes_per_voxel.size()));
+  fresh(e.host, e.backend);
+}
+
 // ---- Base plane -----------------------------------------------------------------------
 
 // Subvolumes and slabs (VolumePro §4.2): several volumes resident at once,

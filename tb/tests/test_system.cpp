@@ -240,6 +240,80 @@ TEST(System, ThroughTheHostInterface) {
   EXPECT_GT(bus, 0.0) << "the host bus time is annotated";
 }
 
+// The DMI-style load `cube4 render` uses: the volume mapped into voxel
+// memory in place gives the frame, cycles and bus time of the load through
+// the VOLUME window, for plain and (a process of its own: the interface is
+// built once, for one precision) tagged voxels, and holds no copy; after
+// the frame the subvolume reads as cleared.
+TEST(System, MappedVolumeIsTheBusLoadWithoutTheCopy) {
+  if (!sysc::host_interface_available(4))
+    GTEST_SKIP() << "this process cannot build the host interface for p = 4 any more (ctest runs each test alone)";
+  Case c;
+  c.effects = R"("shading": true, "gradient_modulation": {"opacity": true})";
+  const auto [vol, regs] = program(c);
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.levels = kTlm;
+  double bus = 0, mapped_bus = 0;
+  const sysc::SystemResult loaded = sysc::render_through_host(regs, vol, cfg, {}, &bus);
+  const sysc::SystemResult mapped =
+      sysc::render_through_host(regs, vol, cfg, {}, &mapped_bus, nullptr, sysc::VolumeLoad::Mapped);
+  EXPECT_EQ(mapped.plane.rgba, loaded.plane.rgba);
+  EXPECT_EQ(mapped.plane.rgba, golden::render_fixed(vol, regs).rgba);
+  EXPECT_EQ(mapped.frame_cycles, loaded.frame_cycles);
+  EXPECT_EQ(mapped_bus, bus) << "the same bus time: the bursts are annotated, not moved";
+  const golden::Volume& after = sysc::host_session(cfg, regs.p).machine.volume(0);
+  EXPECT_NE(&after, &vol) << "the mapping ends with the frame";
+  EXPECT_EQ(std::count(after.data.begin(), after.data.end(), 0), static_cast<std::ptrdiff_t>(vol.size()));
+}
+
+TEST(System, MappedTaggedVolumeIsTheBusLoad) {
+  if (!sysc::host_interface_available(4))
+    GTEST_SKIP() << "this process cannot build the host interface for p = 4 any more (ctest runs each test alone)";
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.levels = kTlm;
+  const std::string dir = std::string(CUBE4_SOURCE_DIR) + "/scenes";
+  const golden::Scene sc = golden::load_scene(dir + "/tagged_spheres.json");
+  golden::Volume tagged = golden::load_volume(sc.volume, sc.precision.voxel_bits, dir);
+  golden::load_tags(sc, tagged, dir);
+  const golden::Registers tagged_regs = golden::program_host(sc, tagged).regs;
+  double tagged_bus = 0, tagged_mapped_bus = 0;
+  const auto tagged_loaded = sysc::render_through_host(tagged_regs, tagged, cfg, {}, &tagged_bus);
+  const auto tagged_mapped = sysc::render_through_host(tagged_regs, tagged, cfg, {}, &tagged_mapped_bus, nullptr,
+                                                       sysc::VolumeLoad::Mapped);
+  EXPECT_EQ(tagged_mapped.plane.rgba, tagged_loaded.plane.rgba);
+  EXPECT_EQ(tagged_mapped_bus, tagged_bus);
+}
+
+// The machine uses a mapped volume in place until a voxel is written, which
+// makes the subvolume its own copy first: the host's volume never changes.
+TEST(System, MachineCopiesAMappedVolumeOnItsFirstVoxelWrite) {
+  Case c;
+  const auto [vol, regs] = program(c);
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.levels = kTlm;
+  sysc::Machine m(cfg, vol.bits);
+  m.set_volume_dims(0, vol.dim[0], vol.dim[1], vol.dim[2]);
+  m.map_volume(0, vol);
+  EXPECT_EQ(&m.volume(0), &vol);
+  const uint16_t before = vol.at(1, 2, 3);
+  const uint16_t written = static_cast<uint16_t>((before + 1) & vol.max_value());
+  m.write_voxel(0, 1, 2, 3, written);
+  EXPECT_EQ(vol.at(1, 2, 3), before) << "the host's volume was written";
+  ASSERT_NE(&m.volume(0), &vol);
+  EXPECT_EQ(m.volume(0).at(1, 2, 3), written);
+  golden::Volume expected = vol;
+  expected.data[expected.index(1, 2, 3)] = written;
+  EXPECT_EQ(m.volume(0).data, expected.data);
+  m.unmap_volume(0);  // its own copy now: unchanged
+  EXPECT_EQ(m.volume(0).data, expected.data);
+  m.map_volume(0, vol);
+  m.unmap_volume(0);
+  EXPECT_EQ(std::count(m.volume(0).data.begin(), m.volume(0).data.end(), 0), static_cast<std::ptrdiff_t>(vol.size()));
+}
+
 // Voxel tags (bela §III) through the host interface at transaction level:
 // the volume window carries {tag, value} words into the voxel memory, the
 // CLASS window the {tag, value} table and the MATERIAL window each tag's
