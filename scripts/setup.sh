@@ -5,7 +5,7 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$here/build}
 
-packages=(build-essential cmake ninja-build pkg-config zlib1g-dev
+packages=(build-essential cmake ninja-build pkg-config zlib1g-dev libpng-dev
   verilator libsystemc-dev libgtest-dev libopenimageio-dev openimageio-tools yosys
   libcli11-dev nlohmann-json3-dev libnifti2-dev libvolpack1-dev libassimp-dev libxml2-utils z3 ccache
   parallel python3-matplotlib

@@ -14,6 +14,7 @@
 #include "golden/errors.hpp"
 #include "golden/fixed.hpp"
 #include "tb/image_plugin.hpp"
+#include "tb/image_png.hpp"
 
 namespace cube4::tb {
 namespace {
@@ -54,11 +55,13 @@ void check_extension(const std::string& path) {
     throw InputError("output file '" + path + "': unsupported extension '" + e + "' (use .png or .exr)");
 }
 
-// Writes `file` and checks it reads back whole; `shown` names the output
-// in messages (the destination, not the temporary).
+// Writes `file` (the OpenImageIO module checks that an EXR reads back
+// whole; write_png checks its own writes); `shown` names the output in
+// messages (the destination, not the temporary).
 void write_checked(const std::string& file, const std::string& shown, const ImagePixels& px) {
   check_extension(file);
-  const std::string error = plugin().write(file, shown, px);
+  // PNG in this process (libpng); EXR through OpenImageIO's module.
+  const std::string error = extension_of(file) == ".png" ? write_png(file, shown, px) : plugin().write(file, shown, px);
   if (!error.empty()) throw InputError(error);
 }
 
