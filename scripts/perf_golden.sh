@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Measures the golden renderers against VolPack rendering the same file, same
-# view, same image size, in the same run, and writes the "golden-speed"
-# section of docs/performance.md. The fixed-point renderer runs on one thread
+# Measures the golden renderers against VolPack and VTK's
+# vtkFixedPointVolumeRayCastMapper (tb/bench/vtk_bench.cpp, under xvfb-run;
+# left out when VTK or Xvfb is missing) rendering the same file, same view,
+# same image size, in the same run, and writes the "golden-speed" section of
+# docs/performance.md. The fixed-point renderer runs on one thread
 # (pinned to one core, like VolPack, which has no threads) and on all cores.
 # Volumes: brainsmall (128x128x84), and brainsmall at twice the resolution
 # in every axis (256x256x168, nearest-neighbour, written as a .den here so
@@ -54,11 +56,23 @@ s["volume"] = {"file": sys.argv[2]}
 json.dump(s, open(sys.argv[3], "w"))
 PY
 
+# VTK and Xvfb are the benchmark's own needs, not the project's: installed
+# here (about 150 packages), then vtk_bench is configured and built.
+"$here/scripts/install_packages.sh" perf_golden libvtk9-dev xvfb xauth ||
+  echo "perf_golden: could not install VTK and Xvfb; VTK left out" >&2
+if [ ! -x "$bin/vtk_bench" ] && dpkg-query -W libvtk9-dev >/dev/null 2>&1; then
+  cmake "$build" >/dev/null && cmake --build "$build" --target vtk_bench >/dev/null || true
+fi
+vtk=()
+if [ -x "$bin/vtk_bench" ] && command -v xvfb-run >/dev/null; then vtk=(xvfb-run -a "${pin[@]}" "$bin/vtk_bench"); fi
 for round in $(seq "$rounds"); do
   for vol in brainsmall brain2x; do
     if [ "$vol" = brainsmall ]; then d=$den; scene=(); else d=$tmp/brain2x.den; scene=("$tmp/brain2x.json"); fi
     echo "perf_golden: round $round: $vol: VolPack, fixed on 1 thread, fixed on all..." >&2
     "${pin[@]}" "$bin/volpack_bench" --den "$d" --size 256 --rotate 20 60 180 --frames "$frames" >> "$tmp/$vol.volpack.json"
+    if [ ${#vtk[@]} -gt 0 ]; then
+      "${vtk[@]}" --volume "$d" --size 256 --rotate 20 60 180 --threads 1 --frames "$frames" >> "$tmp/$vol.vtk.json"
+    fi
     "${pin[@]}" "$bin/bench_golden" "${scene[@]}" --model fixed --threads 1 --frames "$frames" >> "$tmp/$vol.fixed1.json"
     "$bin/bench_golden" "${scene[@]}" --model fixed --threads 0 --frames "$frames" >> "$tmp/$vol.fixedN.json"
   done
@@ -104,7 +118,16 @@ for vol, label in (("brainsmall", "brainsmall 128×128×84"), ("brain2x", "brain
           f"{vp['raw_ms']['min']:.2f} | {vox:,} voxels | {vox/raw/1e3:.1f} M |")
     print(f"| {label} | VolPack `vpClassifyVolume` (pre-processing) | 1 | {pre:.2f} | {vp['classify_ms']['min']:.2f} | | |")
     print(f"| {label} | VolPack `vpRenderClassifiedVolume` | 1 | {cls:.2f} | {vp['classified_ms']['min']:.2f} | | |")
-    ratios.append((label, f1["ms"]["median"] / raw, fn["ms"]["median"] / raw, fn["threads"], (pre + cls) / f1["ms"]["median"]))
+    vtk = None
+    try:
+        vtk = load(f"{vol}.vtk")
+        vt = vtk["ms"]["median"]
+        print(f"| {label} | VTK 9.1 `vtkFixedPointVolumeRayCastMapper` | 1 | {vt:.2f} | {vtk['ms']['min']:.2f} | "
+              f"{vtk['voxels_per_frame']:,} voxels | {vtk['voxels_per_frame']/vt/1e3:.1f} M |")
+    except FileNotFoundError:
+        pass
+    ratios.append((label, f1["ms"]["median"] / raw, fn["ms"]["median"] / raw, fn["threads"], (pre + cls) / f1["ms"]["median"],
+                   f1["ms"]["median"] / vtk["ms"]["median"] if vtk else None))
 for m, label in (("float", "cube4 float, same algorithm"),
                  ("reference", None)):
     r = load(m)
@@ -112,8 +135,9 @@ for m, label in (("float", "cube4 float, same algorithm"),
     print(f"| brainsmall 128×128×84 | {label} | 1 | {r['ms']['median']:.2f} | {r['ms']['min']:.2f} | "
           f"{r['samples_per_frame']:,} | {r['samples_per_second']/1e6:.1f} M |")
 print()
-for label, one, alln, n, cls in ratios:
-    print(f"- {label}: fixed-point golden / VolPack raw path **{one:.2f}×** on one thread, **{alln:.2f}×** on {n} threads; "
-          f"VolPack's classified path with its pre-processing takes **{cls:.2f}×** the one-thread golden frame.")
+for label, one, alln, n, cls, vt in ratios:
+    print(f"- {label}: fixed-point golden / VolPack raw path **{one:.2f}×** on one thread, **{alln:.2f}×** on {n} threads"
+          + (f"; fixed-point golden / VTK **{vt:.2f}×**, one thread each" if vt else "; VTK not measured (no vtk_bench or xvfb-run)")
+          + f"; VolPack's classified path with its pre-processing takes **{cls:.2f}×** the one-thread golden frame.")
 PY
 echo "perf_golden: docs/performance.md updated" >&2

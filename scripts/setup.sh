@@ -10,17 +10,7 @@ packages=(build-essential cmake ninja-build pkg-config zlib1g-dev libpng-dev
   libcli11-dev nlohmann-json3-dev libnifti2-dev libvolpack1-dev libassimp-dev libxml2-utils z3 ccache
   parallel python3-matplotlib
   clang libclang-rt-14-dev)  # clang: the sanitizer and fuzzer build (docs/reliability.md)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "setup: installing ${missing[*]}" >&2
-  sudo_cmd=()
-  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq "${missing[@]}" >/dev/null
-fi
+"$here/scripts/install_packages.sh" setup "${packages[@]}"
 
 if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
