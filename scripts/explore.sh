@@ -6,9 +6,10 @@
 # minutes each; the script runs that first and says how long it took),
 # copies the plots to docs/images/ and writes the "explore-fronts" section.
 #   scripts/explore.sh [-j JOBS] [--no-gates]   (--no-gates: no yosys, the gate columns empty)
+# CUBE4_BUILD: a build folder already built (skips the set-up, which builds build/).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-"$here/scripts/setup.sh" >/dev/null
+[ -n "${CUBE4_BUILD:-}" ] || "$here/scripts/setup.sh" >/dev/null
 jobs=$(nproc) gates=()
 while [ $# -gt 0 ]; do
   case $1 in
@@ -17,7 +18,7 @@ while [ $# -gt 0 ]; do
     *) echo "explore.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
-cube4=$here/build/tb/cube4
+cube4=${CUBE4_BUILD:-$here/build}/tb/cube4
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cache=${CUBE4_GATES_CACHE:-$HOME/.cache/cube4/gates}
