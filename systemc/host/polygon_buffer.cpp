@@ -90,9 +90,10 @@ std::optional<PolygonBuffer::Fault> PolygonBuffer::frame(const std::array<int, 3
       out.back[i] = pixel(back_, i);
       out.z[i] = z_[i];
     }
-  out.slabs.assign(static_cast<size_t>(slices), golden::SlabImage());
-  if (blank) return std::nullopt;
+  // A slab without fragments is still the beams' shape: the decoders check it.
   const golden::SlabImage shape(dim_x, dim_y, lanes);
+  out.slabs.assign(static_cast<size_t>(slices), shape);
+  if (blank) return std::nullopt;
   std::vector<golden::Pixel> scratch(static_cast<size_t>(dim_x));
   for (int k = 0; k < slices; ++k) {
     const std::vector<uint32_t>& s = slabs_[static_cast<size_t>(k)];
