@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what cube4 needs (Debian packages, idempotent) and builds it.
 # Usage: scripts/setup.sh [build-dir]   (default: build)
+#        scripts/setup.sh --packages-only
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${1:-$here/build}
@@ -11,6 +12,7 @@ packages=(build-essential cmake ninja-build pkg-config zlib1g-dev libpng-dev
   parallel python3-matplotlib
   clang libclang-rt-14-dev)  # clang: the sanitizer and fuzzer build (docs/reliability.md)
 "$here/scripts/install_packages.sh" setup "${packages[@]}"
+[ "$build" = --packages-only ] && exit 0
 
 if [ ! -f "$build/build.ninja" ]; then
   cmake -S "$here" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null

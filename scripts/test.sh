@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds, and runs the whole default test suite (every ctest label
-# except `slow`). `scripts/test.sh --slow` runs the slow tests as well.
+# except `slow`). `scripts/test.sh --slow` runs the slow tests as well, and
+# the coverage run (scripts/coverage.sh, a build of its own).
 # Two builds: build/ (everything, RTL included) and build-san/, the
 # reliability build (docs/reliability.md): no RTL (so CUBE4_RTL=OFF is
 # checked too), clang with ASan + UBSan, whose unit tests and fuzzers run
@@ -29,5 +30,9 @@ cd "$san"
 ctest --output-on-failure -j "$(nproc)" -L 'unit|fuzz' || status=1
 if [ $slow = 1 ]; then
   ctest --output-on-failure -j "$(nproc)" -R '^fuzz_slow[.]' || status=1
+fi
+# Coverage: a build of its own (docs/verification.md, "Coverage").
+if [ $slow = 1 ]; then
+  "$here/scripts/coverage.sh" || status=1
 fi
 exit $status

@@ -13,6 +13,11 @@
 //                      (SliceBits - 1 bits), so that k << ZFracBits stays
 //                      below kZNone, the depth of "no opaque polygon", and
 //                      no sample is hidden where no surface is.
+// and, for coverage (scripts/coverage.sh), the cases a test suite must
+// reach: a sample under each blend mode (c_blend_*), in each of the eight
+// crop regions with cropping on (c_crop_region[r], r = in_x | in_y << 1 |
+// in_z << 2, the crop-mask bit that decides it: golden crop_visible), and
+// with polygons (c_polygons).
 //
 // Simulation only: not part of the unit, never synthesised.
 module cube4_composite_sva #(
@@ -45,6 +50,9 @@ module cube4_composite_sva #(
   input logic                             cut_keep_inside_i,
   input logic                             poly_enabled_i,
   input logic [SliceBits-1:0]             slice_k_i,
+  input logic [PosBits-1:0]               x_i,
+  input logic [PosBits-1:0]               y_i,
+  input logic [PosBits-1:0]               z_i,
   input logic                             valid_i
 );
 
@@ -86,6 +94,18 @@ module cube4_composite_sva #(
         else $error("cube4_composite: cycle %0d: sample slice %0d with polygons: at most %0d, so that k << ZFracBits stays below kZNone",
                     cycle, slice_k_i, (1 << (SliceBits - 1)) - 1);
     end
+  end
+
+  c_blend_composite: cover property (@(posedge clk_i) valid_i && blend_mode_i == cube4_pkg::BlendComposite);
+  c_blend_mip: cover property (@(posedge clk_i) valid_i && blend_mode_i == cube4_pkg::BlendMip);
+  c_blend_minip: cover property (@(posedge clk_i) valid_i && blend_mode_i == cube4_pkg::BlendMinIp);
+  c_polygons: cover property (@(posedge clk_i) valid_i && poly_enabled_i);
+
+  logic [2:0] crop_region;
+  assign crop_region = {crop_z_lo_i <= z_i && z_i <= crop_z_hi_i, crop_y_lo_i <= y_i && y_i <= crop_y_hi_i,
+                        crop_x_lo_i <= x_i && x_i <= crop_x_hi_i};
+  for (genvar r = 0; r < 8; r++) begin : g_crop_region
+    c_crop_region: cover property (@(posedge clk_i) valid_i && crop_enabled_i && crop_region == 3'(r));
   end
 
 endmodule

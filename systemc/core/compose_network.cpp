@@ -13,6 +13,7 @@
 #ifdef CUBE4_HAVE_RTL
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/vl_context.hpp"
+#include "systemc/rtl/vl_coverage.hpp"
 #endif
 
 namespace cube4::sysc {
@@ -268,6 +269,9 @@ NetworkResult run_network(const golden::BlockPlan& plan, const std::vector<const
     if (!run.done) throw std::logic_error("composition network: the simulation stopped before the last pixel");
     res.plane = std::move(run.plane);
     res.cycles = run.done_cycle;
+#ifdef CUBE4_HAVE_RTL
+    if (rtl_ctx) rtl::write_coverage(*rtl_ctx);  // while the models live (a coverage build's; else nothing)
+#endif
   }
   if (cfg.check)
     for (size_t i = 0; i < want.rgba.size(); i += 4)

@@ -27,6 +27,7 @@
 #ifdef CUBE4_HAVE_RTL
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/vl_context.hpp"
+#include "systemc/rtl/vl_coverage.hpp"
 #endif
 
 namespace cube4::sysc {
@@ -382,6 +383,9 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     res.simulated_cycles = u.done_cycle;
     res.voxel_reads = mem.reads();
     res.plane = pixels.plane();
+#ifdef CUBE4_HAVE_RTL
+    rtl::write_coverage(*rtl_ctx);  // while the models live (a coverage build's; else nothing)
+#endif
   }
   if (checker) res.mismatch = checker->first_mismatch();
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

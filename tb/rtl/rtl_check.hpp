@@ -13,6 +13,7 @@
 #include <verilated.h>
 
 #include "systemc/rtl/vl_bits.hpp"
+#include "systemc/rtl/vl_coverage.hpp"
 
 #include <chrono>
 #include <cstdint>

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "systemc/rtl/vl_context.hpp"
+#include "systemc/rtl/vl_coverage.hpp"
 
 namespace cube4::rtl {
 
@@ -37,6 +38,7 @@ class SvaBench {
   }
   ~SvaBench() {
     if (m_) m_->final();
+    write_coverage(*ctx_);
     if (capturing_) ::testing::internal::GetCapturedStdout();
   }
   SvaBench(const SvaBench&) = delete;

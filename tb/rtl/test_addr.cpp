@@ -223,7 +223,7 @@ const std::vector<std::array<int, 3>> kSkewDims = {{8, 6, 5}, {10, 10, 10}, {1, 
 template <class M>
 void test_skew(int p) {
   Timer timer("cube4_addr");
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   cube4::rtl::reset(*m);
   m->start_i = 0;
   m->advance_i = 1;
@@ -265,7 +265,7 @@ void test_skew(int p) {
 // expected position; last_o on each walk's end; busy_o high throughout.
 template <class M>
 void test_skew_walks(int p) {
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   cube4::rtl::reset(*m);
   cube4::rtl::Checker c("cube4_addr walks p=" + std::to_string(p));
   Random rng(70 + p);

@@ -97,7 +97,7 @@ template <class M>
 class NodeBench {
  public:
   NodeBench(const Config& c, std::string name)
-      : cfg_(c), sb_(std::move(name), c.latency), junk_(977), m_(std::make_unique<M>()) {
+      : cfg_(c), sb_(std::move(name), c.latency), junk_(977), m_(cube4::rtl::make_dut<M>()) {
     rtl::reset(*m_);
   }
 
@@ -198,7 +198,7 @@ class NodeBench {
   Config cfg_;
   rtl::Scoreboard<NodeIn, NodeOut> sb_;
   Random junk_;
-  std::unique_ptr<M> m_;
+  cube4::rtl::Dut<M> m_;
   uint64_t cycle_ = 0;
 };
 
@@ -313,7 +313,8 @@ void node_directed(const Config& c, const std::string& name) {
 // and at no other time; then a pixel every cycle gives a result every cycle.
 template <class M>
 void node_latency(const Config& c) {
-  M m;
+  const auto dut = cube4::rtl::make_dut<M>();
+  M& m = *dut;
   rtl::reset(m);
   m.blend_mode_i = 0;
   int seen_at = -1, seen = 0;

@@ -49,7 +49,7 @@ struct OutOut {
 template <class M>
 class OutBench {
  public:
-  OutBench(const g::Precision& p, std::string name) : p_(p), sb_(std::move(name), 1), m_(std::make_unique<M>()) {
+  OutBench(const g::Precision& p, std::string name) : p_(p), sb_(std::move(name), 1), m_(cube4::rtl::make_dut<M>()) {
     rtl::reset(*m_);
   }
   void step(bool v, const g::RayAcc& in) {
@@ -83,7 +83,7 @@ class OutBench {
  private:
   g::Precision p_;
   rtl::Scoreboard<OutIn, OutOut> sb_;
-  std::unique_ptr<M> m_;
+  cube4::rtl::Dut<M> m_;
   uint64_t cycle_ = 0;
 };
 

@@ -220,7 +220,7 @@ class CompositeBench {
   // has_polygons = false likewise (HasPolygons = 0, poly_enabled_i ignored).
   explicit CompositeBench(const Widths& widths = kW, const std::string& name = "cube4_composite",
                           bool has_cut_plane = true, bool has_polygons = true)
-      : m(std::make_unique<M>()), sb(name, kLatency), w(widths), has_cut_plane_(has_cut_plane),
+      : m(cube4::rtl::make_dut<M>()), sb(name, kLatency), w(widths), has_cut_plane_(has_cut_plane),
         has_polygons_(has_polygons), junk_(9001) {
     m->valid_i = 0;
     rtl::reset(*m);
@@ -349,7 +349,7 @@ class CompositeBench {
     }
   } coverage;
 
-  std::unique_ptr<M> m;
+  cube4::rtl::Dut<M> m;
   rtl::Scoreboard<CompIn, AccOut> sb;
   Widths w;
   Config cfg;

@@ -564,7 +564,7 @@ void check_ring(const RingParams& rp, const std::vector<const Frame*>& frames, c
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.stall > 0 ? ", stalls" : ", no stalls") + ": " + what);
   Random rng(salt);
   const Stream s = make_stream(frames, rp.p, opt, rng);
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   const RunResult r = run_ring(*m, rp.p, frames, s, rng);
   m->final();
   EXPECT_TRUE(r.ok) << r.report;

@@ -134,7 +134,7 @@ void test_gradient(const char* unit, const g::Precision& p) {
                    static_cast<int32_t>(sign_extend(m.gz_o, G))};
   };
 
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   const long nd = static_cast<long>(directed.size());
   {
     Timer t(unit);

@@ -42,7 +42,8 @@ const long kRandomGaps = cube4::rtl::vector_count(1000000);
 TEST(RtlLerp, MatchesGolden) {
   constexpr int V = 12, W = 8;
   constexpr int64_t vmax = (1 << V) - 1, wmax = 1 << W;
-  Vcube4_lerp m;
+  const auto dut = cube4::rtl::make_dut<Vcube4_lerp>();
+  Vcube4_lerp& m = *dut;
   cube4::rtl::Checker c("cube4_lerp");
   uint64_t n = 0;
   auto one = [&](int64_t a, int64_t b, int64_t w) {
@@ -126,7 +127,7 @@ void test_trilinear(const char* unit, int V, int W) {
   auto golden = [&](const TriIn& in) { return TriOut{g::trilinear(in.v, in.wx, in.wy, in.wz, W)}; };
   auto read = [](M& m) { return TriOut{static_cast<uint32_t>(m.sample_o)}; };
 
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   const long nd = static_cast<long>(directed.size());
   {
     Timer t(unit);
@@ -197,7 +198,7 @@ TEST(RtlInterp, VoxelTagsTakeTheNearestVoxels) {
                   g::sample_tag(in.t, in.tri.wx, in.tri.wy, in.tri.wz, W)};
   };
   auto read = [](Vcube4_interp_t4& m) { return TagOut{static_cast<uint32_t>(m.sample_o), static_cast<uint32_t>(m.vtag_o)}; };
-  auto m = std::make_unique<Vcube4_interp_t4>();
+  auto m = cube4::rtl::make_dut<Vcube4_interp_t4>();
   const long nd = static_cast<long>(directed.size());
   Scoreboard<TagIn, TagOut> sb("cube4_interp_t4", kInterpLatency);
   auto gen = [&](long i) { return i >= 0 && i < nd ? directed[i] : random_in(); };

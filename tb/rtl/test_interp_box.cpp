@@ -58,7 +58,8 @@ void test_box_axis(const char* unit, AxisWidths w) {
   const int64_t pos_min = -(int64_t{1} << (D - 1)), pos_max = (int64_t{1} << (D - 1)) - 1;
   const int64_t spacing_max = (int64_t{1} << (F + 2)) - 1;
   const uint64_t pos_mask = (uint64_t{1} << D) - 1;
-  M m;
+  const auto dut = cube4::rtl::make_dut<M>();
+  M& m = *dut;
   cube4::rtl::Checker c(unit);
   uint64_t n = 0;
   uint64_t linear = 0, complete = 0;
@@ -265,7 +266,7 @@ void test_interp_box(const char* unit, int V, int W) {
   auto golden = [&](const BoxIn& in) { return BoxOut{g::box_filter(in.v, in.x, in.y, in.recip, Q)}; };
   auto read = [](M& m) { return BoxOut{static_cast<uint32_t>(m.sample_o)}; };
 
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   const long nd = static_cast<long>(directed.size());
   Timer t(unit);
   Scoreboard<BoxIn, BoxOut> sb(unit, kBoxLatency);

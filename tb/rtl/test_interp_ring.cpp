@@ -58,7 +58,7 @@ constexpr RingParams kRingT4{4, 16};
 template <class M>
 void test_delay_ram(const char* unit, int max_depth) {
   constexpr int W = 10;
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   cube4::rtl::reset(*m);
   cube4::rtl::Checker c(unit);
   Random rng(0x51 + max_depth);
@@ -215,7 +215,7 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
   SCOPED_TRACE("p=" + std::to_string(rp.p) + (opt.stall > 0 ? ", stalls" : ", no stalls") + ": " + what);
   Random rng(salt);
   const VoxelStream s = make_stream(frames, rp.p, opt, rng);
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   const RunResult r = run_ring(*m, rp.p, frames, s, rng, opt.vtag_bits);
   m->final();
   EXPECT_TRUE(r.ok) << r.report;

@@ -135,7 +135,7 @@ void test_interp_zdiff(const char* unit, int V, int W) {
   auto golden = [&](const ZIn& in) { return golden_zdiff(in, W); };
   auto read = [&](M& m) { return ZOut{sign_extend(get_bits(m.zdiff_o, 0, V + 1), V + 1)}; };
 
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   const long nd = static_cast<long>(directed.size());
   Timer t(unit);
   Scoreboard<ZIn, ZOut> sb(unit, kLatency);

@@ -72,7 +72,8 @@ Fields rtl_ray(const Vcube4_persp_ray& m) {
 
 TEST(RtlPerspRay, EveryRayOfRandomBeamsMatchesGolden) {
   rtl::Random rng(43);
-  Vcube4_persp_ray m;
+  const auto dut = cube4::rtl::make_dut<Vcube4_persp_ray>();
+  Vcube4_persp_ray& m = *dut;
   rtl::reset(m);
   rtl::Checker c("cube4_persp_ray");
   const long n = rtl::vector_count(1000000);

@@ -113,7 +113,8 @@ class Bench {
   }
 
  private:
-  Vcube4_persp_slice m_;
+  cube4::rtl::Dut<Vcube4_persp_slice> dut_ = cube4::rtl::make_dut<Vcube4_persp_slice>();
+  Vcube4_persp_slice& m_ = *dut_;
   uint64_t cycle_ = 0;
 };
 

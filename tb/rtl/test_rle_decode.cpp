@@ -82,7 +82,8 @@ class RleBench {
     errors += golden_->error();
   }
 
-  Vcube4_rle_decode m;
+  cube4::rtl::Dut<Vcube4_rle_decode> dut = cube4::rtl::make_dut<Vcube4_rle_decode>();
+  Vcube4_rle_decode& m = *dut;
   rtl::Checker chk;
   uint64_t cycle = 0, vectors = 0, lines = 0, finished = 0, errors = 0;
 

@@ -81,7 +81,7 @@ template <class M, class In, class Out>
 class Bench {
  public:
   Bench(const std::string& unit, int latency)
-      : m(std::make_unique<M>()), sb(unit, latency), latency_(latency) {}
+      : m(cube4::rtl::make_dut<M>()), sb(unit, latency), latency_(latency) {}
   virtual ~Bench() { m->final(); }
 
   void start() {
@@ -120,7 +120,7 @@ class Bench {
     return ::testing::AssertionFailure() << sb.report();
   }
 
-  std::unique_ptr<M> m;
+  cube4::rtl::Dut<M> m;
   rtl::Scoreboard<In, Out> sb;
   uint64_t cycle = 0;
   uint64_t vectors = 0;

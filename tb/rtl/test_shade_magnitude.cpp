@@ -39,7 +39,8 @@ const long kRandomGaps = cube4::rtl::vector_count(1000000);
 TEST(RtlUdiv, MatchesCppDivision) {
   constexpr int N = 16, D = 9;  // cube4_udiv defaults
   constexpr uint64_t nmax = (1u << N) - 1, dmax = (1u << D) - 1;
-  Vcube4_udiv m;
+  const auto dut = cube4::rtl::make_dut<Vcube4_udiv>();
+  Vcube4_udiv& m = *dut;
   cube4::rtl::Checker c("cube4_udiv");
   uint64_t n = 0;
   auto one = [&](uint64_t a, uint64_t b) {
@@ -172,7 +173,7 @@ void test_magnitude_random(const char* unit, const g::Precision& p, bool exhaust
   auto drive = [&](M& m, const MagIn& in) { b.drive(m, in); };
   auto golden = [&](const MagIn& in) { return b.golden(in); };
   auto read = [](M& m) { return MagnitudeBench<M>::read(m); };
-  auto m = std::make_unique<M>();
+  auto m = cube4::rtl::make_dut<M>();
   {
     Timer t(unit);
     Scoreboard<MagIn, MagOut> sb(unit, b.latency);
