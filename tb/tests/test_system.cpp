@@ -240,6 +240,21 @@ TEST(System, ThroughTheHostInterface) {
   EXPECT_GT(bus, 0.0) << "the host bus time is annotated";
 }
 
+// p = 4, every unit loosely timed: the host-interface tests' machine.
+sysc::SystemConfig tlm_p4() {
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.levels = kTlm;
+  return cfg;
+}
+const std::string kSceneDir = std::string(CUBE4_SOURCE_DIR) + "/scenes";
+// A scene's volume with its voxel tags.
+golden::Volume tagged_volume(const golden::Scene& sc) {
+  golden::Volume vol = golden::load_volume(sc.volume, sc.precision.voxel_bits, kSceneDir);
+  golden::load_tags(sc, vol, kSceneDir);
+  return vol;
+}
+
 // The DMI-style load `cube4 render` uses: the volume mapped into voxel
 // memory in place gives the frame, cycles and bus time of the load through
 // the VOLUME window, for plain and (a process of its own: the interface is
@@ -251,9 +266,7 @@ TEST(System, MappedVolumeIsTheBusLoadWithoutTheCopy) {
   Case c;
   c.effects = R"("shading": true, "gradient_modulation": {"opacity": true})";
   const auto [vol, regs] = program(c);
-  sysc::SystemConfig cfg;
-  cfg.p = 4;
-  cfg.levels = kTlm;
+  const sysc::SystemConfig cfg = tlm_p4();
   double bus = 0, mapped_bus = 0;
   const sysc::SystemResult loaded = sysc::render_through_host(regs, vol, cfg, {}, &bus);
   const sysc::SystemResult mapped =
@@ -270,13 +283,9 @@ TEST(System, MappedVolumeIsTheBusLoadWithoutTheCopy) {
 TEST(System, MappedTaggedVolumeIsTheBusLoad) {
   if (!sysc::host_interface_available(4))
     GTEST_SKIP() << "this process cannot build the host interface for p = 4 any more (ctest runs each test alone)";
-  sysc::SystemConfig cfg;
-  cfg.p = 4;
-  cfg.levels = kTlm;
-  const std::string dir = std::string(CUBE4_SOURCE_DIR) + "/scenes";
-  const golden::Scene sc = golden::load_scene(dir + "/tagged_spheres.json");
-  golden::Volume tagged = golden::load_volume(sc.volume, sc.precision.voxel_bits, dir);
-  golden::load_tags(sc, tagged, dir);
+  const sysc::SystemConfig cfg = tlm_p4();
+  const golden::Scene sc = golden::load_scene(kSceneDir + "/tagged_spheres.json");
+  const golden::Volume tagged = tagged_volume(sc);
   const golden::Registers tagged_regs = golden::program_host(sc, tagged).regs;
   double tagged_bus = 0, tagged_mapped_bus = 0;
   const auto tagged_loaded = sysc::render_through_host(tagged_regs, tagged, cfg, {}, &tagged_bus);
@@ -291,10 +300,7 @@ TEST(System, MappedTaggedVolumeIsTheBusLoad) {
 TEST(System, MachineCopiesAMappedVolumeOnItsFirstVoxelWrite) {
   Case c;
   const auto [vol, regs] = program(c);
-  sysc::SystemConfig cfg;
-  cfg.p = 4;
-  cfg.levels = kTlm;
-  sysc::Machine m(cfg, vol.bits);
+  sysc::Machine m(tlm_p4(), vol.bits);
   m.set_volume_dims(0, vol.dim[0], vol.dim[1], vol.dim[2]);
   m.map_volume(0, vol);
   EXPECT_EQ(&m.volume(0), &vol);
@@ -323,20 +329,16 @@ TEST(System, MachineCopiesAMappedVolumeOnItsFirstVoxelWrite) {
 TEST(System, TaggedSpheresThroughTheHostInterfaceTlm) {
   if (!sysc::host_interface_available(4))
     GTEST_SKIP() << "this process cannot build the host interface for p = 4 any more (ctest runs each test alone)";
-  sysc::SystemConfig cfg;
-  cfg.p = 4;
-  cfg.levels = kTlm;
-  const std::string dir = std::string(CUBE4_SOURCE_DIR) + "/scenes";
+  sysc::SystemConfig cfg = tlm_p4();
   for (int view = 0; view < 6; ++view) {
     const int axis = view / 2;
     SCOPED_TRACE("base plane " + std::to_string(view));
-    golden::Scene sc = golden::load_scene(dir + "/tagged_spheres.json");
+    golden::Scene sc = golden::load_scene(kSceneDir + "/tagged_spheres.json");
     golden::Vec3 d{0, 0, 0};
     d[axis] = view % 2 ? -1 : 1;
     sc.view.direction = d;
     sc.view.up = axis == 1 ? golden::Vec3{0, 0, 1} : golden::Vec3{0, 1, 0};
-    golden::Volume vol = golden::load_volume(sc.volume, sc.precision.voxel_bits, dir);
-    golden::load_tags(sc, vol, dir);
+    const golden::Volume vol = tagged_volume(sc);
     ASSERT_FALSE(vol.tags.empty());
     const golden::Registers regs = golden::program_host(sc, vol).regs;
     const sysc::SystemResult res = sysc::render_through_host(regs, vol, cfg, {});
