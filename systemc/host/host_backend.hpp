@@ -12,6 +12,7 @@
 #include "golden/polygon_frame.hpp"
 #include "golden/registers.hpp"
 #include "golden/volume.hpp"
+#include "systemc/host/register_map.hpp"
 
 namespace cube4::sysc {
 
@@ -54,7 +55,7 @@ struct HostBackend {
     for (uint64_t first = 0; first < n; first += 2 * (words.size() - 1)) {
       const uint64_t count = std::min<uint64_t>(n - first, 2 * (words.size() - 1));
       for (uint64_t i = 0; i < count; ++i) {
-        const uint32_t w = vol.data[first + i] | (vol.tags.empty() ? 0u : uint32_t{vol.tags[first + i]} << vol.bits);
+        const uint32_t w = regmap::voxel_word(vol, first + i);
         words[i / 2] = i % 2 ? words[i / 2] | w << 16 : w;
       }
       write_voxels(k, first, count, words.data(), vol.dim[0], vol.dim[1]);

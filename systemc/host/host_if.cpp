@@ -279,9 +279,12 @@ void HostInterface::map_volume(const golden::Volume& vol, sc_core::sc_time& dela
                                 " volume into subvolume " + std::to_string(k) + ", whose VOL_DIM differs");
   // The checks the VOLUME window makes word by word.
   const uint32_t max = rm::voxel_word_max(config_.hw.precision);
-  const bool tagged = !vol.tags.empty();
+  if (vol.bits != config_.hw.precision.voxel_bits)
+    throw std::invalid_argument("host interface: map_volume of " + std::to_string(vol.bits) +
+                                "-bit voxels into a " + std::to_string(config_.hw.precision.voxel_bits) +
+                                "-bit voxel memory");
   for (size_t i = 0; i < vol.data.size(); ++i) {
-    const uint32_t w = vol.data[i] | (tagged ? uint32_t{vol.tags[i]} << config_.hw.precision.voxel_bits : 0u);
+    const uint32_t w = rm::voxel_word(vol, i);
     if (w > max)
       throw std::invalid_argument("host interface: map_volume: voxel " + std::to_string(i) + " holds " +
                                   std::to_string(w) + ", wider than the voxel memory word (at most " +

@@ -175,11 +175,7 @@ void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol
   // copied twice on its way to the machine.
   constexpr size_t kChunkWords = 256 * kBurstWords;
   const size_t voxels = vol.data.size(), n = (voxels + 1) / 2;
-  const bool tagged = !vol.tags.empty();
-  auto word_of = [&](size_t v) {
-    if (v >= voxels) return uint32_t{0};
-    return tagged ? uint32_t{vol.data[v]} | uint32_t{vol.tags[v]} << vol.bits : uint32_t{vol.data[v]};
-  };
+  auto word_of = [&](size_t v) { return v < voxels ? rm::voxel_word(vol, v) : uint32_t{0}; };
   std::vector<uint32_t> chunk(std::min(kChunkWords, n));
   for (size_t first = 0; first < n; first += kChunkWords) {
     const size_t m = std::min(kChunkWords, n - first);

@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "golden/registers.hpp"
+#include "golden/volume.hpp"
 
 namespace cube4::sysc {
 
@@ -167,6 +168,10 @@ constexpr size_t material_entries(const golden::Precision& p) { return p.tag_bit
 // "bits per voxel and tag"; scene_io keeps the pair within 16 bits).
 constexpr uint32_t voxel_word_max(const golden::Precision& p) {
   return (uint32_t{1} << (p.voxel_bits + p.tag_bits)) - 1;
+}
+// Voxel i of vol as that word (its tag 0 when vol has none).
+inline uint32_t voxel_word(const golden::Volume& vol, size_t i) {
+  return uint32_t{vol.data[i]} | (vol.tags.empty() ? 0u : uint32_t{vol.tags[i]} << vol.bits);
 }
 constexpr size_t gm_entries(const golden::Precision& p) { return size_t{1} << p.magnitude_bits; }
 constexpr size_t map_entries(const golden::Precision& p) { return size_t{6} * p.map_face_res * p.map_face_res; }
