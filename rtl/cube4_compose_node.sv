@@ -123,16 +123,19 @@ module cube4_compose_node #(
   ///////////////////////////////////////////
   // Last stage: add (colours saturated)   //
   ///////////////////////////////////////////
-  function automatic logic [AB-1:0] add_sat(input logic [AB-1:0] x, input logic [AB-1:0] y);
-    logic [AB:0] sum;
-    sum     = {1'b0, x} + {1'b0, y};
-    add_sat = sum[AB] ? {AB{1'b1}} : sum[AB-1:0];
-  endfunction
+  // red, green, blue at [2], [1], [0]: base + increment, saturated where
+  // the sum carries (colour_saturated, also the coverage checker's).
+  logic [2:0]      colour_saturated;
+  logic [3*AB-1:0] colour_sum;
+  for (genvar ch = 0; ch < 3; ch++) begin : g_add
+    assign {colour_saturated[ch], colour_sum[ch*AB +: AB]} =
+        {1'b0, base[PixBits-1-(2-ch)*AB -: AB]} + {1'b0, inc[(ch+1)*AB +: AB]};
+  end
 
   logic [PixBits-1:0] out_d;
-  assign out_d = {add_sat(base[PixBits-1 -: AB], inc[3*AB +: AB]),
-                  add_sat(base[PixBits-1-AB -: AB], inc[2*AB +: AB]),
-                  add_sat(base[PixBits-1-2*AB -: AB], inc[AB +: AB]),
+  assign out_d = {colour_saturated[2] ? {AB{1'b1}} : colour_sum[2*AB +: AB],
+                  colour_saturated[1] ? {AB{1'b1}} : colour_sum[AB +: AB],
+                  colour_saturated[0] ? {AB{1'b1}} : colour_sum[0 +: AB],
                   // Never wraps: the increment is at most the transparency (mul_frac(t, f) <= t).
                   base[PixBits-1-3*AB -: AB] + inc[0 +: AB],
                   base[1 +: VoxelBits],

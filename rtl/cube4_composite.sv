@@ -230,6 +230,10 @@ module cube4_composite #(
 
   // The cut factor of the sample in stage 5 (one: no cut-plane hardware).
   logic [A-1:0] factor;
+  // Where that sample lies (inside the slab; beyond the falloff; else on the
+  // ramp) and whether its distance saturated (stage 2) or its ramp did
+  // (stage 4): module-level names for the coverage checker (rtl/assert).
+  logic cut_in_slab, cut_beyond, cut_distance_hi, cut_distance_lo, cut_ramp_saturated;
   if (HasCutPlane) begin : g_cut_plane
     ////////////////////////////////////////////////
     // Stage 1: the three products of d           //
@@ -254,10 +258,12 @@ module cube4_composite #(
     logic signed [DBits-1:0]   dist_sum;
     logic signed [CutBits-1:0] dist_d, dist_q;
     assign dist_sum = DBits'(term_x_q) + DBits'(term_y_q) + DBits'(term_z_q);
+    assign cut_distance_hi = dist_sum > DMax;
+    assign cut_distance_lo = dist_sum < -DMax;
     always_comb begin : saturate_distance
-      if (dist_sum > DMax) begin
+      if (cut_distance_hi) begin
         dist_d = CutBits'(DMax);
-      end else if (dist_sum < -DMax) begin
+      end else if (cut_distance_lo) begin
         dist_d = CutBits'(-DMax);
       end else begin
         dist_d = CutBits'(dist_sum);
@@ -304,8 +310,8 @@ module cube4_composite #(
     logic                in_slab_qq, beyond_qq;
     assign ramp_prod = RampBits'(ramp_span_q) * RampBits'(cut_inv_falloff_i) + RampHalf;
     // ramp > one iff any bit above the A bits of (prod + half) >> CutInvShift.
-    assign ramp_d = (|ramp_prod[RampBits-1:CutInvShift+A]) ? {A{1'b1}}
-                                                            : ramp_prod[CutInvShift+A-1:CutInvShift];
+    assign cut_ramp_saturated = |ramp_prod[RampBits-1:CutInvShift+A];
+    assign ramp_d = cut_ramp_saturated ? {A{1'b1}} : ramp_prod[CutInvShift+A-1:CutInvShift];
 
     logic unused_ramp_lsbs;
     assign unused_ramp_lsbs = ^ramp_prod[CutInvShift-1:0];
@@ -321,22 +327,27 @@ module cube4_composite #(
     ////////////////////////////////////////////////
     logic [A-1:0] inside_factor;
     always_comb begin : cut_factor
-      if (in_slab_qq) begin
+      if (cut_in_slab) begin
         inside_factor = {A{1'b1}};
-      end else if (beyond_qq) begin
+      end else if (cut_beyond) begin
         inside_factor = '0;
       end else begin
         inside_factor = ramp_q;
       end
       factor = cut_keep_inside_i ? inside_factor : {A{1'b1}} - inside_factor;
     end
+    assign cut_in_slab = in_slab_qq;
+    assign cut_beyond  = beyond_qq;
   end else begin : g_no_cut_plane
     assign factor = {A{1'b1}};
+    assign {cut_in_slab, cut_beyond, cut_distance_hi, cut_distance_lo, cut_ramp_saturated} = '0;
     // The cut-plane registers and the weights (used only for d) stay ports,
-    // so that both variants connect alike.
+    // so that both variants connect alike; the cut's coverage names stay
+    // too (constant here), for one checker of both.
     logic unused_cut_inputs;
     assign unused_cut_inputs = ^{cut_a_i, cut_b_i, cut_c_i, cut_dmin_i, cut_dmax_i, cut_falloff_i,
-                                 cut_inv_falloff_i, cut_keep_inside_i, wx_i, wy_i, wz_i};
+                                 cut_inv_falloff_i, cut_keep_inside_i, wx_i, wy_i, wz_i, cut_in_slab,
+                                 cut_beyond, cut_distance_hi, cut_distance_lo, cut_ramp_saturated};
   end
 
   logic [A-1:0] cut_alpha;
@@ -358,6 +369,7 @@ module cube4_composite #(
   // keeps premultiplied colour <= alpha (a no-op when G = 0).
   logic [AB-1:0]   pre_limit;
   logic [3*AB-1:0] pre_product, premultiplied;  // blue at [0 +: AB], green, red
+  logic [2:0]      pre_clamped;                  // the clamp acts (coverage checker)
   cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_alpha_acc (.pixel_i(cut_alpha_q), .acc_o(pre_limit));
   for (genvar ch = 0; ch < 3; ch++) begin : g_premultiply
     logic [AB-1:0] colour;
@@ -365,8 +377,8 @@ module cube4_composite #(
       .pixel_i(rgb_q[4*3*A + ch*A +: A]), .acc_o(colour));
     cube4_mul_frac #(.XBits(AB), .FBits(A)) u_product (
       .x_i(colour), .f_i(cut_alpha_q), .y_o(pre_product[ch*AB +: AB]));
-    assign premultiplied[ch*AB +: AB] =
-        (pre_product[ch*AB +: AB] < pre_limit) ? pre_product[ch*AB +: AB] : pre_limit;
+    assign pre_clamped[ch] = pre_product[ch*AB +: AB] > pre_limit;
+    assign premultiplied[ch*AB +: AB] = pre_clamped[ch] ? pre_limit : pre_product[ch*AB +: AB];
   end
 
   logic [AB-1:0] pre_red_q, pre_green_q, pre_blue_q, pre_alpha_q;

@@ -134,8 +134,10 @@ module cube4_shade_magnitude #(
   // Zero test and saturation.
   logic [CmpBits-1:0] x_last;
   assign x_last      = CmpBits'(x_q[(Stages-1)*XBits +: XBits]);
+  logic saturated;  // also the coverage checker's (rtl/assert)
+  assign saturated   = x_last > MaxM;
   assign magnitude_o = zero_q[Stages-1] ? '0
-                     : (x_last > MaxM)  ? MaxM[MagnitudeBits-1:0]
+                     : saturated        ? MaxM[MagnitudeBits-1:0]
                      :                    x_last[MagnitudeBits-1:0];
 
 endmodule

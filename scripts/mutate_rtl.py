@@ -14,10 +14,13 @@ Operators, on code lines (not comments, declarations or parameters) of the
 unit files: == <-> !=, && <-> ||, < -> <=, > -> >=, <= (compare) -> <,
 >= -> >, + -> -, - -> +, << <-> >>, 1'b1 <-> 1'b0, dropping a ! or ~.
 Sites are sampled at random (seeded) across units, at most --max in all.
+Each verdict is kept in the copy (results.jsonl): a run interrupted and
+started again with the same arguments resumes where it stopped (a mutant
+whose unit changed since is judged again).
 The report (Markdown) goes to stdout and, with --doc, into the "mutation"
 section of docs/verification.md.
 """
-import argparse, os, random, re, shutil, subprocess, sys, time
+import argparse, json, os, random, re, shutil, subprocess, sys, time, zlib
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OPS = [
@@ -28,8 +31,9 @@ OPS = [
     (r"!(?=[a-z(])", ""), (r"~(?=[a-z(])", ""),
 ]
 SKIP = re.compile(r"^\s*(//|input|output|parameter|localparam|logic|module|function|endfunction|typedef|`)")
-RTL_TESTS = ["test_rtl_addr", "test_rtl_interp", "test_rtl_interp_box", "test_rtl_gradient", "test_rtl_shade", "test_rtl_composite",
-             "test_rtl_compose"]
+# Every RTL test executable, as rtl/groups/*.cmake declare them.
+RTL_TESTS = sorted({m for g in os.listdir(os.path.join(HERE, "rtl", "groups")) if g.endswith(".cmake")
+                    for m in re.findall(r"cube4_rtl_test\((test_rtl_\w+)", open(os.path.join(HERE, "rtl", "groups", g)).read())})
 
 
 def code_part(line):
@@ -96,10 +100,21 @@ def main():
     pool = pool[: a.max]
     env = dict(os.environ, CUBE4_RTL_VECTORS=a.vectors)
 
+    done_path = os.path.join(work, "results.jsonl")
+    done = {}
+    if os.path.exists(done_path):
+        for row in open(done_path):
+            r = json.loads(row)
+            done[r["key"]] = r["result"]
     results = []
     for i, (unit, (line, c0, c1, old, new)) in enumerate(pool, 1):
         path = os.path.join(work, "rtl", unit + ".sv")
         original = open(path).read()
+        key = f"{unit}:{line}:{c0}:{old}:{new}:{zlib.crc32(original.encode())}"
+        if key in done:
+            results.append(tuple(done[key]))
+            print(f"mutate_rtl: {i}/{len(pool)} {unit}:{line + 1}: {done[key][4]} (earlier run)", file=sys.stderr)
+            continue
         lines = original.split("\n")
         lines[line] = lines[line][:c0] + new + lines[line][c1:]
         stamp = time.time()
@@ -121,6 +136,8 @@ def main():
         finally:
             open(path, "w").write(original)
         results.append((unit, line + 1, old, new or "(dropped)", verdict, by))
+        with open(done_path, "a") as f:
+            f.write(json.dumps({"key": key, "result": results[-1]}) + "\n")
         print(f"mutate_rtl: {i}/{len(pool)} {unit}:{line + 1} {old} -> {new or '(dropped)'}: {verdict} {by}",
               file=sys.stderr)
     run(["ninja", "-C", build] + RTL_TESTS, log)  # leave the copy's build unmutated

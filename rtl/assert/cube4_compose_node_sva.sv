@@ -8,7 +8,10 @@
 //                      accumulator is the front pixel of its blend);
 //   a_mode_stable    - blend_mode_i does not change while a pixel is inside
 //                      the node (Latency 2: stage 1 has chosen base and
-//                      increment by the mode the add then uses).
+//                      increment by the mode the add then uses);
+// and, for coverage (scripts/coverage.sh), a colour channel's sum saturating
+// in the add (c_colour_saturated: possible only in the network's add and
+// overlay nodes, where both pixels carry colour).
 //
 // Simulation only: not part of the unit, never synthesised.
 module cube4_compose_node_sva #(
@@ -23,7 +26,8 @@ module cube4_compose_node_sva #(
   input logic              valid_i,
   input logic [AB-1:0]     front_alpha_i,
   input logic              valid_o,
-  input logic [AB-1:0]     alpha_o
+  input logic [AB-1:0]     alpha_o,
+  input logic [2:0]        colour_saturated  // internal: the add's carries
 );
 
   logic [63:0] cycle;
@@ -67,6 +71,10 @@ module cube4_compose_node_sva #(
                     cycle, mode_q[1:0], blend_mode_i);
     end
   end
+
+  // The pixel in the add: the input's (Latency 0 or 1) or the one of the
+  // cycle before (Latency 2).
+  c_colour_saturated: cover property (@(posedge clk_i) (Latency == 2 ? valid_q : valid_i) && |colour_saturated);
 
 endmodule
 

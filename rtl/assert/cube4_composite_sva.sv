@@ -15,9 +15,15 @@
 //                      no sample is hidden where no surface is.
 // and, for coverage (scripts/coverage.sh), the cases a test suite must
 // reach: a sample under each blend mode (c_blend_*), in each of the eight
-// crop regions with cropping on (c_crop_region[r], r = in_x | in_y << 1 |
-// in_z << 2, the crop-mask bit that decides it: golden crop_visible), and
-// with polygons (c_polygons).
+// crop regions with cropping on (c_crop_region_r, r = in_x | in_y << 1 |
+// in_z << 2, the crop-mask bit that decides it: golden crop_visible), with
+// polygons (c_polygons), in each of the cut plane's three regions with the
+// cut plane on (c_cut_inside, c_cut_ramp, c_cut_beyond: golden cut_factor's
+// cases), and each saturation: the plane distance at either bound
+// (c_cut_distance_hi, _lo), the ramp above one (c_cut_ramp_saturated), the
+// premultiplied colour clamped to alpha (c_premultiply_clamped, only with
+// guard bits). One statement per case: verilator_coverage merges the
+// iterations of a generate loop into one point.
 //
 // Simulation only: not part of the unit, never synthesised.
 module cube4_composite_sva #(
@@ -26,7 +32,8 @@ module cube4_composite_sva #(
   parameter int unsigned CutInvShift = 24,
   parameter int unsigned PosBits     = 16,
   parameter int unsigned CutCoefBits = 12,
-  parameter int unsigned SliceBits   = 16
+  parameter int unsigned SliceBits   = 16,
+  parameter bit          HasCutPlane = 1'b1
 ) (
   input logic                             clk_i,
   input logic                             rst_ni,
@@ -53,7 +60,20 @@ module cube4_composite_sva #(
   input logic [PosBits-1:0]               x_i,
   input logic [PosBits-1:0]               y_i,
   input logic [PosBits-1:0]               z_i,
-  input logic                             valid_i
+  input logic                             valid_i,
+  // Internal: the valid of a sample in stage 2 (the cut distance), 4 (the
+  // ramp), 5 (the cut region) and 6 (the premultiplication), valid_q[s - 2]
+  // of the compositor, and the coverage signals.
+  input logic                             stage2_valid,
+  input logic                             stage4_valid,
+  input logic                             stage5_valid,
+  input logic                             stage6_valid,
+  input logic                             cut_in_slab,
+  input logic                             cut_beyond,
+  input logic                             cut_distance_hi,
+  input logic                             cut_distance_lo,
+  input logic                             cut_ramp_saturated,
+  input logic [2:0]                       pre_clamped
 );
 
   // cube4_composite's Latency is 7: a sample entered in the last 6 cycles
@@ -104,9 +124,26 @@ module cube4_composite_sva #(
   logic [2:0] crop_region;
   assign crop_region = {crop_z_lo_i <= z_i && z_i <= crop_z_hi_i, crop_y_lo_i <= y_i && y_i <= crop_y_hi_i,
                         crop_x_lo_i <= x_i && x_i <= crop_x_hi_i};
-  for (genvar r = 0; r < 8; r++) begin : g_crop_region
-    c_crop_region: cover property (@(posedge clk_i) valid_i && crop_enabled_i && crop_region == 3'(r));
-  end
+  logic crop_sample;
+  assign crop_sample = valid_i && crop_enabled_i;
+  c_crop_region_0: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd0);
+  c_crop_region_1: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd1);
+  c_crop_region_2: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd2);
+  c_crop_region_3: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd3);
+  c_crop_region_4: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd4);
+  c_crop_region_5: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd5);
+  c_crop_region_6: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd6);
+  c_crop_region_7: cover property (@(posedge clk_i) crop_sample && crop_region == 3'd7);
+
+  logic cut_on;
+  assign cut_on = HasCutPlane && cut_enabled_i;
+  c_cut_inside: cover property (@(posedge clk_i) stage5_valid && cut_on && cut_in_slab);
+  c_cut_ramp: cover property (@(posedge clk_i) stage5_valid && cut_on && !cut_in_slab && !cut_beyond);
+  c_cut_beyond: cover property (@(posedge clk_i) stage5_valid && cut_on && cut_beyond);
+  c_cut_distance_hi: cover property (@(posedge clk_i) stage2_valid && cut_on && cut_distance_hi);
+  c_cut_distance_lo: cover property (@(posedge clk_i) stage2_valid && cut_on && cut_distance_lo);
+  c_cut_ramp_saturated: cover property (@(posedge clk_i) stage4_valid && cut_on && cut_ramp_saturated);
+  c_premultiply_clamped: cover property (@(posedge clk_i) stage6_valid && |pre_clamped);
 
 endmodule
 
@@ -116,5 +153,7 @@ bind cube4_composite cube4_composite_sva #(
   .CutInvShift(CutInvShift),
   .PosBits    (PosBits),
   .CutCoefBits(CutCoefBits),
-  .SliceBits  (SliceBits)
-) u_sva (.*);
+  .SliceBits  (SliceBits),
+  .HasCutPlane(HasCutPlane)
+) u_sva (.stage2_valid(valid_q[0]), .stage4_valid(valid_q[2]), .stage5_valid(valid_q[3]),
+         .stage6_valid(valid_q[4]), .*);
