@@ -38,6 +38,10 @@ struct PolygonFrame {
     uint64_t translucent = 0;  // translucent fragments kept (in front of the opaque surface)
     uint64_t hidden = 0;       // translucent fragments at or behind the opaque surface, dropped
     uint64_t in_front = 0, in_slabs = 0, behind = 0;
+    // Triangles that drew an opaque fragment; per slab, the triangles with
+    // a fragment in it (what the geometry engine sets up for that slab).
+    uint64_t opaque_triangles = 0;
+    std::vector<uint32_t> slab_triangles;
   } counts;
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "golden/errors.hpp"
+#include "golden/polygon_connections.hpp"
 #include "golden/rasterise.hpp"
 #include "golden/shading_model.hpp"
 #include "golden/units/composite_polygon.hpp"
@@ -62,6 +63,7 @@ struct Fragment {
   int u, v;
   int64_t depth;  // 2^-kZFracBits sample slices
   Pixel px;
+  uint32_t triangle;  // its triangle's index in the frame, for the triangle counts
 };
 
 }  // namespace
@@ -166,11 +168,13 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   std::vector<int64_t> opaque_depth(pixels, kNone);
   std::vector<Pixel> opaque_px(pixels);
   std::vector<Fragment> translucent;
+  uint32_t triangle = 0, last_opaque = 0;  // triangles count from 1
   for (const Mesh& m : meshes) {
     const auto alpha = static_cast<uint32_t>(quantise_unit(m.opacity, p.alpha_bits));
     if (alpha == 0) continue;
     const bool opaque = alpha == full;
     for (const auto& t : m.triangles) {
+      ++triangle;
       const Vec3 a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
       const Vec3 rgb = polygon_color(s, L, f, a, b, c, m.color, m.lit);
       Rgb q{};
@@ -200,9 +204,11 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
                              [&](int u, int v, int64_t depth) {
                                const size_t i = static_cast<size_t>(v) * W + u;
                                if (!opaque) {
-                                 translucent.push_back({u, v, depth, px});
+                                 translucent.push_back({u, v, depth, px, triangle});
                                  return;
                                }
+                               if (last_opaque != triangle) ++out.counts.opaque_triangles;
+                               last_opaque = triangle;
                                ++out.counts.opaque;
                                // Nearer wins; on a tie the one drawn first.
                                if (depth < opaque_depth[i]) {
@@ -222,6 +228,7 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
                    [](const Fragment& x, const Fragment& y) { return x.depth < y.depth; });
   const RaySlices rays(r);
   const int64_t slice = int64_t{1} << kZFracBits;
+  std::vector<uint64_t> slab_triangle;  // k << 32 | triangle, per fragment in a slab
   for (const Fragment& g : translucent) {
     const size_t i = static_cast<size_t>(g.v) * W + g.u;
     // At or behind the opaque surface: hidden (the unclamped depths, so that
@@ -243,8 +250,13 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       out.slabs[static_cast<size_t>(k)].insert(g.u - r.base_origin_x() + rays.ix(k), g.v - r.base_origin_y() + rays.iy(k),
                                                g.px, p);
       ++out.counts.in_slabs;
+      slab_triangle.push_back(uint64_t{static_cast<uint32_t>(k)} << 32 | g.triangle);
     }
   }
+  std::sort(slab_triangle.begin(), slab_triangle.end());
+  out.counts.slab_triangles.assign(static_cast<size_t>(K), 0);
+  for (size_t i = 0; i < slab_triangle.size(); ++i)
+    if (i == 0 || slab_triangle[i] != slab_triangle[i - 1]) ++out.counts.slab_triangles[slab_triangle[i] >> 32];
   for (size_t i = 0; i < pixels; ++i)
     if (opaque_depth[i] != kNone) out.back[i] = pixel_over(out.back[i], opaque_px[i], p);
   return out;
@@ -254,24 +266,16 @@ PolygonTraffic polygon_traffic(const PolygonFrame& f, const Precision& p) {
   PolygonTraffic t;
   const uint64_t channel = static_cast<uint64_t>((p.alpha_bits + 7) / 8);
   t.image_bytes = static_cast<uint64_t>(f.width) * static_cast<uint64_t>(f.height) * (8 * channel + (kZBits + 7) / 8);
-  for (const SlabImage& s : f.slabs) {
+  const std::vector<SlabLoad> loads = slab_loads(f);
+  for (size_t k = 0; k < loads.size(); ++k) {
+    const SlabImage& s = f.slabs[k];
     ++t.slabs;
     t.raw_bytes += static_cast<uint64_t>(s.width()) * static_cast<uint64_t>(s.beams()) * 4 * channel;
     t.slice_cycles = static_cast<uint64_t>(s.beams() + 1) * static_cast<uint64_t>(s.lane_width(0));
-    uint64_t busiest = 0;
-    for (int lane = 0; lane < s.lanes(); ++lane) {
-      const RleLine cleared = rle_clear(s.lane_width(lane));
-      uint64_t lane_flits = 0;
-      for (int y = 0; y < s.beams(); ++y) {
-        const RleLine& line = s.empty() ? cleared : s.line(y, lane);
-        lane_flits += rle_flits(line);
-        t.rle_bytes += 2 * line.size();
-      }
-      t.flits += lane_flits;
-      busiest = std::max(busiest, lane_flits);
-    }
-    t.rle_cycles += std::max(busiest, t.slice_cycles);
-    if (busiest > t.slice_cycles) ++t.slabs_over_slice;
+    t.flits += loads[k].flits;
+    t.rle_bytes += 2 * loads[k].words;
+    t.rle_cycles += std::max(loads[k].read_flits, t.slice_cycles);
+    if (loads[k].read_flits > t.slice_cycles) ++t.slabs_over_slice;
   }
   return t;
 }

@@ -106,6 +106,8 @@ void SlabImage::insert(int x, int y, const Pixel& px, const Precision& p) {
   }
   const int lane = x % lanes_;
   RleLine& l = lines_[static_cast<size_t>(y) * lanes_ + lane];
+  ++inserts_;
+  copied_flits_ += rle_flits(l);
   l = rle_insert(l, lane_width(lane), x / lanes_, px, p);
 }
 

@@ -68,10 +68,15 @@ class SlabImage {
   void decode_beam(int y, Pixel* out) const;
   // Flits over all lines: the data the slab sends to the pipelines.
   size_t flits() const;
+  // What building it cost Fig. 13's hardware: the fragments inserted and
+  // the flits copied doing so (each insert copies its line, a flit a clock).
+  uint64_t inserts() const { return inserts_; }
+  uint64_t copied_flits() const { return copied_flits_; }
 
  private:
   int width_ = 0, beams_ = 0, lanes_ = 1;
   std::vector<RleLine> lines_;
+  uint64_t inserts_ = 0, copied_flits_ = 0;
 };
 
 }  // namespace cube4::golden

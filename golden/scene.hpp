@@ -167,6 +167,15 @@ struct TagSource {
   bool given = false;                    // the scene has "tags"
 };
 
+// The geometry engine and the buffers that connect it to the pipelines, as
+// Cube-5 §§4-6 assume them (docs/scene.md, "polygon_engine").
+struct PolygonEngine {
+  double fill_rate = 180e6;       // fragments/s of the geometry engine (§6)
+  double triangle_rate = 6e6;     // triangles/s of its set-up (§6)
+  double dual_fill_rate = 357e6;  // pixels/s into the dual-use buffer (§4, §6)
+  double rle_clock_hz = 200e6;    // the run-length buffer's flit clock (§5)
+};
+
 struct Scene {
   std::string file;  // where it was read from ("" = built in)
   VolumeSource volume;
@@ -192,6 +201,7 @@ struct Scene {
   double clock_mhz = 125;
   Precision precision;
   std::vector<MeshSpec> polygons;   // docs/scene.md, "polygons"
+  PolygonEngine polygon_engine;     // its rates, for the connections' times (golden/polygon_connections.hpp)
   TagSource tags;                   // used when precision.tag_bits > 0
 
   // Tags 0 .. tag_count() - 1 exist (one without tags).

@@ -749,6 +749,23 @@ MeshSpec read_mesh(const Node& n) {
   return m;
 }
 
+// Rates in millions a second (clock in MHz), each above 0 and at most 10^6.
+void read_polygon_engine(const Node& n, PolygonEngine& e) {
+  ObjectReader r(n);
+  const auto rate = [&](const char* key, double& out) {
+    if (auto v = r.get(key)) {
+      const double m = v->number();
+      if (!(m > 0 && m <= 1e6)) v->fail("is out of range (0, 1000000] (millions a second)");
+      out = m * 1e6;
+    }
+  };
+  rate("fill_rate_m", e.fill_rate);
+  rate("triangle_rate_m", e.triangle_rate);
+  rate("dual_fill_rate_m", e.dual_fill_rate);
+  rate("rle_clock_mhz", e.rle_clock_hz);
+  r.reject_unknown();
+}
+
 void read_polygons(const Node& n, Scene& s) {
   for (const Node& m : n.elements(0, kMaxMeshes)) s.polygons.push_back(read_mesh(m));
 }
@@ -956,6 +973,7 @@ Scene parse_scene(const std::string& json_text, const std::string& file_name) {
   }
   if (auto n = r.get("precision")) read_precision(*n, s.precision);
   if (auto n = r.get("polygons")) read_polygons(*n, s);
+  if (auto n = r.get("polygon_engine")) read_polygon_engine(*n, s.polygon_engine);
   if (auto n = r.get("tags")) read_tags(*n, s.material, s.tags);
   // Unknown keys first: a misspelt "volume" should be reported as such.
   r.reject_unknown();

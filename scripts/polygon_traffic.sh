@@ -4,7 +4,9 @@
 # polygon_traffic(): slab lines as the run-length connection sends them,
 # against plain RGBA slab images), and sets beside them the paper's
 # arithmetic for 256^3 at 30 Hz; writes the "polygon-traffic" section of
-# docs/performance.md.
+# docs/performance.md. Then the two connections' frame times (golden
+# connection_times(): the scenes' reports, and Fig. 16/17's bars from
+# tb/bench/cube5_connections) into its "cube5-connections" section.
 #   scripts/polygon_traffic.sh        (CUBE4_BUILD: the build folder, default build/)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -56,5 +58,28 @@ print("|---|---:|---:|---|")
 for n, paper in ((256, "30 Hz"), (512, "under 4 Hz")):
     s = json.load(open(f"{tmp}/volume{n}.r.json"))["system"]
     print(f"| {n}³ | {s['cycles_per_frame']:,} | {s['fps_steady_state']:.2f} | {paper} |")
+PY
+"$build/tb/bench/cube5_connections" > "$tmp/bars.md"
+"$python" - "$tmp" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" cube5-connections
+import json, sys, datetime
+tmp = sys.argv[1]
+print(f"Measured {datetime.date.today()} by `scripts/polygon_traffic.sh`, with §6's rates (fill 180 M fragments/s, "
+      "6 M triangles/s, the dual-use buffer 357 M pixels/s, the run-length buffer's flit clock 200 MHz; scene keys "
+      "`polygon_engine`).")
+print()
+print("Our hybrid scenes (their own size, p = 4, the scene's clock), frame time in ms as `cube4 render --report` "
+      "gives it (`polygon_connections`):")
+print()
+print("| scene | volume alone | opaque polygons | run-length connection | dual-use connection | RLE slabs over their slice |")
+print("|---|---:|---:|---:|---:|---:|")
+for scene in ("brain_probe", "brain_probe_translucent", "sphere_box"):
+    c = json.load(open(f"{tmp}/{scene}.json"))["polygon_connections"]
+    print(f"| scenes/{scene}.json | {c['volume_s'] * 1e3:.3f} | {c['opaque_s'] * 1e3:.3f} | {c['rle_s'] * 1e3:.3f} | "
+          f"{c['dual_s'] * 1e3:.3f} | {c['rle_slabs_over_slice']} |")
+print()
+print("Fig. 16 (256³) and Fig. 17 (512³), four pipelines at 133 MHz: `tb/bench/cube5_connections` (uniformly "
+      "random translucent fragments, d·W·H a frame spread over the slabs, one triangle per 50):")
+print()
+sys.stdout.write(open(f"{tmp}/bars.md").read())
 PY
 echo "polygon_traffic: docs/performance.md updated" >&2

@@ -19,6 +19,7 @@
 #include "golden/host_driver.hpp"
 #include "golden/input_file.hpp"
 #include "golden/mesh.hpp"
+#include "golden/polygon_connections.hpp"
 #include "golden/polygons.hpp"
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
@@ -503,6 +504,7 @@ int run_render(const RenderArgs& args) {
   std::optional<golden::BlockRanges> ranges;
   std::optional<golden::PolygonFrame::Counts> polygon_counts;  // the fixed and system models' first frame's
   std::optional<golden::PolygonTraffic> polygon_traffic;       // and what moving its images costs
+  std::optional<golden::ConnectionTimes> polygon_connections;  // and Cube-5's two connections' frame times
   for (int rep = 0; rep < a.repeat; ++rep) {
     const bool last = rep + 1 == a.repeat;
     const auto t0 = std::chrono::steady_clock::now();
@@ -555,6 +557,9 @@ int run_render(const RenderArgs& args) {
         if (i == 0) {
           polygon_counts = polygons->counts;
           polygon_traffic = golden::polygon_traffic(*polygons, lanes.precision);
+          polygon_connections = golden::connection_times(
+              golden::slab_loads(*polygons), polygon_traffic->slice_cycles, lanes.clock_mhz * 1e6,
+              polygons->counts.opaque, polygons->counts.opaque_triangles, lanes.polygon_engine);
         }
       }
       const golden::PolygonFrame* frame_polygons = polygons ? &*polygons : nullptr;
@@ -665,6 +670,12 @@ int run_render(const RenderArgs& args) {
                               {"slice_cycles", polygon_traffic->slice_cycles},
                               {"rle_cycles", polygon_traffic->rle_cycles},
                               {"slabs_over_slice", polygon_traffic->slabs_over_slice}};
+    if (polygon_connections)  // Cube-5 §§4-6: the frame time through each connection (golden/polygon_connections.hpp)
+      r["polygon_connections"] = {{"volume_s", polygon_connections->volume_s},
+                                  {"opaque_s", polygon_connections->opaque_s},
+                                  {"rle_s", polygon_connections->rle_s},
+                                  {"dual_s", polygon_connections->dual_s},
+                                  {"rle_slabs_over_slice", polygon_connections->rle_slabs_over_slice}};
     if (header_plan) {
       r["blocks"] = tb::describe_blocks(*header_plan);
     } else if (partitioned(counts)) {

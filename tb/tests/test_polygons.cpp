@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "golden/errors.hpp"
+#include "golden/polygon_connections.hpp"
 #include "golden/polygons.hpp"
 #include "golden/rasterise.hpp"
 #include "golden/rle_buffer.hpp"
@@ -671,4 +672,57 @@ TEST(PolygonTraffic, CountsTheSlabLinesTheDecodersReadAndTheFullImagesTheyReplac
   EXPECT_EQ(t.slabs_over_slice, 0u);
   EXPECT_EQ(t.rle_cycles, 10u * t.slice_cycles);
   EXPECT_GT(t.raw_bytes, t.rle_bytes);
+}
+
+TEST(PolygonConnections, SlabLoadsCountTheInsertsTheirCopyingAndTheBusiestRead) {
+  // One line of 8 pixels, one lane: inserting x = 0, 1, 2 in turn copies
+  // the line as it stands, a run (1 flit), then pixel + run (2), then 3.
+  golden::PolygonFrame f;
+  f.slabs.assign(2, golden::SlabImage(8, 1, 1));
+  f.counts.slab_triangles = {0, 7};
+  const golden::Precision p;
+  Pixel px{};
+  px.a = 100;
+  for (int x = 0; x < 3; ++x) f.slabs[1].insert(x, 0, px, p);
+  const std::vector<golden::SlabLoad> l = golden::slab_loads(f);
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_EQ(l[0].fragments, 0u);
+  EXPECT_EQ(l[0].copied_flits, 0u);
+  EXPECT_EQ(l[0].read_flits, 1u);  // the cleared line
+  EXPECT_EQ(l[1].fragments, 3u);
+  EXPECT_EQ(l[1].copied_flits, 1u + 2 + 3);
+  EXPECT_EQ(l[1].read_flits, 4u);  // three pixels and the run after them
+  EXPECT_EQ(l[1].words, 3u * 4 + 5);
+  EXPECT_EQ(l[1].triangles, 7u);
+}
+
+TEST(PolygonConnections, FrameTimesOfTheRunLengthAndTheDualUseBuffer) {
+  // Slices of 1 µs (100 cycles at 100 MHz); rates of a nanosecond a
+  // fragment, triangle and flit, the dual-use buffer twice as fast.
+  golden::PolygonEngine e;
+  e.fill_rate = 1e9;
+  e.triangle_rate = 1e9;
+  e.dual_fill_rate = 2e9;
+  e.rle_clock_hz = 1e9;
+  std::vector<golden::SlabLoad> slabs(2);
+  slabs[0].fragments = 500;  // drawn in 0.5 µs, copied in 2 µs
+  slabs[0].triangles = 1;
+  slabs[0].copied_flits = 2000;
+  slabs[0].read_flits = 50;
+  slabs[1].fragments = 3000;  // drawn in 3 µs; read in 3 µs at 100 MHz
+  slabs[1].copied_flits = 1000;
+  slabs[1].read_flits = 300;
+  const golden::ConnectionTimes t = golden::connection_times(slabs, 100, 100e6, 1000, 10, e);
+  EXPECT_NEAR(t.volume_s, 2e-6, 1e-15);
+  EXPECT_NEAR(t.opaque_s, 1e-6, 1e-15);
+  // Slab 0 drawn first (2 µs); slice 0 waits for slab 1's drawing (3 µs);
+  // slice 1 for its slab's reading (3 µs).
+  EXPECT_NEAR(t.rle_s, 8e-6, 1e-15);
+  EXPECT_EQ(t.rle_slabs_over_slice, 2u);
+  // Opaque first (0.5 µs), then each slice and its slab's drawing in turn.
+  EXPECT_NEAR(t.dual_s, 0.5e-6 + (1e-6 + 0.25e-6) + (1e-6 + 1.5e-6), 1e-15);
+  // Without polygons both are the volume alone.
+  const golden::ConnectionTimes v = golden::connection_times(std::vector<golden::SlabLoad>(2), 100, 100e6, 0, 0, e);
+  EXPECT_EQ(v.rle_s, v.volume_s);
+  EXPECT_EQ(v.dual_s, v.volume_s);
 }

@@ -748,5 +748,22 @@ TEST(SceneEffects, AllNamesInOrder) {
                               "cut_plane", "supersampling"}));
 }
 
+TEST(SceneMachine, PolygonEngineRatesInMillionsASecond) {
+  const Scene d = parse_with("");
+  EXPECT_EQ(d.polygon_engine.fill_rate, 180e6);  // Cube-5 §6's assumptions by default
+  EXPECT_EQ(d.polygon_engine.triangle_rate, 6e6);
+  EXPECT_EQ(d.polygon_engine.dual_fill_rate, 357e6);
+  EXPECT_EQ(d.polygon_engine.rle_clock_hz, 200e6);
+  const Scene s = parse_with(
+      R"("polygon_engine": {"fill_rate_m": 90, "triangle_rate_m": 0.5, "dual_fill_rate_m": 1000, "rle_clock_mhz": 266})");
+  EXPECT_EQ(s.polygon_engine.fill_rate, 90e6);
+  EXPECT_EQ(s.polygon_engine.triangle_rate, 0.5e6);
+  EXPECT_EQ(s.polygon_engine.dual_fill_rate, 1000e6);
+  EXPECT_EQ(s.polygon_engine.rle_clock_hz, 266e6);
+  expect_error(with(R"("polygon_engine": {"fill_rate_m": 0})"), {"\"polygon_engine.fill_rate_m\"", "out of range"});
+  expect_error(with(R"("polygon_engine": {"rle_clock_mhz": -200})"), {"\"polygon_engine.rle_clock_mhz\"", "out of range"});
+  expect_error(with(R"("polygon_engine": {"fill_rate": 180})"), {"unknown key \"polygon_engine.fill_rate\""});
+}
+
 }  // namespace
 }  // namespace cube4::golden

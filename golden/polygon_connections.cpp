@@ -1,0 +1,65 @@
+#include "golden/polygon_connections.hpp"
+
+#include <algorithm>
+
+namespace cube4::golden {
+
+std::vector<SlabLoad> slab_loads(const PolygonFrame& f) {
+  std::vector<SlabLoad> out(f.slabs.size());
+  for (size_t k = 0; k < f.slabs.size(); ++k) {
+    const SlabImage& s = f.slabs[k];
+    SlabLoad& l = out[k];
+    l.fragments = s.inserts();
+    l.copied_flits = s.copied_flits();
+    l.triangles = k < f.counts.slab_triangles.size() ? f.counts.slab_triangles[k] : 0;
+    for (int lane = 0; lane < s.lanes(); ++lane) {
+      uint64_t flits = 0;
+      const RleLine cleared = rle_clear(s.lane_width(lane));
+      for (int y = 0; y < s.beams(); ++y) {
+        const RleLine& line = s.empty() ? cleared : s.line(y, lane);
+        flits += rle_flits(line);
+        l.words += line.size();
+      }
+      l.flits += flits;
+      l.read_flits = std::max(l.read_flits, flits);
+    }
+  }
+  return out;
+}
+
+ConnectionTimes connection_times(const std::vector<SlabLoad>& slabs, uint64_t slice_cycles, double clock_hz,
+                                 uint64_t opaque_fragments, uint64_t opaque_triangles, const PolygonEngine& e) {
+  ConnectionTimes t;
+  const double slice_s = static_cast<double>(slice_cycles) / clock_hz;
+  const auto drawing = [&](double fragments, double triangles, double fill) {
+    return std::max(fragments / fill, triangles / e.triangle_rate);
+  };
+  t.opaque_s = drawing(static_cast<double>(opaque_fragments), static_cast<double>(opaque_triangles), e.fill_rate);
+  const double opaque_dual_s =
+      drawing(static_cast<double>(opaque_fragments), static_cast<double>(opaque_triangles), e.dual_fill_rate);
+  // RLE: slab k + 1 is drawn while slice k composites with slab k; slab 0
+  // before any.
+  std::vector<double> draw_s(slabs.size());
+  for (size_t k = 0; k < slabs.size(); ++k)
+    draw_s[k] = std::max(drawing(static_cast<double>(slabs[k].fragments), static_cast<double>(slabs[k].triangles),
+                                 e.fill_rate),
+                         static_cast<double>(slabs[k].copied_flits) / e.rle_clock_hz);
+  double rle = draw_s.empty() ? 0.0 : draw_s[0];
+  for (size_t k = 0; k < slabs.size(); ++k) {
+    const SlabLoad& l = slabs[k];
+    const double composite_s = std::max(slice_s, static_cast<double>(l.read_flits) / clock_hz);
+    const double step = std::max(composite_s, k + 1 < slabs.size() ? draw_s[k + 1] : 0.0);
+    if (step > slice_s) ++t.rle_slabs_over_slice;
+    rle += step;
+    t.volume_s += slice_s;
+    t.dual_s += slice_s + drawing(static_cast<double>(l.fragments), static_cast<double>(l.triangles),
+                                  e.dual_fill_rate);
+  }
+  // The opaque polygons overlap the previous frame's volume (RLE) or come
+  // first (dual use).
+  t.rle_s = std::max(rle, t.opaque_s);
+  t.dual_s += opaque_dual_s;
+  return t;
+}
+
+}  // namespace cube4::golden
