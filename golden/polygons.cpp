@@ -224,12 +224,17 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       out.z[i] = static_cast<uint32_t>(std::clamp<int64_t>(opaque_depth[i], 0, kZNone));
   // Front to back, so that each image blends a pixel's fragments over one
   // another in depth order; equal depths in the order drawn.
-  std::stable_sort(translucent.begin(), translucent.end(),
-                   [](const Fragment& x, const Fragment& y) { return x.depth < y.depth; });
+  // (Sorted as depth and draw index, 16 bytes a fragment, rather than the
+  // fragments themselves.)
+  std::vector<std::pair<int64_t, uint32_t>> order(translucent.size());
+  for (size_t i = 0; i < translucent.size(); ++i) order[i] = {translucent[i].depth, static_cast<uint32_t>(i)};
+  std::sort(order.begin(), order.end());
   const RaySlices rays(r);
   const int64_t slice = int64_t{1} << kZFracBits;
   std::vector<uint64_t> slab_triangle;  // k << 32 | triangle, per fragment in a slab
-  for (const Fragment& g : translucent) {
+  slab_triangle.reserve(translucent.size());
+  for (const auto& [depth, index] : order) {
+    const Fragment& g = translucent[index];
     const size_t i = static_cast<size_t>(g.v) * W + g.u;
     // At or behind the opaque surface: hidden (the unclamped depths, so that
     // this holds in front of the volume too).

@@ -6,7 +6,9 @@
 //
 // rle_insert() is the paper's RLE_AddPixelToScanline: the encoded line is
 // copied flit by flit into a new one, the new pixel blended in at its
-// position, a run of blank pixels split around it. Read literally, the
+// position, a run of blank pixels split around it (rle_insert_into() makes
+// the same line in place, without the copy: the flits the hardware copies
+// are counted by rle_flits()). Read literally, the
 // paper's pseudo-code has three faults at run ends, which ours does not
 // share (the tests insert at every position of every kind of line):
 //  - a fragment on the last pixel of a run longer than one is never
@@ -40,6 +42,11 @@ std::vector<Pixel> rle_decode(const RleLine& line, int width);
 // holds there (fragments are inserted front to back: pixel_over(old, px)).
 // A blank px changes nothing.
 RleLine rle_insert(const RleLine& line, int width, int x, const Pixel& px, const Precision& p);
+// The same insert on the line itself; returns the flits of the line
+// before it (rle_flits(): what the hardware copies). Throws
+// std::logic_error, as rle_insert() does, on a line that does not hold
+// `width` pixels.
+size_t rle_insert_into(RleLine& line, int width, int x, const Pixel& px, const Precision& p);
 // Flits in a line: the cycles Fig. 13's hardware spends copying it.
 size_t rle_flits(const RleLine& line);
 
@@ -48,10 +55,11 @@ size_t rle_flits(const RleLine& line);
 class SlabImage {
  public:
   SlabImage() = default;
-  SlabImage(int width, int beams, int lanes) : width_(width), beams_(beams), lanes_(lanes) {}
+  SlabImage(int width, int beams, int lanes);
   // An image from its beams x lanes lines, beam by beam (as line() orders
-  // them), e.g. as a bus delivered them. Throws std::logic_error unless
-  // every line holds exactly its lane's pixels.
+  // them), e.g. as a bus delivered them; an empty line stands for its
+  // lane's cleared line. Throws std::logic_error unless every line holds
+  // exactly its lane's pixels.
   SlabImage(int width, int beams, int lanes, std::vector<RleLine> lines);
   int width() const { return width_; }
   int beams() const { return beams_; }
@@ -60,12 +68,29 @@ class SlabImage {
   int lane_width(int lane) const { return lane < width_ ? (width_ - lane + lanes_ - 1) / lanes_ : 0; }
   // No fragment at all: the lines are not even stored (every one cleared).
   bool empty() const { return lines_.empty(); }
-  const RleLine& line(int y, int lane) const { return lines_[static_cast<size_t>(y) * lanes_ + lane]; }
+  const RleLine& line(int y, int lane) const {
+    if (lines_.empty()) return cleared_[static_cast<size_t>(lane)];
+    const RleLine& l = lines_[static_cast<size_t>(y) * lanes_ + lane];
+    return l.empty() ? cleared_[static_cast<size_t>(lane)] : l;
+  }
   // Inserts a fragment at (x, y) with rle_insert on its lane's line.
   void insert(int x, int y, const Pixel& px, const Precision& p);
   // Beam y as the p decoders deliver it: out[x] for x in [0, width).
   // Throws std::logic_error on a malformed line.
   void decode_beam(int y, Pixel* out) const;
+  // visit(x, px) for each pixel of beam y that is not blank, lane by lane
+  // (decode_beam() without the blank pixels). Throws std::logic_error on a
+  // malformed line.
+  template <class Visit>
+  void for_each_pixel(int y, Visit&& visit) const {
+    if (empty()) return;
+    for (int l = 0; l < lanes_ && l < width_; ++l) {
+      const RleLine& words = line(y, l);
+      if (!rle_for_each_pixel(words.data(), words.size(), lane_width(l),
+                              [&](int i, const Pixel& px) { visit(l + i * lanes_, px); }))
+        malformed(y, l);
+    }
+  }
   // Flits over all lines: the data the slab sends to the pipelines.
   size_t flits() const;
   // What building it cost Fig. 13's hardware: the fragments inserted and
@@ -74,8 +99,14 @@ class SlabImage {
   uint64_t copied_flits() const { return copied_flits_; }
 
  private:
+  [[noreturn]] static void malformed(int y, int lane);
+
   int width_ = 0, beams_ = 0, lanes_ = 1;
+  // Beam by beam, lane by lane; a line never inserted into is stored empty
+  // and read as its lane's cleared line (cleared_), so that an image with
+  // a few fragments allocates only the lines they fall in.
   std::vector<RleLine> lines_;
+  std::vector<RleLine> cleared_;
   uint64_t inserts_ = 0, copied_flits_ = 0;
 };
 

@@ -105,10 +105,9 @@ void SliceCompositor::start_polygons() {
 void SliceCompositor::composite_slab(int k, int y, RayAcc* ray) const {
   const SlabImage& slab = poly_->slabs[static_cast<size_t>(k)];
   if (slab.empty()) return;
-  thread_local std::vector<Pixel> row;  // bands call this concurrently
-  row.resize(static_cast<size_t>(nx_));
-  slab.decode_beam(y, row.data());
-  for (int x = 0; x < nx_; ++x) ray[x] = ray_over_pixel(ray[x], row[static_cast<size_t>(x)], r_.p);
+  // A blank slab pixel leaves its ray as it is (ray_over_pixel): only the
+  // slab's fragments are composited.
+  slab.for_each_pixel(y, [&](int x, const Pixel& px) { ray[x] = ray_over_pixel(ray[x], px, r_.p); });
 }
 
 BasePlane empty_base_plane(const Registers& r) {

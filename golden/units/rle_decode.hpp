@@ -26,6 +26,23 @@ namespace cube4::golden {
 
 inline constexpr int kRleRunMax = 65536;  // pixels in one run flit
 
+// The flit at words[at]: a pixel (one pixel, 4 words) or a run of blank
+// pixels (5 words); ok is false if the line ends inside it. The one reading
+// of the format, for the decoder below and every walk over a line.
+struct RleFlit {
+  Pixel px;             // blank for a run
+  uint32_t length = 0;  // pixels
+  uint32_t words = 0;
+  bool ok = false;
+};
+constexpr RleFlit rle_flit(const uint16_t* w, size_t count, size_t at) {
+  if (at + 4 > count) return {};
+  const Pixel px{w[at], w[at + 1], w[at + 2], w[at + 3]};
+  if ((px.r | px.g | px.b | px.a) != 0) return {px, 1, 4, true};
+  if (at + 5 > count) return {};
+  return {px, uint32_t{w[at + 4]} + 1, 5, true};
+}
+
 // The decoder's state: where it is in the line and how many blank pixels
 // of the current run are still to come. next() is one cycle.
 class RleDecoder {
@@ -39,22 +56,14 @@ class RleDecoder {
       --run_left_;
       return {};
     }
-    if (at_ + 4 > count_) {
+    const RleFlit f = rle_flit(w_, count_, at_);
+    if (!f.ok) {
       error_ = true;
       return {};
     }
-    const Pixel px{w_[at_], w_[at_ + 1], w_[at_ + 2], w_[at_ + 3]};
-    if ((px.r | px.g | px.b | px.a) != 0) {
-      at_ += 4;
-      return px;
-    }
-    if (at_ + 5 > count_) {
-      error_ = true;
-      return {};
-    }
-    run_left_ = w_[at_ + 4];  // this cycle's pixel is the run's first
-    at_ += 5;
-    return {};
+    at_ += f.words;
+    run_left_ = f.length - 1;  // this cycle's pixel is the flit's first
+    return f.px;
   }
   // Every word read and no run left over: the line had exactly the pixels
   // asked of it.
@@ -75,6 +84,23 @@ constexpr bool rle_decode_line(const uint16_t* words, size_t count, int pixels, 
   RleDecoder d(words, count);
   for (int i = 0; i < pixels; ++i) out[static_cast<size_t>(i) * stride] = d.next();
   return d.finished();
+}
+
+// Calls visit(i, px) for each pixel i of the line that is not blank, a
+// run at a time (the decoder's output without its blank cycles); true if
+// the line held exactly `pixels` pixels, as rle_decode_line() would say.
+template <class Visit>
+constexpr bool rle_for_each_pixel(const uint16_t* words, size_t count, int pixels, Visit&& visit) {
+  size_t at = 0;
+  int64_t i = 0;
+  while (i < pixels) {
+    const RleFlit f = rle_flit(words, count, at);
+    if (!f.ok) return false;
+    if (f.words == 4) visit(static_cast<int>(i), f.px);
+    at += f.words;
+    i += f.length;
+  }
+  return i == pixels && at == count;
 }
 
 }  // namespace cube4::golden

@@ -94,7 +94,6 @@ std::optional<PolygonBuffer::Fault> PolygonBuffer::frame(const std::array<int, 3
   const golden::SlabImage shape(dim_x, dim_y, lanes);
   out.slabs.assign(static_cast<size_t>(slices), shape);
   if (blank) return std::nullopt;
-  std::vector<golden::Pixel> scratch(static_cast<size_t>(dim_x));
   for (int k = 0; k < slices; ++k) {
     const std::vector<uint32_t>& s = slabs_[static_cast<size_t>(k)];
     if (s.empty()) continue;
@@ -102,18 +101,27 @@ std::optional<PolygonBuffer::Fault> PolygonBuffer::frame(const std::array<int, 3
     std::vector<golden::RleLine> lines;
     lines.reserve(static_cast<size_t>(dim_y) * lanes);
     size_t at = 0;
+    golden::RleLine line;
     for (int y = 0; y < dim_y; ++y)
       for (int l = 0; l < lanes; ++l) {
         const uint64_t line_addr = base + 4 * uint64_t{at};
         if (at >= s.size()) return Fault{ErrorCode::PolygonImage, line_addr};
         const size_t count = s[at++];
         if ((count + 1) / 2 > s.size() - at) return Fault{ErrorCode::PolygonImage, line_addr};
-        golden::RleLine line(count);
+        // Most lines of a slab are cleared (one run: words 0, 0, 0, 0,
+        // width - 1): kept as the image keeps one never written.
+        const int w = shape.lane_width(l);
+        if (w > 0 && count == 5 && s[at] == 0 && s[at + 1] == 0 && s[at + 2] == static_cast<uint32_t>(w - 1)) {
+          at += 3;
+          lines.emplace_back();
+          continue;
+        }
+        line.resize(count);
         for (size_t i = 0; i < count; ++i) line[i] = static_cast<uint16_t>(s[at + i / 2] >> (16 * (i % 2)));
         at += (count + 1) / 2;
-        if (!golden::rle_decode_line(line.data(), line.size(), shape.lane_width(l), scratch.data()))
+        if (!golden::rle_for_each_pixel(line.data(), line.size(), shape.lane_width(l), [](int, const golden::Pixel&) {}))
           return Fault{ErrorCode::PolygonImage, line_addr};
-        lines.push_back(std::move(line));
+        lines.push_back(line);
       }
     // Words past the last line: the stream is not this frame's shape.
     if (at != s.size()) return Fault{ErrorCode::PolygonImage, base + 4 * uint64_t{at}};

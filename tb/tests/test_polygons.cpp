@@ -228,8 +228,77 @@ TEST(Rle, SlabImagesDecodePerPipelineToTheSameBeam) {
           ASSERT_TRUE(same(beam[static_cast<size_t>(x)], dense[static_cast<size_t>(y) * width + x]))
               << "width " << width << ", lanes " << lanes << ", (" << x << ", " << y << ")";
         for (int l = 0; l < lanes; ++l) EXPECT_TRUE(canonical(slab.line(y, l), slab.lane_width(l)));
+        // The compositor's walk: the same pixels without the blank ones.
+        std::vector<Pixel> walked(static_cast<size_t>(width));
+        slab.for_each_pixel(y, [&](int x, const Pixel& px) {
+          ASSERT_FALSE(golden::blank(px));
+          ASSERT_TRUE(golden::blank(walked[static_cast<size_t>(x)])) << "pixel " << x << " visited twice";
+          walked[static_cast<size_t>(x)] = px;
+        });
+        for (int x = 0; x < width; ++x)
+          ASSERT_TRUE(same(walked[static_cast<size_t>(x)], beam[static_cast<size_t>(x)])) << "(" << x << ", " << y << ")";
       }
     }
+}
+
+// rle_for_each_pixel() reads the format as the decoder does: on any words,
+// well formed or not, it accepts exactly the lines rle_decode_line() does,
+// and visits exactly its non-blank pixels.
+TEST(Rle, RunWalkAgreesWithTheDecoderOnAnyWords) {
+  std::mt19937 gen(34);
+  int accepted = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    // Half of the trials random words; half a line of random pixels, then
+    // perhaps cut short or with one word changed, asked for its width or
+    // a pixel more or less.
+    golden::RleLine words;
+    int pixels = std::uniform_int_distribution<int>(0, 8)(gen);
+    if (trial % 2 == 0) {
+      words.resize(std::uniform_int_distribution<size_t>(0, 14)(gen));
+      for (uint16_t& w : words) w = static_cast<uint16_t>(std::uniform_int_distribution<int>(0, 3)(gen) == 0 ? gen() % 4 : 0);
+    } else {
+      std::vector<Pixel> dense(static_cast<size_t>(pixels));
+      for (Pixel& px : dense)
+        if (gen() % 2) px = random_pixel(gen, 8);
+      words = golden::rle_encode(dense.data(), pixels);
+      if (!words.empty() && gen() % 4 == 0) words.pop_back();
+      if (!words.empty() && gen() % 4 == 0) words[gen() % words.size()] = static_cast<uint16_t>(gen() % 3);
+      pixels += static_cast<int>(gen() % 5 == 0) - static_cast<int>(gen() % 5 == 0);
+      pixels = std::max(pixels, 0);
+    }
+    std::vector<Pixel> dense(static_cast<size_t>(pixels) + 1);
+    const bool decoded = golden::rle_decode_line(words.data(), words.size(), pixels, dense.data());
+    std::vector<Pixel> walked(static_cast<size_t>(pixels) + 1);
+    bool in_range = true;
+    const bool walked_ok = golden::rle_for_each_pixel(words.data(), words.size(), pixels, [&](int i, const Pixel& px) {
+      if (i < 0 || i >= pixels) in_range = false;
+      else walked[static_cast<size_t>(i)] = px;
+    });
+    ASSERT_EQ(walked_ok, decoded) << "trial " << trial;
+    if (!decoded) continue;
+    ++accepted;
+    ASSERT_TRUE(in_range) << "trial " << trial;
+    for (int i = 0; i < pixels; ++i)
+      ASSERT_TRUE(same(walked[static_cast<size_t>(i)], dense[static_cast<size_t>(i)])) << "trial " << trial << ", pixel " << i;
+  }
+  EXPECT_GT(accepted, 5000);  // the well-formed half mostly stays so: enough lines to compare pixels
+}
+
+// The in-place insert returns what the hardware copies: the line's flits
+// before the fragment.
+TEST(Rle, InPlaceInsertCountsTheFlitsItCopies) {
+  const golden::Precision p;
+  std::mt19937 gen(35);
+  golden::RleLine line = golden::rle_clear(40);
+  for (int i = 0; i < 60; ++i) {
+    const size_t before = golden::rle_flits(line);
+    const golden::RleLine copy = golden::rle_insert(line, 40, i * 7 % 40, random_pixel(gen, p.alpha_bits), p);
+    golden::RleLine in_place = line;
+    EXPECT_EQ(golden::rle_insert_into(in_place, 40, i * 7 % 40, random_pixel(gen, p.alpha_bits), p), before);
+    line = copy;
+  }
+  golden::RleLine cut_short{0, 0, 0, 0};  // a run without its length word
+  EXPECT_THROW(golden::rle_insert_into(cut_short, 40, 3, Pixel{1, 1, 1, 1}, p), std::logic_error);
 }
 
 // ---- the rasteriser ----
