@@ -6,7 +6,8 @@ mutant changed, and reports each mutant as killed (a test failed), survived
 
 The mutants live in a copy of the repository (default /tmp/cube4-mutants), so
 an interrupted run never leaves a fault in the working tree; that copy's
-build (-DCUBE4_SYSTEM_PIPES=4) is kept between runs.
+build (the system's RTL for p = 4 only, no formal proofs: only the RTL unit
+tests run) is kept between runs.
 
   scripts/mutate_rtl.py [--max N] [--seed S] [--units a,b] [--report FILE]
 
@@ -88,7 +89,8 @@ def main():
             shutil.copy2(os.path.join(HERE, f), dst)
     if not os.path.exists(os.path.join(build, "build.ninja")):
         if run(["cmake", "-S", work, "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-                "-DCUBE4_SYSTEM_PIPES=4"], log):
+                "-DCUBE4_SYSTEM_PIPES=4",
+                "-DCUBE4_SYSTEM_TAG_PIPES=4", "-DCUBE4_SYSTEM_POLYGON_PIPES=4", "-DCUBE4_FORMAL=OFF"], log):
             sys.exit("mutate_rtl: configure failed, see " + log)
     if run(["ninja", "-C", build] + RTL_TESTS, log):
         sys.exit("mutate_rtl: the unmutated build failed, see " + log)
