@@ -27,23 +27,31 @@ std::vector<SlabLoad> slab_loads(const PolygonFrame& f) {
   return out;
 }
 
+PolygonWork polygon_work(const PolygonFrame& f) { return {slab_loads(f), f.counts.opaque, f.counts.opaque_triangles}; }
+
+double opaque_draw_seconds(uint64_t fragments, uint64_t triangles, double fill_rate, const PolygonEngine& e) {
+  return std::max(static_cast<double>(fragments) / fill_rate, static_cast<double>(triangles) / e.triangle_rate);
+}
+
+double rle_draw_seconds(const SlabLoad& l, const PolygonEngine& e) {
+  return std::max(opaque_draw_seconds(l.fragments, l.triangles, e.fill_rate, e),
+                  static_cast<double>(l.copied_flits) / e.rle_clock_hz);
+}
+
+double dual_draw_seconds(const SlabLoad& l, const PolygonEngine& e) {
+  return opaque_draw_seconds(l.fragments, l.triangles, e.dual_fill_rate, e);
+}
+
 ConnectionTimes connection_times(const std::vector<SlabLoad>& slabs, uint64_t slice_cycles, double clock_hz,
                                  uint64_t opaque_fragments, uint64_t opaque_triangles, const PolygonEngine& e) {
   ConnectionTimes t;
   const double slice_s = static_cast<double>(slice_cycles) / clock_hz;
-  const auto drawing = [&](double fragments, double triangles, double fill) {
-    return std::max(fragments / fill, triangles / e.triangle_rate);
-  };
-  t.opaque_s = drawing(static_cast<double>(opaque_fragments), static_cast<double>(opaque_triangles), e.fill_rate);
-  const double opaque_dual_s =
-      drawing(static_cast<double>(opaque_fragments), static_cast<double>(opaque_triangles), e.dual_fill_rate);
+  t.opaque_s = opaque_draw_seconds(opaque_fragments, opaque_triangles, e.fill_rate, e);
+  const double opaque_dual_s = opaque_draw_seconds(opaque_fragments, opaque_triangles, e.dual_fill_rate, e);
   // RLE: slab k + 1 is drawn while slice k composites with slab k; slab 0
   // before any.
   std::vector<double> draw_s(slabs.size());
-  for (size_t k = 0; k < slabs.size(); ++k)
-    draw_s[k] = std::max(drawing(static_cast<double>(slabs[k].fragments), static_cast<double>(slabs[k].triangles),
-                                 e.fill_rate),
-                         static_cast<double>(slabs[k].copied_flits) / e.rle_clock_hz);
+  for (size_t k = 0; k < slabs.size(); ++k) draw_s[k] = rle_draw_seconds(slabs[k], e);
   double rle = draw_s.empty() ? 0.0 : draw_s[0];
   for (size_t k = 0; k < slabs.size(); ++k) {
     const SlabLoad& l = slabs[k];
@@ -52,8 +60,7 @@ ConnectionTimes connection_times(const std::vector<SlabLoad>& slabs, uint64_t sl
     if (step > slice_s) ++t.rle_slabs_over_slice;
     rle += step;
     t.volume_s += slice_s;
-    t.dual_s += slice_s + drawing(static_cast<double>(l.fragments), static_cast<double>(l.triangles),
-                                  e.dual_fill_rate);
+    t.dual_s += slice_s + dual_draw_seconds(l, e);
   }
   // The opaque polygons overlap the previous frame's volume (RLE) or come
   // first (dual use).

@@ -54,6 +54,22 @@ struct ConnectionTimes {
   uint64_t rle_slabs_over_slice = 0;  // slabs that lengthen their slice (RLE)
 };
 
+// A frame's drawing work for the geometry engine: per slab, and its
+// opaque polygons (the rasteriser's counts).
+struct PolygonWork {
+  std::vector<SlabLoad> slabs;
+  uint64_t opaque_fragments = 0, opaque_triangles = 0;
+};
+PolygonWork polygon_work(const PolygonFrame& f);
+
+// The geometry engine's time to draw what a slab holds: into the run-length
+// buffer (fill and triangle rates, and Fig. 13's insert copying a flit per
+// buffer clock), or into the dual-use buffer (its pixel rate); and the
+// opaque polygons' time, at a given fill rate.
+double rle_draw_seconds(const SlabLoad& l, const PolygonEngine& e);
+double dual_draw_seconds(const SlabLoad& l, const PolygonEngine& e);
+double opaque_draw_seconds(uint64_t fragments, uint64_t triangles, double fill_rate, const PolygonEngine& e);
+
 // slice_cycles: one sample slice's cycles at clock_hz (every slice alike,
 // as the cycle model streams them); slabs: one load per slice.
 ConnectionTimes connection_times(const std::vector<SlabLoad>& slabs, uint64_t slice_cycles, double clock_hz,

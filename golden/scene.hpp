@@ -169,7 +169,14 @@ struct TagSource {
 
 // The geometry engine and the buffers that connect it to the pipelines, as
 // Cube-5 §§4-6 assume them (docs/scene.md, "polygon_engine").
+// How the slab images reach the pipelines in the system model's clocked
+// runs (systemc/core/polygon_source.hpp): Cube-5's run-length buffer
+// (§5), its dual-use DRAM buffer (§4), or at once (no polygon hardware's
+// time modelled).
+enum class PolygonConnection { Rle, Dual, Ideal };
+
 struct PolygonEngine {
+  PolygonConnection connection = PolygonConnection::Rle;
   double fill_rate = 180e6;       // fragments/s of the geometry engine (§6)
   double triangle_rate = 6e6;     // triangles/s of its set-up (§6)
   double dual_fill_rate = 357e6;  // pixels/s into the dual-use buffer (§4, §6)

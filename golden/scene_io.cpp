@@ -763,6 +763,10 @@ void read_polygon_engine(const Node& n, PolygonEngine& e) {
   rate("triangle_rate_m", e.triangle_rate);
   rate("dual_fill_rate_m", e.dual_fill_rate);
   rate("rle_clock_mhz", e.rle_clock_hz);
+  if (auto v = r.get("connection")) {
+    const std::string c = v->one_of({"rle", "dual", "ideal"});
+    e.connection = c == "rle" ? PolygonConnection::Rle : c == "dual" ? PolygonConnection::Dual : PolygonConnection::Ideal;
+  }
   r.reject_unknown();
 }
 

@@ -459,6 +459,8 @@ int run_render(const RenderArgs& args) {
     cfg.simulate_unneeded = a.simulate_all;
     cfg.frames = a.frames;
     cfg.seed = rtl_seed(a);
+    cfg.polygon_engine = l.scene.polygon_engine;
+    cfg.clock_hz = l.scene.clock_mhz * 1e6;
     cfg.assertions = !a.no_assert;
     net.assertions = cfg.assertions;
     if (a.frames > 1 && cfg.all_tlm())
@@ -563,6 +565,9 @@ int run_render(const RenderArgs& args) {
         }
       }
       const golden::PolygonFrame* frame_polygons = polygons ? &*polygons : nullptr;
+      // The host's drawing work, for the polygon source's time: the images
+      // cross the host bus as pixels only.
+      if (polygons) cfg.polygon_work = golden::polygon_work(*polygons);
       if (system) {
         try {
           // Mapped: the voxel memory uses the loaded volume in place (same bus time, no copy).

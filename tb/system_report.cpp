@@ -37,6 +37,10 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
       {"check", cfg.check ? (check_failure.empty() ? "passed: base plane and unit streams bit-exact" : check_failure)
                           : "off"},
   };
+  if (!r.polygon_connection.empty()) {
+    j["polygon_connection"] = r.polygon_connection;
+    j["polygon_wait_cycles"] = r.polygon_stall_cycles;
+  }
   if (!cfg.trace.file.empty()) j["trace"] = cfg.trace.file;
   return j;
 }

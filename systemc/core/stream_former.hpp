@@ -24,6 +24,14 @@ class StreamFormer {
   // The beat of this cycle (valid = false once the last frame's stream is out).
   VoxelBeat next();
   bool done() const { return at_.frame >= frames_; }
+  // The beat next() gives next: its frame and pass, and whether it is the
+  // pass's first (where a wait for the polygon source holds the stream).
+  struct Upcoming {
+    int frame = 0, pass = 0;
+    bool first_of_pass = false;
+  };
+  Upcoming upcoming() const { return {at_.frame, at_.pass, at_.y == 0 && at_.j == 0}; }
+  int passes() const { return plan_.passes; }
   uint64_t beats() const { return beats_; }
 
  private:

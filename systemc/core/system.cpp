@@ -12,6 +12,7 @@
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/link.hpp"
 #include "systemc/core/pixel_memory.hpp"
+#include "systemc/core/polygon_source.hpp"
 #include "systemc/core/stream_checker.hpp"
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/voxel_memory.hpp"
@@ -51,6 +52,10 @@ struct FrameUnits {
   std::unique_ptr<ShadeIf> shade;
   std::unique_ptr<CompositeIf> composite;
   StreamChecker* checker = nullptr;
+  PolygonSource* polygons = nullptr;  // a hybrid frame's slab images in time
+  int released_pass = -1;             // frame * passes + pass: the pass the source let start
+  uint64_t release_at = 0;
+  uint64_t first_frame_stalls = 0;
   golden::Progress progress;
   uint64_t total_beats = 1;
   uint64_t cycle = 0, done_cycle = 0;
@@ -65,6 +70,18 @@ struct FrameUnits {
 // schedules below call these, so they simulate the same machine.
 VoxelBeat former_edge(FrameUnits& u) {
   ++u.cycle;
+  if (u.polygons && !u.former->done()) {
+    // A pass starts only once its slice's slab image is in the buffer: the
+    // stream waits at its first beat (an invalid beat a cycle).
+    const StreamFormer::Upcoming n = u.former->upcoming();
+    const int id = n.frame * u.former->passes() + n.pass;
+    if (n.first_of_pass && id != u.released_pass) {
+      if (n.pass == 0 && n.frame == 1) u.first_frame_stalls = u.polygons->stall_cycles();
+      u.release_at = u.polygons->release(n.pass, u.cycle);
+      u.released_pass = id;
+    }
+    if (u.cycle < u.release_at) return VoxelBeat{};
+  }
   const VoxelBeat b = u.former->next();
   if (b.valid) u.last_valid[0] = u.cycle;
   if (u.progress && (u.cycle & 0xffff) == 0)
@@ -330,9 +347,17 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   std::unique_ptr<StreamChecker> checker;
   if (cfg.check) checker = std::make_unique<StreamChecker>(plan, vol);
 
+  // The slab images' connection (Ideal: no wait, no source).
+  std::unique_ptr<PolygonSource> source;
+  if (polygons && cfg.polygon_engine.connection != golden::PolygonConnection::Ideal)
+    source = std::make_unique<PolygonSource>(plan, cfg.polygon_work ? *cfg.polygon_work : golden::polygon_work(*polygons),
+                                             cfg.polygon_engine, cfg.clock_hz);
+  if (polygons) res.polygon_connection = polygon_connection_name(cfg.polygon_engine.connection);
+
   if (cfg.all_tlm() && !cfg.cycle_level) {
     res.plane = run_tlm_frame(plan, vol, progress, cfg.accumulators, polygons);
-    res.frame_cycles = cc.latency;
+    if (source) res.polygon_stall_cycles = source->stalls_of_frame(static_cast<uint64_t>(plan.ny + 1) * plan.B);
+    res.frame_cycles = cc.latency + res.polygon_stall_cycles;
     for (int pass = 0; pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
@@ -365,6 +390,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
                          : std::make_unique<TlmComposite>(plan, pixels, polygons);
     u.checker = checker.get();
+    u.polygons = source.get();
     u.progress = progress;
     u.total_beats = cc.stream;
     if (cfg.kernel == Kernel::SystemC) {
@@ -378,6 +404,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     }
     if (!u.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
     res.frame_cycles = u.frame_done_cycles.front();
+    if (source) res.polygon_stall_cycles = u.frames > 1 ? u.first_frame_stalls : source->stall_cycles();
     if (u.frames > 1) res.measured_interval = u.frame_done_cycles[1] - u.frame_done_cycles[0];
     res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_valid[3]};
     res.simulated_cycles = u.done_cycle;
@@ -387,6 +414,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     rtl::write_coverage(*rtl_ctx);  // while the models live (a coverage build's; else nothing)
 #endif
   }
+  res.stream_cycles += res.polygon_stall_cycles;
   if (checker) res.mismatch = checker->first_mismatch();
   res.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (progress) progress(1.0);

@@ -11,9 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "golden/polygon_connections.hpp"
 #include "golden/polygon_frame.hpp"
 #include "golden/registers.hpp"
 #include "golden/renderers.hpp"
+#include "golden/scene.hpp"
 #include "golden/volume.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/core/trace_window.hpp"
@@ -46,6 +48,15 @@ struct SystemConfig {
   // result plane's acc): a block of a partitioned volume, whose partial
   // image the composition network reads (golden/blocks.hpp).
   bool accumulators = false;
+  // How the frame's slab images reach the pipelines, and the rates of the
+  // engine that draws them (systemc/core/polygon_source.hpp; the scene's
+  // "polygon_engine"), in cycles of this clock: a hybrid frame's waits.
+  golden::PolygonEngine polygon_engine;
+  double clock_hz = 125e6;
+  // The geometry engine's work for the frame's polygons, when the images
+  // came over the host bus (which carries their pixels, not the work that
+  // drew them); unset: golden::polygon_work() of the frame run_frame() gets.
+  std::optional<golden::PolygonWork> polygon_work;
   // Evaluate the RTL units' assertions (rtl/assert/); a failure ends the
   // frame with RtlAssertionError. cube4 render --no-assert turns them off.
   bool assertions = true;
@@ -68,10 +79,15 @@ struct SystemResult {
   golden::BasePlane plane;
   uint64_t frame_cycles = 0;    // first voxel beat to last pixel written (first-frame latency)
   uint64_t measured_interval = 0;  // cycles between the last pixels of back-to-back frames (frames > 1)
-  uint64_t stream_cycles = 0;   // voxel beats per frame: the steady-state interval of back-to-back frames
+  uint64_t stream_cycles = 0;   // voxel beats (and polygon waits) per frame: the steady-state interval of back-to-back frames
   uint64_t samples = 0;         // nx * ny * K rays-slices composited
   uint64_t voxel_reads = 0;     // voxel memory reads (one per module per read cycle)
   uint64_t simulated_cycles = 0;  // clock cycles simulated (cycle-level runs)
+  // A hybrid frame: its connection ("rle", "dual", "ideal"; empty without
+  // polygons) and the cycles the first frame waited for slab images (in
+  // frame_cycles and, once a frame, in stream_cycles).
+  std::string polygon_connection;
+  uint64_t polygon_stall_cycles = 0;
   std::array<uint64_t, 4> last_beat{};  // cycle of the last beat on each link (former, interp, gradient, shade)
   double wall_seconds = 0;
   std::array<Level, kUnits> levels{};

@@ -12,6 +12,7 @@
 #include "golden/polygons.hpp"
 #include "golden/renderers.hpp"
 #include "systemc/core/machine.hpp"
+#include "systemc/core/polygon_source.hpp"
 #include "systemc/core/system.hpp"
 #include "tb/tests/system_support.hpp"
 #include "tb/tests/test_support.hpp"
@@ -60,14 +61,39 @@ sysc::SystemConfig tlm_config(int p, bool cycle_level) {
   return cfg;
 }
 
+// A hybrid frame's cycles: the volume-only frame's plus the waits for slab
+// images, which are what the polygon source's schedule gives for passes
+// streamed back to back (so the clocked and RTL runs, whose waits are gaps
+// in a simulated stream, are held to the analytic count, and the loosely
+// timed run is that count).
+void expect_polygon_cycles(const Hybrid& h, const sysc::SystemConfig& cfg, const sysc::SystemResult& res) {
+  const golden::Registers& regs = h.s.host.regs;
+  const sysc::CycleCount cc = sysc::frame_cycles(regs, cfg.p);
+  const sysc::FramePlan plan(regs, cfg.p);
+  sysc::PolygonSource source(plan, golden::polygon_work(h.frame), cfg.polygon_engine, cfg.clock_hz);
+  const uint64_t waits = source.stalls_of_frame(static_cast<uint64_t>(plan.ny + 1) * plan.B);
+  EXPECT_EQ(res.polygon_stall_cycles, waits) << sysc::polygon_connection_name(cfg.polygon_engine.connection);
+  EXPECT_EQ(res.stream_cycles, cc.stream + waits);
+  if (cfg.all_tlm() && !cfg.cycle_level) {
+    EXPECT_EQ(res.frame_cycles, cc.latency + waits) << "the cycle model's count and the waits";
+    return;
+  }
+  EXPECT_EQ(res.last_beat[0], cc.stream + waits) << "voxel beats per frame and the gaps of the waits";
+  const sysc::SystemResult volume_only = sysc::run_frame(regs, h.s.volume, cfg);
+  EXPECT_EQ(res.frame_cycles, volume_only.frame_cycles + waits) << "the simulated frame: the volume's and the waits";
+}
+
 // One frame of the scene through the system at TLM: base plane and final
 // image equal golden's with the polygons; the cycles are the volume-only
 // frame's (the cycle model's when loosely timed, the clocked run's own
 // count without the polygons when clocked).
-void run_hybrid(const Hybrid& h, int p, bool cycle_level) {
-  SCOPED_TRACE("p = " + std::to_string(p) + (cycle_level ? ", clocked" : ", loosely timed"));
+void run_hybrid(const Hybrid& h, int p, bool cycle_level,
+                golden::PolygonConnection connection = golden::PolygonConnection::Rle) {
+  SCOPED_TRACE("p = " + std::to_string(p) + (cycle_level ? ", clocked" : ", loosely timed") + ", connection " +
+               sysc::polygon_connection_name(connection));
   const golden::Registers& regs = h.s.host.regs;
-  const sysc::SystemConfig cfg = tlm_config(p, cycle_level);
+  sysc::SystemConfig cfg = tlm_config(p, cycle_level);
+  cfg.polygon_engine.connection = connection;
   const sysc::SystemResult res = sysc::run_frame(regs, h.s.volume, cfg, {}, h.polygons());
   const golden::BasePlane want = golden_plane(h, h.polygons());
   expect_same_plane(want, res.plane);
@@ -80,15 +106,7 @@ void run_hybrid(const Hybrid& h, int p, bool cycle_level) {
   if (h.polygons() && h.frame.counts.opaque + h.frame.counts.translucent > 0) {
     EXPECT_NE(golden_plane(h, nullptr).rgba, want.rgba) << "the test's polygons draw nothing";
   }
-  const sysc::CycleCount cc = sysc::frame_cycles(regs, p);
-  EXPECT_EQ(res.stream_cycles, cc.stream);
-  if (cycle_level) {
-    EXPECT_EQ(res.last_beat[0], cc.stream) << "voxel beats per frame";
-    const sysc::SystemResult volume_only = sysc::run_frame(regs, h.s.volume, cfg);
-    EXPECT_EQ(res.frame_cycles, volume_only.frame_cycles) << "the polygons cost the clocked frame no cycle";
-  } else {
-    EXPECT_EQ(res.frame_cycles, cc.latency) << "the cycle model's count, as without polygons";
-  }
+  expect_polygon_cycles(h, cfg, res);
 }
 
 Hybrid scene_file(const std::string& name) { return hybrid(setup_file(std::string(CUBE4_SOURCE_DIR) + "/scenes/" + name)); }
@@ -131,7 +149,54 @@ TEST(SystemPolygons, SphereBoxTlm) {
   for (int p : {1, 4, 5}) run_hybrid(h, p, false);
 }
 // A scene clocked beat by beat: the per-unit TLM compositing unit draws them.
-TEST(SystemPolygons, SphereBoxTlmClockedP4) { run_hybrid(scene_file("sphere_box.json"), 4, true); }
+// Its box's faces put more into a slab than a slice's time draws, so both
+// connections wait; the ideal one does not.
+TEST(SystemPolygons, SphereBoxTlmClockedP4) {
+  const Hybrid h = scene_file("sphere_box.json");
+  for (const auto c : {golden::PolygonConnection::Rle, golden::PolygonConnection::Dual, golden::PolygonConnection::Ideal})
+    run_hybrid(h, 4, true, c);
+}
+
+// The polygon source's schedule on loads made up to be worked by hand: three
+// slabs, 100-cycle passes, the engine's rates in cycles of a 1 Hz clock.
+TEST(SystemPolygons, PolygonSourceSchedulesTheTwoConnections) {
+  const Hybrid h = hybrid(setup(small_scene(kDirections[0], up_for(kDirections[0]), "[]")));
+  golden::Registers regs = h.s.host.regs;
+  golden::PolygonEngine e;
+  e.fill_rate = 1;         // a fragment a cycle
+  e.triangle_rate = 1e9;   // never the bound
+  e.dual_fill_rate = 2;    // two pixels a cycle
+  e.rle_clock_hz = 1e9;    // copying never the bound
+  golden::PolygonWork work;
+  work.slabs.resize(static_cast<size_t>(regs.sample_slices()));
+  const uint64_t fragments[3] = {150, 20, 300};
+  for (int k = 0; k < 3; ++k) work.slabs[static_cast<size_t>(k)].fragments = fragments[k];
+  work.opaque_fragments = 40;
+  const sysc::FramePlan plan(regs, 4);
+  ASSERT_EQ(plan.passes, plan.K + 1) << "the scene runs the gradient unit: slice k composites in pass k + 1";
+  {  // Rle: slabs 0 and 1 drawn from the start (150, then 170); pass 1 (slice 0) due at 100 waits to 150;
+     // slice 1 due at 250 (drawn at 170); slab 2 then goes into slab 0's half: drawn 250 + 300 = 550;
+     // slice 2 due at 350 waits to 550.
+    e.connection = golden::PolygonConnection::Rle;
+    sysc::PolygonSource s(plan, work, e, 1.0);
+    EXPECT_EQ(s.release(0, 0), 0u);
+    EXPECT_EQ(s.release(1, 100), 150u);
+    EXPECT_EQ(s.release(2, 250), 250u);
+    EXPECT_EQ(s.release(3, 350), 550u);
+    EXPECT_EQ(s.stall_cycles(), 250u);
+  }
+  {  // Dual: the opaque polygons (20 cycles) before the frame, each slab (75, 10, 150) before its slice.
+    e.connection = golden::PolygonConnection::Dual;
+    sysc::PolygonSource s(plan, work, e, 1.0);
+    EXPECT_EQ(s.release(0, 0), 20u);
+    EXPECT_EQ(s.release(1, 120), 195u);
+    EXPECT_EQ(s.release(2, 295), 305u);
+    EXPECT_EQ(s.release(3, 405), 555u);
+    EXPECT_EQ(s.stall_cycles(), 20u + 75u + 10u + 150u);
+  }
+  e.connection = golden::PolygonConnection::Ideal;
+  EXPECT_EQ(sysc::PolygonSource(plan, work, e, 1.0).stalls_of_frame(100), 0u);
+}
 
 // Every base plane, p = 1, 4, 5, loosely timed and clocked.
 class PolygonBasePlanes : public ::testing::TestWithParam<int> {};
@@ -146,6 +211,7 @@ TEST_P(PolygonBasePlanes, TlmLooselyTimedAndClocked) {
       << "polygons beside the volume: the base plane has margins";
   for (int p : {1, 4, 5})
     for (bool clocked : {false, true}) run_hybrid(h, p, clocked);
+  run_hybrid(h, 4, true, golden::PolygonConnection::Dual);
 }
 INSTANTIATE_TEST_SUITE_P(SystemPolygons, PolygonBasePlanes, ::testing::Range(0, 6));
 
@@ -193,8 +259,9 @@ TEST(SystemPolygons, RtlCompositingWithoutPolygonHardwareRefuses) {
 // scene from all six base planes at p = 1, 4, 5, every unit at RTL and the
 // compositor alone at RTL, equal to golden with the polygons, in the
 // volume-only frame's cycles.
-void run_hybrid_rtl(const Hybrid& scene, int p, const std::array<sysc::Level, sysc::kUnits>& levels) {
-  SCOPED_TRACE("p = " + std::to_string(p));
+void run_hybrid_rtl(const Hybrid& scene, int p, const std::array<sysc::Level, sysc::kUnits>& levels,
+                    golden::PolygonConnection connection = golden::PolygonConnection::Rle) {
+  SCOPED_TRACE("p = " + std::to_string(p) + ", connection " + sysc::polygon_connection_name(connection));
   // The slab images are laid out for the p decoders that read them.
   Hybrid h = scene;
   h.s.scene.pipelines = p;
@@ -203,11 +270,11 @@ void run_hybrid_rtl(const Hybrid& scene, int p, const std::array<sysc::Level, sy
   cfg.p = p;
   cfg.levels = levels;
   cfg.check = true;
+  cfg.polygon_engine.connection = connection;
   const sysc::SystemResult res = sysc::run_frame(h.s.host.regs, h.s.volume, cfg, {}, h.polygons());
   expect_same_plane(golden_plane(h, h.polygons()), res.plane);
   EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
-  const sysc::SystemResult volume_only = sysc::run_frame(h.s.host.regs, h.s.volume, cfg);
-  EXPECT_EQ(res.frame_cycles, volume_only.frame_cycles) << "the polygons cost the RTL frame no cycle";
+  expect_polygon_cycles(h, cfg, res);
 }
 
 TEST_P(PolygonBasePlanes, RtlCompositingRing) {
@@ -216,6 +283,9 @@ TEST_P(PolygonBasePlanes, RtlCompositingRing) {
   const Hybrid h = hybrid(setup(small_scene(d, up_for(d), kMeshes)));
   for (int p : {1, 4, 5}) run_hybrid_rtl(h, p, only(sysc::Unit::Composite));
   run_hybrid_rtl(h, 4, kRtl);
+  // The dual-use buffer's waits come before every slice: gaps all through
+  // the RTL's stream, which must not change a pixel.
+  run_hybrid_rtl(h, 4, kRtl, golden::PolygonConnection::Dual);
 }
 
 TEST(SystemPolygons, BrainProbeTranslucentRtlP4) {
