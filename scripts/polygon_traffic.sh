@@ -19,6 +19,26 @@ for scene in brain_probe brain_probe_translucent sphere_box; do
   echo "polygon_traffic: $scene..." >&2
   "$build/tb/cube4" render "$here/scenes/$scene.json" --model fixed -q -o "$tmp/$scene.png" --report "$tmp/$scene.json"
 done
+# The system model's frames with each connection (the polygon source's
+# waits; loosely timed TLM, which adds the same waits the clocked and RTL
+# runs simulate).
+for scene in brain_probe brain_probe_translucent sphere_box; do
+  for connection in rle dual ideal; do
+    echo "polygon_traffic: $scene at tlm, connection $connection..." >&2
+    "$python" - "$here/scenes/$scene.json" "$tmp/$scene-$connection.json" "$connection" <<'PY'
+import json, os, sys
+s = json.load(open(sys.argv[1]))
+s.setdefault("polygon_engine", {})["connection"] = sys.argv[3]
+# The copy lives elsewhere: its volume and mesh files by absolute path.
+for item in [s["volume"]] + s.get("polygons", []):
+    if "file" in item and not os.path.isabs(item["file"]):
+        item["file"] = os.path.join(os.path.dirname(os.path.abspath(sys.argv[1])), item["file"])
+json.dump(s, open(sys.argv[2], "w"))
+PY
+    "$build/tb/cube4" render "$tmp/$scene-$connection.json" --model tlm -q -o "$tmp/o.png" \
+      --report "$tmp/$scene-$connection.r.json"
+  done
+done
 # Cube-5 Fig. 16/17's volume-only rates: 256^3 and 512^3 with four
 # pipelines at 133 MHz, from the cycle model (loosely timed TLM).
 for n in 256 512; do
@@ -76,6 +96,17 @@ for scene in ("brain_probe", "brain_probe_translucent", "sphere_box"):
     c = json.load(open(f"{tmp}/{scene}.json"))["polygon_connections"]
     print(f"| scenes/{scene}.json | {c['volume_s'] * 1e3:.3f} | {c['opaque_s'] * 1e3:.3f} | {c['rle_s'] * 1e3:.3f} | "
           f"{c['dual_s'] * 1e3:.3f} | {c['rle_slabs_over_slice']} |")
+print()
+print("The system model's frames (`cube4 render --model tlm`, the scene's `polygon_engine.connection` set to each; "
+      "the clocked and RTL runs simulate the same waits, cycle for cycle: docs/system.md, \"Cycle accounting\"), "
+      "cycles per frame and the waits for slab images in them:")
+print()
+print("| scene | ideal (the volume's) | run-length: cycles | waits | dual-use: cycles | waits |")
+print("|---|---:|---:|---:|---:|---:|")
+for scene in ("brain_probe", "brain_probe_translucent", "sphere_box"):
+    r = {c: json.load(open(f"{tmp}/{scene}-{c}.r.json"))["system"] for c in ("rle", "dual", "ideal")}
+    print(f"| scenes/{scene}.json | {r['ideal']['cycles_per_frame']:,} | {r['rle']['cycles_per_frame']:,} | "
+          f"{r['rle']['polygon_wait_cycles']:,} | {r['dual']['cycles_per_frame']:,} | {r['dual']['polygon_wait_cycles']:,} |")
 print()
 print("Fig. 16 (256³) and Fig. 17 (512³), four pipelines at 133 MHz: `tb/bench/cube5_connections` (uniformly "
       "random translucent fragments, d·W·H a frame spread over the slabs, one triangle per 50):")
