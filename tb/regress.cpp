@@ -164,8 +164,13 @@ int run_regress(const RegressArgs& a, const std::string& self) {
   fs::remove_all(work);
   std::vector<Case> cases;
   for (const std::string& s : scenes)
-    for (const std::string& l : a.levels)
-      cases.push_back({s, l, work / (fs::path(s).stem().string() + "." + level_slug(l))});
+    for (const std::string& l : a.levels) {
+      Case c;
+      c.scene = s;
+      c.level = l;
+      c.dir = work / (fs::path(s).stem().string() + "." + level_slug(l));
+      cases.push_back(std::move(c));
+    }
   const int jobs = a.jobs > 0 ? a.jobs : std::max(1, static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN)));
 
   const auto t0 = std::chrono::steady_clock::now();
