@@ -226,9 +226,11 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   // another in depth order; equal depths in the order drawn.
   // (Sorted as depth and draw index, 16 bytes a fragment, rather than the
   // fragments themselves.)
+  // A triangle's fragments come nearly in depth order: a merge sort
+  // (stable, so equal depths keep the order drawn) takes the runs as they are.
   std::vector<std::pair<int64_t, uint32_t>> order(translucent.size());
   for (size_t i = 0; i < translucent.size(); ++i) order[i] = {translucent[i].depth, static_cast<uint32_t>(i)};
-  std::sort(order.begin(), order.end());
+  std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   const RaySlices rays(r);
   const int64_t slice = int64_t{1} << kZFracBits;
   std::vector<uint64_t> slab_triangle;  // k << 32 | triangle, per fragment in a slab
@@ -267,11 +269,12 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   return out;
 }
 
-PolygonTraffic polygon_traffic(const PolygonFrame& f, const Precision& p) {
+PolygonTraffic polygon_traffic(const PolygonFrame& f, const Precision& p) { return polygon_traffic(f, slab_loads(f), p); }
+
+PolygonTraffic polygon_traffic(const PolygonFrame& f, const std::vector<SlabLoad>& loads, const Precision& p) {
   PolygonTraffic t;
   const uint64_t channel = static_cast<uint64_t>((p.alpha_bits + 7) / 8);
   t.image_bytes = static_cast<uint64_t>(f.width) * static_cast<uint64_t>(f.height) * (8 * channel + (kZBits + 7) / 8);
-  const std::vector<SlabLoad> loads = slab_loads(f);
   for (size_t k = 0; k < loads.size(); ++k) {
     const SlabImage& s = f.slabs[k];
     ++t.slabs;

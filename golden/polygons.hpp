@@ -12,6 +12,7 @@
 
 #include "golden/host_driver.hpp"
 #include "golden/mesh.hpp"
+#include "golden/polygon_connections.hpp"
 #include "golden/polygon_frame.hpp"
 
 namespace cube4::golden {
@@ -76,7 +77,10 @@ struct PolygonTraffic {
   uint64_t rle_cycles = 0;
   uint64_t slabs_over_slice = 0; // slabs whose busiest pipeline needs more than slice_cycles
 };
+// `loads`: slab_loads(f) (golden/polygon_connections.hpp), when the caller
+// has them already.
 PolygonTraffic polygon_traffic(const PolygonFrame& f, const Precision& p);
+PolygonTraffic polygon_traffic(const PolygonFrame& f, const std::vector<SlabLoad>& loads, const Precision& p);
 
 // Snapped vertex positions: 1/2^kSubpixelBits of a pixel, depth in units of
 // 2^-kZFracBits sample slices, both rounded half up.

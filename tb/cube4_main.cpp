@@ -556,18 +556,18 @@ int run_render(const RenderArgs& args) {
         golden::Scene lanes = sub_scenes[i];
         if (system) lanes.pipelines = cfg.p;
         polygons = golden::rasterise_polygons(lanes, l.meshes, host);
+        // The host's drawing work, for the polygon source's time (the
+        // images cross the host bus as pixels only) and the report.
+        cfg.polygon_work = golden::polygon_work(*polygons);
         if (i == 0) {
           polygon_counts = polygons->counts;
-          polygon_traffic = golden::polygon_traffic(*polygons, lanes.precision);
+          polygon_traffic = golden::polygon_traffic(*polygons, cfg.polygon_work->slabs, lanes.precision);
           polygon_connections = golden::connection_times(
-              golden::slab_loads(*polygons), polygon_traffic->slice_cycles, lanes.clock_mhz * 1e6,
+              cfg.polygon_work->slabs, polygon_traffic->slice_cycles, lanes.clock_mhz * 1e6,
               polygons->counts.opaque, polygons->counts.opaque_triangles, lanes.polygon_engine);
         }
       }
       const golden::PolygonFrame* frame_polygons = polygons ? &*polygons : nullptr;
-      // The host's drawing work, for the polygon source's time: the images
-      // cross the host bus as pixels only.
-      if (polygons) cfg.polygon_work = golden::polygon_work(*polygons);
       if (system) {
         try {
           // Mapped: the voxel memory uses the loaded volume in place (same bus time, no copy).
