@@ -22,17 +22,8 @@ results=$tmp/results.txt
 : > "$results"
 for scene in brain_probe brain_probe_translucent sphere_box; do
   src=$here/scenes/$scene.json
-  # The same scene without its polygons; relative volume paths stay valid
-  # because the copy sits beside the original's folder's files.
-  "$python" - "$src" "$tmp/$scene-none.json" <<'PY'
-import json, os, sys
-s = json.load(open(sys.argv[1]))
-s["polygons"] = []
-v = s["volume"]
-if "file" in v and not os.path.isabs(v["file"]):
-    v["file"] = os.path.join(os.path.dirname(os.path.abspath(sys.argv[1])), v["file"])
-json.dump(s, open(sys.argv[2], "w"))
-PY
+  # The same scene without its polygons.
+  "$python" "$here/scripts/scene_variant.py" "$src" "$tmp/$scene-none.json" 'polygons=[]'
   for model in tlm fixed; do
     for which in with none; do
       file=$src

@@ -25,16 +25,8 @@ done
 for scene in brain_probe brain_probe_translucent sphere_box; do
   for connection in rle dual ideal; do
     echo "polygon_traffic: $scene at tlm, connection $connection..." >&2
-    "$python" - "$here/scenes/$scene.json" "$tmp/$scene-$connection.json" "$connection" <<'PY'
-import json, os, sys
-s = json.load(open(sys.argv[1]))
-s.setdefault("polygon_engine", {})["connection"] = sys.argv[3]
-# The copy lives elsewhere: its volume and mesh files by absolute path.
-for item in [s["volume"]] + s.get("polygons", []):
-    if "file" in item and not os.path.isabs(item["file"]):
-        item["file"] = os.path.join(os.path.dirname(os.path.abspath(sys.argv[1])), item["file"])
-json.dump(s, open(sys.argv[2], "w"))
-PY
+    "$python" "$here/scripts/scene_variant.py" "$here/scenes/$scene.json" "$tmp/$scene-$connection.json" \
+      "polygon_engine.connection=\"$connection\""
     "$build/tb/cube4" render "$tmp/$scene-$connection.json" --model tlm -q -o "$tmp/o.png" \
       --report "$tmp/$scene-$connection.r.json"
   done
