@@ -12,6 +12,9 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
     units[sysc::unit_name(static_cast<sysc::Unit>(u))] =
         r.simulated[i] ? sysc::level_name(r.levels[i]) : "not simulated (not needed by the scene)";
   }
+  // Not one of the five units: the slice controls of the interpolation
+  // unit's level (golden slice_control() at TLM, cube4_dda at RTL).
+  units["weight_generator"] = sysc::level_name(r.weight_generator);
   const double hz = clock_mhz * 1e6;
   nlohmann::json j = {
       {"pipelines", cfg.p},

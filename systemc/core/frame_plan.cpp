@@ -2,10 +2,12 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace cube4::sysc {
 
-FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits_, uint64_t tag_base_)
+FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits_, uint64_t tag_base_,
+                     std::vector<golden::SliceControl> slice_controls)
     : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]),
       B(pipes > 0 ? (regs.dim[0] + pipes - 1) / pipes : 0),  // p < 1 is refused below
       K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)), user_tag_bits(user_tag_bits_),
@@ -20,6 +22,13 @@ FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits
   if (regs.supersampling >= (1 << kSupersamplingBits))
     throw std::invalid_argument("supersampling: " + std::to_string(regs.supersampling) + " (at most " +
                                 std::to_string((1 << kSupersamplingBits) - 1) + ")");
+  if (!slice_controls.empty()) {
+    if (slice_controls.size() != static_cast<size_t>(K) + 1)
+      throw std::logic_error("frame plan: " + std::to_string(slice_controls.size()) +
+                             " slice controls for a frame of " + std::to_string(K) + " slices (K + 1 needed)");
+    slices = std::move(slice_controls);
+    return;
+  }
   slices.reserve(static_cast<size_t>(K) + 1);
   for (int k = 0; k <= K; ++k) slices.push_back(golden::slice_control(r, k));
 }

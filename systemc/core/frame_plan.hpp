@@ -36,7 +36,11 @@ struct FramePlan {
   // user_tag_bits and tag_base shape the tag's user field (the system's:
   // the pass number in kUserTagBits); a testbench that streams frames back
   // to back gives each frame its own base so that the tags tell them apart.
-  FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits = kUserTagBits, uint64_t tag_base = 0);
+  // slice_controls: the weight generator's control of slices 0 .. K when it
+  // runs at RTL (rtl_slice_controls(), systemc/rtl/rtl_factory.hpp); empty:
+  // golden slice_control(), its specification and TLM model.
+  FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits = kUserTagBits, uint64_t tag_base = 0,
+            std::vector<golden::SliceControl> slice_controls = {});
 
   const golden::Registers& r;
   int p;              // pipelines

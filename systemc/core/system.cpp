@@ -1,10 +1,12 @@
 #include "systemc/core/system.hpp"
 
+#include <optional>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <systemc>
 
@@ -373,22 +375,31 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     u.frames = cfg.frames;
     bool rtl[kUnits];
     for (int i = 0; i < kUnits; ++i) rtl[i] = cfg.levels[static_cast<size_t>(i)] == Level::Rtl;
+    // The weight generator runs at RTL with the interpolation unit, the
+    // first unit to read its weights: every unit then reads the slice
+    // controls cube4_dda produced (`up`); the checker keeps golden's (plan).
+    std::optional<FramePlan> rtl_plan;
+    if (rtl[static_cast<int>(Unit::Interp)]) {
+      rtl_plan.emplace(*rs, cfg.p, kUserTagBits, 0, rtl_slice_controls(*rs, *rtl_ctx));
+      res.weight_generator = Level::Rtl;
+    }
+    const FramePlan& up = rtl_plan ? *rtl_plan : plan;
     const golden::SkewTraversal traversal{r.perm, r.flip};
     if (rtl[static_cast<int>(Unit::Addr)]) {
-      u.addr = make_rtl_addr(plan, mem.layout(), *rtl_ctx, cfg.trace);
+      u.addr = make_rtl_addr(up, mem.layout(), *rtl_ctx, cfg.trace);
     } else {
       u.addr = std::make_unique<TlmAddr>(mem.layout(), traversal);
     }
-    u.former = std::make_unique<StreamFormer>(plan, mem, *u.addr, cfg.frames);
-    u.interp = rtl[0] ? make_rtl_interp(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmInterp>(plan);
+    u.former = std::make_unique<StreamFormer>(up, mem, *u.addr, cfg.frames);
+    u.interp = rtl[0] ? make_rtl_interp(up, *rtl_ctx, cfg.trace) : std::make_unique<TlmInterp>(up);
     if (!rs->gradient) {
-      u.gradient = std::make_unique<GradientBypass>(plan);
+      u.gradient = std::make_unique<GradientBypass>(up);
     } else {
-      u.gradient = rtl[1] ? make_rtl_gradient(plan, *rtl_ctx, cfg.trace) : std::make_unique<TlmGradient>(plan);
+      u.gradient = rtl[1] ? make_rtl_gradient(up, *rtl_ctx, cfg.trace) : std::make_unique<TlmGradient>(up);
     }
-    u.shade = rtl[2] ? make_rtl_shade(plan, *rtl_ctx, cfg.trace, cfg.simulate_unneeded) : std::make_unique<TlmShade>(plan);
-    u.composite = rtl[3] ? make_rtl_composite(plan, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
-                         : std::make_unique<TlmComposite>(plan, pixels, polygons);
+    u.shade = rtl[2] ? make_rtl_shade(up, *rtl_ctx, cfg.trace, cfg.simulate_unneeded) : std::make_unique<TlmShade>(up);
+    u.composite = rtl[3] ? make_rtl_composite(up, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
+                         : std::make_unique<TlmComposite>(up, pixels, polygons);
     u.checker = checker.get();
     u.polygons = source.get();
     u.progress = progress;

@@ -91,6 +91,7 @@ struct SystemResult {
   std::array<uint64_t, 4> last_beat{};  // cycle of the last beat on each link (former, interp, gradient, shade)
   double wall_seconds = 0;
   std::array<Level, kUnits> levels{};
+  Level weight_generator = Level::Tlm;   // Rtl: cube4_dda's slice controls (with the interpolation unit at RTL)
   std::array<bool, kUnits> simulated{};  // false: not needed by the scene, not simulated
   std::vector<std::string> skipped;      // logic the scene does not need, not simulated
   std::vector<std::string> unused;       // logic the scene does not need, simulated inside an RTL unit

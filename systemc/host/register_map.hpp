@@ -260,13 +260,13 @@ inline constexpr Register kListed[] = {
     {"SUPERSAMPLING", 0x114, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Supersampling,
      CUBE4_REG_FIELD(supersampling), "cube4_addr.repeat_slice_i", "samples per voxel along the rays"},
     {"X_START", 0x118, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(x_start),
-     "— (FramePlan slice control)", "`dda_frac_bits` fraction"},
+     "cube4_dda.x_start_i", "`dda_frac_bits` fraction"},
     {"X_STEP", 0x120, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(x_step),
-     "— (FramePlan slice control)", "per sample slice"},
+     "cube4_dda.x_step_i", "per sample slice"},
     {"Y_START", 0x128, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(y_start),
-     "— (FramePlan slice control)", ""},
+     "cube4_dda.y_start_i", ""},
     {"Y_STEP", 0x130, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width, CUBE4_REG_FIELD(y_step),
-     "— (FramePlan slice control)", ""},
+     "cube4_dda.y_step_i", ""},
 #define CUBE4_MARGIN(reg, addr, axis, meaning)                                                                     \
     {reg, addr, Block::View, Access::RW, 1, bits(32), Sign::Unsigned, Rule::Width,                                 \
      "margin_lo[" #axis "], margin_hi[" #axis "]",                                                                 \

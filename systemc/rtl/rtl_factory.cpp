@@ -9,6 +9,7 @@
 
 #include "Vsys_compose_node.h"
 #include "Vsys_compose_out.h"
+#include "Vsys_dda.h"
 #include "Vsys_shade_lean.h"
 #include "Vsys_shade_tags.h"
 #include "Vsys_shade_unit.h"
@@ -17,6 +18,7 @@
 #include "systemc/rtl/rtl_addr.hpp"
 #include "systemc/rtl/rtl_compose.hpp"
 #include "systemc/rtl/rtl_composite.hpp"
+#include "systemc/rtl/rtl_dda.hpp"
 #include "systemc/rtl/rtl_gradient.hpp"
 #include "systemc/rtl/rtl_interp.hpp"
 #include "systemc/rtl/rtl_shade.hpp"
@@ -112,6 +114,10 @@ void require_rtl_polygons(int p) {
                               " has no RTL compositing unit with polygon hardware (built for p = " +
                               (list.empty() ? std::string("none") : list) +
                               "; add it to CMake's CUBE4_SYSTEM_POLYGON_PIPES, or run the compositing unit at TLM)");
+}
+
+std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r, VerilatedContext& ctx) {
+  return run_rtl_dda<Vsys_dda>(r, ctx);
 }
 
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,

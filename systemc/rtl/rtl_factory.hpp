@@ -38,6 +38,12 @@ void require_rtl_tags(int p, int tag_bits);
 // (Cube-5; CMake CUBE4_SYSTEM_POLYGON_PIPES); throws, naming them, if p has none.
 std::vector<int> rtl_polygon_pipes();
 void require_rtl_polygons(int p);
+// The weight generator at RTL (cube4_dda, one for all pipelines): the
+// control of slices 0 .. K of a parallel-projection frame (FramePlan's
+// slice_controls), clocked through the frame's slices before it starts
+// (set-up clocks, not traced: docs/rtl-dda.md says why the frame's cycles
+// are the same).
+std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r, VerilatedContext& ctx);
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
                                       const TraceWindow& trace);
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace);

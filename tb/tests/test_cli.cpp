@@ -234,6 +234,7 @@ TEST_F(Cli, SystemModelsReportCyclesAndMatchGolden) {
                             "simulated_cycles_per_wall_second", "units", "skipped", "check", "host_bus_ms"})
       EXPECT_TRUE(s.contains(key)) << model << ": " << key;
     EXPECT_EQ(s["units"]["interp"], model == "rtl" ? "rtl" : "tlm") << model;
+    EXPECT_EQ(s["units"]["weight_generator"], model == "rtl" ? "rtl" : "tlm") << model;
     EXPECT_EQ(s["units"]["composite"], model == "tlm" ? "tlm" : "rtl") << model;
     if (model != "tlm") {
       EXPECT_EQ(s["check"].get<std::string>().rfind("passed", 0), 0u) << model;
