@@ -31,18 +31,21 @@ int64_t snap(double x, int bits) { return static_cast<int64_t>(std::floor(std::l
 // The sample slices in which the ray of each base-plane pixel has a
 // sample: the ray of (u, v) is in slice k iff 0 <= u - origin_x + ix_k < nx
 // and likewise in y; the offsets grow by 0 or 1 a slice, so the slices form
-// an interval, [first, last], empty when first > last.
+// an interval, [first, last], empty when first > last. Per axis the
+// interval depends on the column (row) alone: one table entry each.
 class RaySlices {
  public:
-  explicit RaySlices(const Registers& r) : r_(r) {
+  RaySlices(const Registers& r, int width, int height) {
     for (int k = 0; k < r.sample_slices(); ++k) {
       ix_.push_back(r.x_offset(k).integer);
       iy_.push_back(r.y_offset(k).integer);
     }
+    for (int u = 0; u < width; ++u) x_.push_back(along(ix_, r.base_origin_x() - u, r.dim[0]));
+    for (int v = 0; v < height; ++v) y_.push_back(along(iy_, r.base_origin_y() - v, r.dim[1]));
   }
   std::pair<int, int> of(int u, int v) const {
-    const auto [x0, x1] = along(ix_, r_.base_origin_x() - u, r_.dim[0]);
-    const auto [y0, y1] = along(iy_, r_.base_origin_y() - v, r_.dim[1]);
+    const auto [x0, x1] = x_[static_cast<size_t>(u)];
+    const auto [y0, y1] = y_[static_cast<size_t>(v)];
     return {std::max(x0, y0), std::min(x1, y1)};
   }
   int ix(int k) const { return ix_[static_cast<size_t>(k)]; }
@@ -55,8 +58,8 @@ class RaySlices {
     const auto end = std::upper_bound(offsets.begin(), offsets.end(), lo + n - 1);
     return {static_cast<int>(first - offsets.begin()), static_cast<int>(end - offsets.begin()) - 1};
   }
-  const Registers& r_;
   std::vector<int> ix_, iy_;
+  std::vector<std::pair<int, int>> x_, y_;  // per column u, per row v
 };
 
 struct Fragment {
@@ -231,7 +234,7 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   std::vector<std::pair<int64_t, uint32_t>> order(translucent.size());
   for (size_t i = 0; i < translucent.size(); ++i) order[i] = {translucent[i].depth, static_cast<uint32_t>(i)};
   std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  const RaySlices rays(r);
+  const RaySlices rays(r, W, H);
   const int64_t slice = int64_t{1} << kZFracBits;
   std::vector<uint64_t> slab_triangle;  // k << 32 | triangle, per fragment in a slab
   slab_triangle.reserve(translucent.size());
