@@ -1,6 +1,7 @@
 #include "systemc/core/stream_checker.hpp"
 
 #include <sstream>
+#include <utility>
 
 #include "golden/pipeline.hpp"
 #include "golden/renderers.hpp"
@@ -42,11 +43,91 @@ std::string str(std::initializer_list<int64_t> v) {
 
 }  // namespace
 
-StreamChecker::StreamChecker(const FramePlan& plan, const golden::Volume& vol)
-    : plan_(plan), sample_(static_cast<size_t>(plan.nx) * plan.ny * plan.K),
-      gradient_(sample_.size()), vtag_(sample_.size(), 0) {
-  Collector c(plan, sample_, gradient_, vtag_);
-  plane_ = golden::render_fixed(vol, plan.r, nullptr, {}, &c);
+StreamChecker::StreamChecker(const FramePlan& plan, const golden::Volume& vol) : plan_(plan) {
+  filling_.reserve(kBatch);
+  thread_ = std::thread([this, &vol] { work(vol); });
+}
+
+StreamChecker::~StreamChecker() { close(); }
+
+void StreamChecker::push(const Beat& b) {
+  filling_.push_back(b);
+  if (filling_.size() < kBatch) return;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return pending_.size() < kMaxPending; });
+    hand_over();
+  }
+  changed_.notify_all();
+}
+
+void StreamChecker::hand_over() {
+  if (filling_.empty()) return;
+  pending_.push_back(std::move(filling_));
+  ++handed_;
+  filling_ = {};
+  filling_.reserve(kBatch);
+}
+
+void StreamChecker::drain() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  hand_over();
+  changed_.notify_all();
+  changed_.wait(lock, [&] { return checked_ == handed_; });
+}
+
+void StreamChecker::close() {
+  if (!thread_.joinable()) return;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    hand_over();
+    closed_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void StreamChecker::work(const golden::Volume& vol) {
+  try {
+    sample_.assign(static_cast<size_t>(plan_.nx) * plan_.ny * plan_.K, 0);
+    gradient_.assign(sample_.size(), golden::Gradient{});
+    vtag_.assign(sample_.size(), 0);
+    Collector c(plan_, sample_, gradient_, vtag_);
+    plane_ = golden::render_fixed(vol, plan_.r, nullptr, {}, &c);
+  } catch (...) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    error_ = std::current_exception();
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    rendered_ = true;
+  }
+  changed_.notify_all();
+  for (;;) {
+    std::vector<Beat> batch;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return !pending_.empty() || closed_; });
+      if (pending_.empty()) return;
+      batch = std::move(pending_.front());
+      pending_.pop_front();
+    }
+    changed_.notify_all();
+    if (!error_)  // else the render failed: nothing to compare with
+      for (const Beat& b : batch) std::visit([this](const auto& beat) { check(beat); }, b);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++checked_;
+    }
+    changed_.notify_all();
+  }
+}
+
+const golden::BasePlane& StreamChecker::golden_plane() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  changed_.wait(lock, [&] { return rendered_; });
+  if (error_) std::rethrow_exception(error_);
+  return plane_;
 }
 
 void StreamChecker::mismatch(Unit u, int k, int x, int y, const std::string& expected, const std::string& got) {
@@ -54,8 +135,7 @@ void StreamChecker::mismatch(Unit u, int k, int x, int y, const std::string& exp
   if (!m) m = Mismatch{u, k, x, y, expected, got};
 }
 
-void StreamChecker::samples(const SampleBeat& b) {
-  if (!b.valid) return;
+void StreamChecker::check(const SampleBeat& b) {
   if (b.f.slice_start && b.f.beam_start) sample_y_ = 0;
   const int k = static_cast<int>(plan_.tag_slice(b.tag));
   if (!plan_.tag_zero_slice(b.tag) && k < plan_.K) {
@@ -75,8 +155,7 @@ void StreamChecker::samples(const SampleBeat& b) {
   }
 }
 
-void StreamChecker::gradients(const GradientBeat& b) {
-  if (!b.valid || !plan_.r.gradient) return;
+void StreamChecker::check(const GradientBeat& b) {
   for (int q = 0; q < plan_.p; ++q) {
     const int x = b.x + q;
     if (x >= plan_.nx || static_cast<int>(b.slice) >= plan_.K) continue;
@@ -89,8 +168,7 @@ void StreamChecker::gradients(const GradientBeat& b) {
   }
 }
 
-void StreamChecker::shaded(const ShadedBeat& b) {
-  if (!b.valid) return;
+void StreamChecker::check(const ShadedBeat& b) {
   for (int q = 0; q < plan_.p; ++q) {
     const int x = b.x + q;
     if (x >= plan_.nx || static_cast<int>(b.slice) >= plan_.K) continue;
@@ -104,7 +182,9 @@ void StreamChecker::shaded(const ShadedBeat& b) {
   }
 }
 
-std::optional<Mismatch> StreamChecker::first_mismatch() const {
+std::optional<Mismatch> StreamChecker::first_mismatch() {
+  drain();
+  if (error_) std::rethrow_exception(error_);
   for (const auto& m : first_)
     if (m) return m;
   return std::nullopt;

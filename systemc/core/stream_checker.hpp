@@ -3,9 +3,21 @@
 // SampleProbe); shaded samples are golden shade_classified() of those. The
 // first difference is kept with its unit, slice and position, so a wrong
 // base plane is traced to the unit that first went wrong.
+//
+// The checking runs beside the simulation, on a thread of its own: the
+// golden render, then every beat in the order the simulation handed them
+// over (copied, in batches; the simulation waits only when the thread is
+// far behind). A check costs the simulation the copies, not the golden
+// work (docs/system.md, "Checks and reports").
 #pragma once
+#include <condition_variable>
 #include <cstdint>
+#include <deque>
+#include <exception>
+#include <mutex>
 #include <optional>
+#include <thread>
+#include <variant>
 #include <vector>
 
 #include "golden/volume.hpp"
@@ -17,26 +29,63 @@ namespace cube4::sysc {
 
 class StreamChecker {
  public:
+  // Without the frame's polygons: they change no unit's stream (only the
+  // compositing), and golden's rays would stop at opaque ones.
   StreamChecker(const FramePlan& plan, const golden::Volume& vol);
-  void samples(const SampleBeat& b);
-  void gradients(const GradientBeat& b);
-  void shaded(const ShadedBeat& b);
-  std::optional<Mismatch> first_mismatch() const;
-  const golden::BasePlane& golden_plane() const { return plane_; }
+  ~StreamChecker();
+  StreamChecker(const StreamChecker&) = delete;
+  StreamChecker& operator=(const StreamChecker&) = delete;
+
+  void samples(const SampleBeat& b) {
+    if (b.valid) push(b);
+  }
+  void gradients(const GradientBeat& b) {
+    if (b.valid && plan_.r.gradient) push(b);
+  }
+  void shaded(const ShadedBeat& b) {
+    if (b.valid) push(b);
+  }
+  // Waits until every beat handed over so far is checked (rethrows what
+  // the checking thread threw); more beats may follow.
+  std::optional<Mismatch> first_mismatch();
+  // Golden's base plane of the frame without polygons; waits for it.
+  const golden::BasePlane& golden_plane();
 
  private:
+  using Beat = std::variant<SampleBeat, GradientBeat, ShadedBeat>;
+  static constexpr size_t kBatch = 4096, kMaxPending = 32;
+
   size_t index(int k, int x, int y) const {
     return (static_cast<size_t>(k) * plan_.ny + static_cast<size_t>(y)) * plan_.nx + static_cast<size_t>(x);
   }
+  void push(const Beat& b);
+  void hand_over();  // the batch being filled, if any (mutex_ held)
+  void drain();      // hands it over and waits until every batch is checked
+  void close();      // ends the thread
+  void work(const golden::Volume& vol);
+  void check(const SampleBeat& b);
+  void check(const GradientBeat& b);
+  void check(const ShadedBeat& b);
   void mismatch(Unit u, int k, int x, int y, const std::string& expected, const std::string& got);
 
   const FramePlan& plan_;
+  // The checking thread's own (read by the caller only after close()).
   std::vector<uint16_t> sample_;
   std::vector<golden::Gradient> gradient_;
   std::vector<uint8_t> vtag_;  // each sample's voxel tag (all 0 without tags)
   golden::BasePlane plane_;
   std::array<std::optional<Mismatch>, kUnits> first_{};
   int sample_y_ = 0, sample_j_ = 0;
+
+  // The hand-over.
+  std::vector<Beat> filling_;  // the simulation's side
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<std::vector<Beat>> pending_;
+  size_t handed_ = 0, checked_ = 0;  // batches
+  bool closed_ = false, rendered_ = false;
+  std::exception_ptr error_;
+  std::thread thread_;
 };
 
 }  // namespace cube4::sysc

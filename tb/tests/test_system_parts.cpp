@@ -174,6 +174,35 @@ TEST(StreamChecker, NamesTheFirstDifferingUnitSliceAndSample) {
   checker.gradients(g);
   EXPECT_EQ(checker.first_mismatch()->unit, sysc::Unit::Interp);
 }
+
+// The checking thread takes the beats in batches: a difference after
+// several batches' worth of beats is found when the caller asks, and the
+// beats before it (here all beyond the volume's x, so compared with
+// nothing) do not count as differences.
+TEST(StreamChecker, FindsADifferenceManyBatchesIntoTheStream) {
+  golden::Volume vol = numbered(6, 5, 4);
+  for (auto& v : vol.data) v = static_cast<uint16_t>(v % 4096);
+  golden::Registers r;
+  r.dim = {6, 5, 4};
+  r.classification.resize(4096);
+  r.gradient = true;
+  const sysc::FramePlan plan(r, 4);
+  sysc::StreamChecker checker(plan, vol);
+  sysc::GradientBeat g;
+  g.valid = true;
+  g.slice = 1;
+  g.x = 8;  // beyond nx = 6
+  g.gx[0] = 99;
+  for (int i = 0; i < 3 * 4096 + 17; ++i) checker.gradients(g);
+  EXPECT_FALSE(checker.first_mismatch());
+  g.x = 4;
+  g.y = 2;
+  checker.gradients(g);
+  ASSERT_TRUE(checker.first_mismatch());
+  EXPECT_EQ(checker.first_mismatch()->unit, sysc::Unit::Gradient);
+  EXPECT_EQ(checker.first_mismatch()->x, 4);
+  EXPECT_EQ(checker.first_mismatch()->y, 2);
+}
 // A failed RTL assertion stops the unit's clock() with RtlAssertionError,
 // naming the unit and the system's cycle (the checker's message on stdout
 // names the assertion and the same cycle); with the context's assertions
