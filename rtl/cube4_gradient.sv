@@ -11,6 +11,15 @@
 // The 2x2 neighbourhoods are packed as [i*VoxelBits +: VoxelBits] with
 // [0] at (base, base), [1] x+1, [2] y+1, [3] both; realign weights are in
 // [0, 2^WeightBits]; supersampling S = 1 .. 2^SupersamplingBits - 1.
+// With HasPerspective (Cube-4's perspective, golden gradient_perspective()):
+//   gx = C(L(right - left)),  gy = C(L(down - up)),
+//   L(d) = round_half_up(d * lateral_recip / 2^RecipBits)   (scale_lateral())
+// where lateral_recip_i is the slice's round(2^(RecipBits+F) / m) for a ray
+// spacing m >= 1 (golden lateral_reciprocal(); 2^RecipBits at m = 1, where
+// L is the identity); any value of the port's range is taken exactly. The
+// ABC z path is the same: in perspective its weights vary per sample, which
+// the ports already allow. Without HasPerspective the port is ignored and
+// no multiplier is built (parallel-projection scenes simulate none of it).
 //
 // Latency: 3 cycles, fully pipelined (one new input set per clock):
 //   stage 1 registers gx, gy and the four x lerps of the ABC samples,
@@ -26,6 +35,10 @@
 //   GradientBits      - signed component width (Precision::gradient_bits, 8)
 //   GradientShift     - full difference >> shift (Precision::gradient_shift, 5)
 //   SupersamplingBits - width of the supersampling factor port (4: S <= 15)
+//   HasPerspective    - the lateral scale of perspective's x and y
+//                       differences (two (V+1) x (V+3) multipliers in stage 1)
+//   RecipBits         - (derived) the reciprocal's fraction, VoxelBits + 2
+//                       (golden lateral_recip_bits())
 `include "cube4_pkg.sv"
 
 module cube4_gradient #(
@@ -33,7 +46,9 @@ module cube4_gradient #(
   parameter int unsigned WeightBits        = cube4_pkg::WeightBits,
   parameter int unsigned GradientBits      = cube4_pkg::GradientBits,
   parameter int unsigned GradientShift     = cube4_pkg::GradientShift,
-  parameter int unsigned SupersamplingBits = cube4_pkg::SupersamplingBits
+  parameter int unsigned SupersamplingBits = cube4_pkg::SupersamplingBits,
+  parameter bit          HasPerspective    = 1'b0,
+  localparam int unsigned RecipBits        = VoxelBits + 2
 ) (
   input  logic                           clk_i,
   input  logic                           rst_ni,
@@ -49,6 +64,7 @@ module cube4_gradient #(
   input  logic [WeightBits:0]            ahead_wx_i,
   input  logic [WeightBits:0]            ahead_wy_i,
   input  logic [SupersamplingBits-1:0]   supersampling_i,
+  input  logic [RecipBits:0]             lateral_recip_i,
   output logic                           valid_o,
   output logic signed [GradientBits-1:0] gx_o,
   output logic signed [GradientBits-1:0] gy_o,
@@ -122,9 +138,36 @@ module cube4_gradient #(
     );
   end
 
+  // What C() takes in x and y: the differences, or in perspective the
+  // differences scaled to the rays' spacing (L above).
+  logic signed [FullBits-1:0] lx, ly;
+  if (HasPerspective) begin : g_lateral
+    localparam int unsigned ProdBits = DiffBits + RecipBits + 2;
+    localparam logic signed [ProdBits-1:0] HalfR = ProdBits'(1) << (RecipBits - 1);
+    logic signed [ProdBits-1:0] px, py, sx, sy;
+    assign px = ProdBits'(dx) * $signed({1'b0, lateral_recip_i});
+    assign py = ProdBits'(dy) * $signed({1'b0, lateral_recip_i});
+    assign sx = (px + HalfR) >>> RecipBits;
+    assign sy = (py + HalfR) >>> RecipBits;
+    // |L(d)| <= 2|d| + 1 below 2^(VoxelBits+2): FullBits (>= VoxelBits + 7)
+    // hold it, and the bits above are its sign.
+    assign lx = sx[FullBits-1:0];
+    assign ly = sy[FullBits-1:0];
+    if (ProdBits > FullBits) begin : g_sign
+      logic unused_sign;
+      assign unused_sign = ^{sx[ProdBits-1:FullBits], sy[ProdBits-1:FullBits]};
+    end
+  end else begin : g_parallel
+    assign lx = FullBits'(dx);
+    assign ly = FullBits'(dy);
+    // Waiver: the reciprocal only scales perspective's differences.
+    logic unused_recip;
+    assign unused_recip = ^lateral_recip_i;
+  end
+
   logic signed [FullBits-1:0] gx_rounded, gy_rounded;
-  assign gx_rounded = rounded(FullBits'(dx));
-  assign gy_rounded = rounded(FullBits'(dy));
+  assign gx_rounded = rounded(lx);
+  assign gy_rounded = rounded(ly);
 
   always_ff @(posedge clk_i) begin
     gx1_q       <= saturated(gx_rounded);

@@ -410,6 +410,7 @@ module cube4_gradient_unit #(
     .ahead_wx_i     ({1'b0, ahead_wx}),
     .ahead_wy_i     ({1'b0, ahead_wy}),
     .supersampling_i(supersampling),
+    .lateral_recip_i('0),  // parallel projection: the ring carries no perspective yet
     .valid_o        (valid_o),
     .gx_o           (gx_o),
     .gy_o           (gy_o),

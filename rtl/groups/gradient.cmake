@@ -49,3 +49,7 @@ cube4_rtl_variant(test_rtl_gradient cube4_gradient Vcube4_gradient_v8 SOURCES cu
   PARAMS VoxelBits=8 WeightBits=6 GradientBits=8 GradientShift=1)
 cube4_rtl_variant(test_rtl_gradient cube4_gradient Vcube4_gradient_v16 SOURCES cube4_lerp.sv
   PARAMS VoxelBits=16 WeightBits=10 GradientBits=12 GradientShift=6)
+# With perspective's lateral scale (HasPerspective), default and narrow widths.
+cube4_rtl_variant(test_rtl_gradient cube4_gradient Vcube4_gradient_persp SOURCES cube4_lerp.sv PARAMS HasPerspective=1'b1)
+cube4_rtl_variant(test_rtl_gradient cube4_gradient Vcube4_gradient_persp_v8 SOURCES cube4_lerp.sv
+  PARAMS VoxelBits=8 WeightBits=6 GradientBits=8 GradientShift=1 HasPerspective=1'b1)

@@ -1,6 +1,10 @@
 // RTL equivalence tests of the gradient datapath cube4_gradient against the
 // golden functions (golden/units/gradient.hpp) at default and non-default
-// widths. The ring around it is tested in test_gradient_ring.cpp.
+// widths, parallel (sample_gradient(); the lateral reciprocal port driven
+// with junk, which must not matter) and with HasPerspective
+// (gradient_perspective(), every x and y difference at the ray spacings 1,
+// 1.5, 2 and 3 besides the random ones). The ring around it is tested in
+// test_gradient_ring.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +16,8 @@
 #include <vector>
 
 #include "Vcube4_gradient.h"
+#include "Vcube4_gradient_persp.h"
+#include "Vcube4_gradient_persp_v8.h"
 #include "Vcube4_gradient_v16.h"
 #include "Vcube4_gradient_v8.h"
 #include "golden/pipeline.hpp"
@@ -40,11 +46,13 @@ struct GradIn {
   std::array<uint32_t, 4> behind{}, ahead{};
   uint32_t bwx = 0, bwy = 0, awx = 0, awy = 0;
   int s = 1;
+  uint32_t recip = 0;  // the lateral reciprocal (perspective)
   Fields fields() const {
     Fields f{{"left", left}, {"right", right}, {"up", up}, {"down", down}};
     for (int i = 0; i < 4; ++i) f.push_back({"behind" + std::to_string(i), behind[i]});
     for (int i = 0; i < 4; ++i) f.push_back({"ahead" + std::to_string(i), ahead[i]});
-    f.insert(f.end(), {{"behind_wx", bwx}, {"behind_wy", bwy}, {"ahead_wx", awx}, {"ahead_wy", awy}, {"S", s}});
+    f.insert(f.end(),
+             {{"behind_wx", bwx}, {"behind_wy", bwy}, {"ahead_wx", awx}, {"ahead_wy", awy}, {"S", s}, {"recip", recip}});
     return f;
   }
 };
@@ -55,9 +63,16 @@ struct GradOut {
 };
 
 template <class M>
-void test_gradient(const char* unit, const g::Precision& p) {
+void test_gradient(const char* unit, const g::Precision& p, bool perspective = false) {
   const int V = p.voxel_bits, W = p.weight_bits, G = p.gradient_bits;
   const uint32_t vmax = (1u << V) - 1, wmax = 1u << W;
+  // The lateral reciprocal: its fraction, the port's largest value, and the
+  // reciprocal of a ray spacing m (DDA fraction F, m >= 1).
+  const int R = g::lateral_recip_bits(p), F = p.dda_frac_bits;
+  const uint32_t recip_max = (2u << R) - 1;
+  auto recip_of = [&](double m) {
+    return static_cast<uint32_t>(g::lateral_reciprocal(std::llround(std::ldexp(m, F)), F, R));
+  };
   std::vector<GradIn> directed;
   // Every S with extreme neighbourhoods and end-point weights: zero and
   // saturated gradients of both signs in all three components.
@@ -88,7 +103,29 @@ void test_gradient(const char* unit, const g::Precision& p) {
       in.s = s;
       directed.push_back(in);
     }
-  Random rng(20 + V * 100 + W);
+  // The sets above at the spacing 1 (perspective) or with junk (parallel).
+  const size_t n_parallel_sets = directed.size();
+  // Perspective: every difference in x and y at the spacings 1 (the parallel
+  // gradient), 1.5, 2 and 3 (the box filter's limit), and the reciprocal's
+  // ends.
+  if (perspective)
+    for (const uint32_t recip : {recip_of(1), recip_of(1.5), recip_of(2), recip_of(3), 0u, recip_max})
+      for (int64_t d = -int64_t{vmax}; d <= int64_t{vmax}; ++d) {
+        GradIn in;
+        const uint32_t lo = d < 0 ? static_cast<uint32_t>(-d) : 0, hi = d < 0 ? 0 : static_cast<uint32_t>(d);
+        in.left = lo, in.right = hi, in.up = hi, in.down = lo;
+        in.s = 1;
+        in.recip = recip;
+        directed.push_back(in);
+      }
+  Random rng(20 + V * 100 + W + (perspective ? 7 : 0));
+  // Mostly a spacing the host would program, now and then any port value;
+  // for the parallel unit, junk it must ignore.
+  auto random_recip = [&] {
+    if (!perspective || rng.chance(0.2)) return static_cast<uint32_t>(rng.edgy(recip_max));
+    return recip_of(1 + 2 * std::ldexp(static_cast<double>(rng.bits(20)), -20));
+  };
+  for (size_t i = 0; i < n_parallel_sets; ++i) directed[i].recip = perspective ? recip_of(1) : random_recip();
   auto random_in = [&] {
     GradIn in;
     // Half the vectors in a smooth neighbourhood (small differences, where
@@ -104,6 +141,7 @@ void test_gradient(const char* unit, const g::Precision& p) {
     for (auto& x : in.ahead) x = val();
     in.bwx = rng.edgy(wmax), in.bwy = rng.edgy(wmax), in.awx = rng.edgy(wmax), in.awy = rng.edgy(wmax);
     in.s = static_cast<int>(rng.range(1, 8));
+    in.recip = random_recip();
     return in;
   };
   auto drive = [&](M& m, const GradIn& in) {
@@ -114,11 +152,19 @@ void test_gradient(const char* unit, const g::Precision& p) {
     }
     m.behind_wx_i = in.bwx, m.behind_wy_i = in.bwy, m.ahead_wx_i = in.awx, m.ahead_wy_i = in.awy;
     m.supersampling_i = in.s;
+    m.lateral_recip_i = in.recip;
   };
   // The golden checker: sample_gradient() of the pipeline composition.
   g::Registers regs;
   regs.p = p;
   auto golden = [&](const GradIn& in) {
+    if (perspective) {
+      const uint32_t behind = g::abc_sample(in.behind[0], in.behind[1], in.behind[2], in.behind[3], in.bwx, in.bwy, W);
+      const uint32_t ahead = g::abc_sample(in.ahead[0], in.ahead[1], in.ahead[2], in.ahead[3], in.awx, in.awy, W);
+      const g::Gradient r =
+          g::gradient_perspective(in.left, in.right, in.up, in.down, behind, ahead, in.s, in.recip, p);
+      return GradOut{r.x, r.y, r.z};
+    }
     regs.supersampling = in.s;
     g::SliceControl c;
     c.behind_x.weight = in.bwx, c.behind_y.weight = in.bwy;
@@ -154,6 +200,14 @@ void test_gradient(const char* unit, const g::Precision& p) {
 }
 
 TEST(RtlGradient, DefaultWidths) { test_gradient<Vcube4_gradient>("cube4_gradient", g::Precision{}); }
+TEST(RtlGradient, PerspectiveDefaultWidths) {
+  test_gradient<Vcube4_gradient_persp>("cube4_gradient (HasPerspective)", g::Precision{}, true);
+}
+TEST(RtlGradient, PerspectiveVoxel8Weight6Shift1) {
+  g::Precision p;
+  p.voxel_bits = 8, p.weight_bits = 6, p.gradient_bits = 8, p.gradient_shift = 1;
+  test_gradient<Vcube4_gradient_persp_v8>("cube4_gradient_persp_v8", p, true);
+}
 TEST(RtlGradient, Voxel8Weight6Shift1) {
   g::Precision p;
   p.voxel_bits = 8, p.weight_bits = 6, p.gradient_bits = 8, p.gradient_shift = 1;
