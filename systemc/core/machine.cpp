@@ -193,7 +193,11 @@ SystemResult render_through_host(const golden::Registers& r, const golden::Volum
   VolumeMap map;
   if (load == VolumeLoad::Mapped) map = [&h](const golden::Volume& v, sc_core::sc_time& d) { h.host->map_volume(v, d); };
   program_over_tlm(target, r, vol, delay, map);
-  write_polygons_over_tlm(target, polygons, delay);
+  // Mapped, the polygon images too: the frame below uses them in place.
+  PolygonMap map_polygons;
+  if (load == VolumeLoad::Mapped)
+    map_polygons = [&h](const golden::PolygonFrame& f, sc_core::sc_time& d) { h.host->map_polygons(f, d); };
+  write_polygons_over_tlm(target, polygons, delay, map_polygons);
   try {
     start_frame_over_tlm(target, delay);
   } catch (const HostError&) {

@@ -77,8 +77,10 @@ class Machine final : public HostBackend {
 // once), for the first call's p and precision.
 // `load`: the volume through the VOLUME window (Bus), or mapped in place for
 // the frame (Mapped: HostInterface::map_volume, the same bus time, no copy:
-// the loosely timed model's speed and memory on large volumes); after a
-// mapped frame the machine's subvolume 0 reads as cleared.
+// the loosely timed model's speed and memory on large volumes), and so are
+// the polygon images (HostInterface::map_polygons: the same bus time, no
+// encoding, decoding or copy); after a mapped frame the machine's
+// subvolume 0 reads as cleared.
 enum class VolumeLoad { Bus, Mapped };
 SystemResult render_through_host(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                                  const golden::Progress& progress, double* bus_seconds = nullptr,

@@ -296,6 +296,29 @@ void HostInterface::map_volume(const golden::Volume& vol, sc_core::sc_time& dela
   delay += volume_load_bus_time(vol.data.size(), config_.bus_period);
 }
 
+void HostInterface::map_polygons(const golden::PolygonFrame& f, sc_core::sc_time& delay) {
+  auto refuse = [](const std::string& what) { throw std::invalid_argument("host interface: map_polygons: " + what); };
+  if (backend_.busy()) refuse("while a frame runs");
+  const std::array<int, 3> size = regs_.poly_size();
+  const size_t pixels = static_cast<size_t>(f.width) * static_cast<size_t>(f.height);
+  if (size != std::array<int, 3>{f.width, f.height, static_cast<int>(f.slabs.size())} || f.front.size() != pixels ||
+      f.back.size() != pixels || f.z.size() != pixels)
+    refuse("images of " + std::to_string(f.width) + " x " + std::to_string(f.height) + " pixels and " +
+           std::to_string(f.slabs.size()) + " slabs, but POLY_WIDTH, POLY_HEIGHT, POLY_SLICES = " +
+           std::to_string(size[0]) + ", " + std::to_string(size[1]) + ", " + std::to_string(size[2]));
+  // The checks the windows make word by word. START's of the slab lines
+  // hold already: a SlabImage's lines are well formed by construction.
+  const uint32_t channel_max = (uint32_t{1} << config_.hw.precision.alpha_bits) - 1;
+  for (size_t i = 0; i < pixels; ++i) {
+    for (const golden::Pixel& px : {f.front[i], f.back[i]})
+      if (px.r > channel_max || px.g > channel_max || px.b > channel_max || px.a > channel_max)
+        refuse("pixel " + std::to_string(i) + " has a channel above " + std::to_string(channel_max));
+    if (f.z[i] > golden::kZNone) refuse("pixel " + std::to_string(i) + " has a depth above kZNone");
+  }
+  polygons_.map(f, size);
+  delay += polygon_load_bus_time(f, config_.bus_period);
+}
+
 void HostInterface::unmap_volume() {
   if (mapped_ >= 0) backend_.unmap_volume(mapped_);
   mapped_ = -1;
@@ -322,18 +345,18 @@ HostInterface::Outcome HostInterface::start_frame() {
   if (const rm::Register* wide = regs_.wide_value_out_of_range())
     return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, wide->addr};
 
-  std::optional<golden::PolygonFrame> polygons;
+  golden::PolygonFrame decoded;
+  const golden::PolygonFrame* polygons = nullptr;
   if (regs_.poly_enable()) {
-    polygons.emplace();
     if (const auto f = polygons_.frame(regs_.poly_size(), static_cast<int>(w), static_cast<int>(h), r.sample_slices(),
-                                       r.dim[0], r.dim[1], config_.hw.pipelines, *polygons))
+                                       r.dim[0], r.dim[1], config_.hw.pipelines, decoded, polygons))
       return {status_of(f->code), f->code, f->addr};
   }
 
   const uint64_t before = backend_.frames_done();
   try {
     if (commit_volume_dims(k) != ErrorCode::None) return fail(ErrorCode::VolumeDimsUnset);
-    backend_.start_frame(r, k, polygons ? &*polygons : nullptr);
+    backend_.start_frame(r, k, polygons);
   } catch (const std::exception&) {
     return fail(ErrorCode::BackendFailure);
   }

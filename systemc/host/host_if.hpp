@@ -59,6 +59,17 @@ class HostInterface : public sc_core::sc_module {
   void map_volume(const golden::Volume& vol, sc_core::sc_time& delay);
   // Ends it: the subvolume reads as cleared, as after a new VOL_DIM.
   void unmap_volume();
+  // The DMI-style load of the polygon images (a PolygonMap for
+  // write_polygons_over_tlm): the POLY_* windows hold f's images, whose
+  // sizes POLY_WIDTH, POLY_HEIGHT and POLY_SLICES must give, without their
+  // moving over the bus; `delay` gains the window writes' bus time. The
+  // frame START runs uses f in place, so f must outlive it; a window write
+  // before then makes the images the buffer's own words. Throws
+  // std::invalid_argument (and maps nothing) for other sizes, a busy
+  // machine, or a pixel channel or depth wider than its window's word (what
+  // the windows refuse word by word); slab images whose beams are not the
+  // frame's are START's PolygonImage fault, as through the windows.
+  void map_polygons(const golden::PolygonFrame& f, sc_core::sc_time& delay);
 
   // The socket's forward interface, to call without binding an initiator
   // (tests, sc_main before elaboration).

@@ -155,10 +155,24 @@ void set_subvolume_dims_over_tlm(TlmTarget& target, int k, const std::array<int,
   write_words(target, rm::kVolDim, dims, 3, delay);
 }
 
-sc_core::sc_time volume_load_bus_time(uint64_t voxels, const sc_core::sc_time& bus_period) {
-  const uint64_t words = (voxels + 1) / 2;
+namespace {
+// One write_words() of n words: an address cycle per burst, a cycle per word.
+sc_core::sc_time words_bus_time(uint64_t words, const sc_core::sc_time& bus_period) {
   const uint64_t transactions = (words + kBurstWords - 1) / kBurstWords;
   return bus_period * static_cast<double>(words + transactions);
+}
+}  // namespace
+
+sc_core::sc_time volume_load_bus_time(uint64_t voxels, const sc_core::sc_time& bus_period) {
+  return words_bus_time((voxels + 1) / 2, bus_period);
+}
+
+sc_core::sc_time polygon_load_bus_time(const golden::PolygonFrame& f, const sc_core::sc_time& bus_period) {
+  const uint64_t pixels = static_cast<uint64_t>(f.width) * static_cast<uint64_t>(f.height);
+  sc_core::sc_time t = words_bus_time(2 * pixels, bus_period) * 2.0 + words_bus_time(pixels, bus_period);
+  for (const golden::SlabImage& s : f.slabs)
+    if (!s.empty()) t += words_bus_time(slab_stream_words(s), bus_period);
+  return t;
 }
 
 void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol, sc_core::sc_time& delay) {
@@ -187,7 +201,8 @@ void load_subvolume_over_tlm(TlmTarget& target, int k, const golden::Volume& vol
   }
 }
 
-void write_polygons_over_tlm(TlmTarget& target, const golden::PolygonFrame* f, sc_core::sc_time& delay) {
+void write_polygons_over_tlm(TlmTarget& target, const golden::PolygonFrame* f, sc_core::sc_time& delay,
+                             const PolygonMap& map) {
   if (!f) return write_word(target, rm::kPolyEnable, 0, delay);
   const uint32_t size[3] = {static_cast<uint32_t>(f->width), static_cast<uint32_t>(f->height),
                             static_cast<uint32_t>(f->slabs.size())};
@@ -197,6 +212,10 @@ void write_polygons_over_tlm(TlmTarget& target, const golden::PolygonFrame* f, s
         "polygon images of " + std::to_string(f->front.size()) + ", " + std::to_string(f->back.size()) + " and " +
             std::to_string(f->z.size()) + " pixels for a " + std::to_string(f->width) + " x " +
             std::to_string(f->height) + " base plane");
+  if (map) {
+    map(*f, delay);
+    return write_word(target, rm::kPolyEnable, 1, delay);
+  }
   for (const auto& [image, base] : {std::pair{&f->front, rm::kPolyFrontBase}, std::pair{&f->back, rm::kPolyBackBase}}) {
     std::vector<uint32_t> words(2 * pixels);
     for (size_t i = 0; i < pixels; ++i) {

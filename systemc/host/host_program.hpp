@@ -100,11 +100,22 @@ void write_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& ori
 std::vector<uint16_t> read_slab_over_tlm(TlmTarget& target, int k, const std::array<int, 3>& origin,
                                          const std::array<int, 3>& size, sc_core::sc_time& delay);
 
-// The frame's polygon images (Cube-5) through the POLY_* windows, then
-// POLY_ENABLE; with none, POLY_ENABLE = 0. Every image is written, blank or
-// not (the host does not know what the composite buffer held); a slab image
-// without fragments is not (the buffer starts each frame without).
-void write_polygons_over_tlm(TlmTarget& target, const golden::PolygonFrame* polygons, sc_core::sc_time& delay);
+// Puts the polygon images into the POLY_* windows (their sizes already
+// written) without moving them over the bus, annotating the bus time the
+// window writes would take: HostInterface::map_polygons, the DMI-style load.
+using PolygonMap = std::function<void(const golden::PolygonFrame& f, sc_core::sc_time& delay)>;
+
+// The frame's polygon images (Cube-5) through the POLY_* windows (or `map`
+// if given), then POLY_ENABLE; with none, POLY_ENABLE = 0. Every image is
+// written, blank or not (the host does not know what the composite buffer
+// held); a slab image without fragments is not (the buffer starts each
+// frame without).
+void write_polygons_over_tlm(TlmTarget& target, const golden::PolygonFrame* polygons, sc_core::sc_time& delay,
+                             const PolygonMap& map = {});
+// What writing f's images through the windows annotates (the sizes and
+// POLY_ENABLE apart): per window write, one address cycle per burst of
+// kBurstWords and one cycle per word.
+sc_core::sc_time polygon_load_bus_time(const golden::PolygonFrame& f, const sc_core::sc_time& bus_period);
 
 void start_frame_over_tlm(TlmTarget& target, sc_core::sc_time& delay);
 uint32_t read_status_over_tlm(TlmTarget& target, sc_core::sc_time& delay);

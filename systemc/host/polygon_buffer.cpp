@@ -22,6 +22,35 @@ std::vector<uint32_t> encode_slab_stream(const golden::SlabImage& slab) {
   return out;
 }
 
+uint64_t slab_stream_words(const golden::SlabImage& slab) {
+  if (slab.empty()) return 0;
+  uint64_t n = 0;
+  for (int y = 0; y < slab.beams(); ++y)
+    for (int l = 0; l < slab.lanes(); ++l) n += 1 + (slab.line(y, l).size() + 1) / 2;
+  return n;
+}
+
+void PolygonBuffer::map(const golden::PolygonFrame& f, const std::array<int, 3>& size) {
+  size_ = size;
+  mapped_ = &f;
+}
+
+void PolygonBuffer::take_mapped() {
+  const golden::PolygonFrame& f = *mapped_;
+  mapped_ = nullptr;
+  const std::array<int, 3> size = size_;
+  size_ = {0, 0, 0};
+  fit(size);
+  for (size_t i = 0; i < f.front.size(); ++i) {
+    front_[2 * i] = uint32_t{f.front[i].r} | uint32_t{f.front[i].g} << 16;
+    front_[2 * i + 1] = uint32_t{f.front[i].b} | uint32_t{f.front[i].a} << 16;
+    back_[2 * i] = uint32_t{f.back[i].r} | uint32_t{f.back[i].g} << 16;
+    back_[2 * i + 1] = uint32_t{f.back[i].b} | uint32_t{f.back[i].a} << 16;
+  }
+  std::copy(f.z.begin(), f.z.end(), z_.begin());
+  for (size_t k = 0; k < f.slabs.size(); ++k) slabs_[k] = encode_slab_stream(f.slabs[k]);
+}
+
 void PolygonBuffer::fit(const std::array<int, 3>& size) {
   if (size == size_) return;
   size_ = size;
@@ -34,6 +63,7 @@ void PolygonBuffer::fit(const std::array<int, 3>& size) {
 
 std::optional<PolygonBuffer::Fault> PolygonBuffer::write(uint64_t addr, const uint32_t* words, unsigned n,
                                                          const std::array<int, 3>& size, const golden::Precision& p) {
+  if (mapped_) take_mapped();
   const rm::Region r = rm::region_of(addr);
   const uint64_t pixels = uint64_t(size[0]) * size[1];
   auto at = [addr](unsigned i) { return addr + 4 * uint64_t{i}; };
@@ -68,10 +98,23 @@ std::optional<PolygonBuffer::Fault> PolygonBuffer::write(uint64_t addr, const ui
 
 std::optional<PolygonBuffer::Fault> PolygonBuffer::frame(const std::array<int, 3>& size, int width, int height,
                                                          int slices, int dim_x, int dim_y, int lanes,
-                                                         golden::PolygonFrame& out) const {
+                                                         golden::PolygonFrame& out,
+                                                         const golden::PolygonFrame*& result) const {
+  result = nullptr;
   if (size[0] != width) return Fault{ErrorCode::PolygonSize, rm::kPolySize};
   if (size[1] != height) return Fault{ErrorCode::PolygonSize, rm::kPolySize + 4};
   if (size[2] != slices) return Fault{ErrorCode::PolygonSize, rm::kPolySize + 8};
+  if (mapped_ && size_ == size) {
+    // map() took the images' sizes; the slabs must have the beams' shape.
+    for (int k = 0; k < slices; ++k) {
+      const golden::SlabImage& s = mapped_->slabs[static_cast<size_t>(k)];
+      if (s.width() != dim_x || s.beams() != dim_y || s.lanes() != lanes)
+        return Fault{ErrorCode::PolygonImage, rm::kPolySlabBase + uint64_t(k) * rm::kPolySlabStride};
+    }
+    result = mapped_;
+    return std::nullopt;
+  }
+  result = &out;
   const size_t pixels = static_cast<size_t>(width) * height;
   out = {};
   out.width = width;

@@ -23,6 +23,8 @@
 namespace cube4::sysc {
 
 std::vector<uint32_t> encode_slab_stream(const golden::SlabImage& slab);
+// Its length in words, without making it.
+uint64_t slab_stream_words(const golden::SlabImage& slab);
 
 class PolygonBuffer {
  public:
@@ -41,19 +43,31 @@ class PolygonBuffer {
   // The frame the images make for a base plane of width x height pixels,
   // `slices` sample slices of dim_x x dim_y samples and `lanes` pipelines,
   // or the fault that refuses it: a size other than the images', a slab
-  // line that does not hold its lane's pixels.
+  // line that does not hold its lane's pixels. `result` is the frame:
+  // `storage`, decoded from the windows' words, or the mapped frame itself.
   std::optional<Fault> frame(const std::array<int, 3>& size, int width, int height, int slices, int dim_x, int dim_y,
-                             int lanes, golden::PolygonFrame& out) const;
+                             int lanes, golden::PolygonFrame& storage, const golden::PolygonFrame*& result) const;
+  // The DMI-style load: the windows hold f's images (of `size`, checked by
+  // the caller) without their words; f must outlive the mapping, which a
+  // window write (the buffer then takes f's words and the write), clear()
+  // or the frame that consumes it ends.
+  void map(const golden::PolygonFrame& f, const std::array<int, 3>& size);
   // After a frame: every image blank (front and back 0, Z kZNone, no slab).
-  void clear() { size_ = {0, 0, 0}; }
+  void clear() {
+    size_ = {0, 0, 0};
+    mapped_ = nullptr;
+  }
 
  private:
   // Starts blank images of this size if the buffer holds another.
   void fit(const std::array<int, 3>& size);
+  // A mapped frame becomes the windows' words.
+  void take_mapped();
 
   std::array<int, 3> size_{0, 0, 0};
   std::vector<uint32_t> front_, back_, z_;  // front/back: two words a pixel, as BASE_PLANE
   std::vector<std::vector<uint32_t>> slabs_;
+  const golden::PolygonFrame* mapped_ = nullptr;
 };
 
 }  // namespace cube4::sysc

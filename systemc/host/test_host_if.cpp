@@ -858,6 +858,61 @@ void start_polygon_frame(Env& e, const PolygonSetup& s, sc_time& delay) {
 
 }  // namespace
 
+// map_polygons, the DMI-style load: the frame START hands the backend is
+// the one the windows would have decoded, with the windows' bus time; a
+// window write after it makes the images the buffer's words (and lands);
+// images the sizes or the word widths refuse are not mapped.
+TEST(HostInterface, MappedPolygonsAreTheWindowsWithoutTheCopy) {
+  Env& e = env();
+  const PolygonSetup s = polygon_setup();
+  const PolygonMap map = [&e](const golden::PolygonFrame& f, sc_time& d) { e.host.map_polygons(f, d); };
+  auto images_time = [&](const PolygonMap& m) {
+    fresh(e.host, e.backend);
+    sc_time delay = SC_ZERO_TIME;
+    program_over_tlm(e.host.target(), s.host.regs, s.volume, delay);
+    const sc_time before = delay;
+    write_polygons_over_tlm(e.host.target(), &s.frame, delay, m);
+    return delay - before;
+  };
+  const sc_time by_bus = images_time({});
+  const sc_time mapped = images_time(map);
+  EXPECT_EQ(mapped, by_bus);
+  // Besides the images: the sizes (one transaction of three words) and
+  // POLY_ENABLE (one of one), 4 + 2 bus cycles.
+  EXPECT_EQ(mapped - e.host.config().bus_period * 6.0,
+            polygon_load_bus_time(s.frame, e.host.config().bus_period));
+  sc_time delay = SC_ZERO_TIME;
+  start_frame_over_tlm(e.host.target(), delay);
+  ASSERT_EQ(e.backend.polygons.size(), 1u);
+  ASSERT_TRUE(e.backend.polygons[0].has_value());
+  expect_frames_equal(s.frame, *e.backend.polygons[0]);
+
+  // A front pixel written after the mapping.
+  images_time(map);
+  const size_t i = s.frame.front.size() / 2;
+  golden::PolygonFrame changed = s.frame;
+  changed.front[i] = golden::Pixel{1, 2, 3, 4};
+  ASSERT_EQ(write(e.host, rm::kPolyFrontBase + 8 * i, {0x0002'0001, 0x0004'0003}), tlm::TLM_OK_RESPONSE);
+  start_frame_over_tlm(e.host.target(), delay);
+  ASSERT_TRUE(e.backend.polygons.back().has_value());
+  expect_frames_equal(changed, *e.backend.polygons.back());
+
+  // Refused: other sizes, a depth beyond kZNone.
+  fresh(e.host, e.backend);
+  program_over_tlm(e.host.target(), s.host.regs, s.volume, delay);
+  const uint32_t wrong[3] = {static_cast<uint32_t>(s.frame.width + 1), static_cast<uint32_t>(s.frame.height),
+                             static_cast<uint32_t>(s.frame.slabs.size())};
+  write_words(e.host.target(), rm::kPolySize, wrong, 3, delay);
+  EXPECT_THROW(e.host.map_polygons(s.frame, delay), std::invalid_argument);
+  golden::PolygonFrame deep = s.frame;
+  deep.z[3] = golden::kZNone + 1;
+  const uint32_t right[3] = {static_cast<uint32_t>(s.frame.width), static_cast<uint32_t>(s.frame.height),
+                             static_cast<uint32_t>(s.frame.slabs.size())};
+  write_words(e.host.target(), rm::kPolySize, right, 3, delay);
+  EXPECT_THROW(e.host.map_polygons(deep, delay), std::invalid_argument);
+  fresh(e.host, e.backend);
+}
+
 TEST(HostInterface, PolygonImagesReachTheFrameAsWrittenAndAreConsumedByIt) {
   Env& e = env();
   fresh(e.host, e.backend);
