@@ -23,6 +23,9 @@
 // 841 at the defaults, tested); the outputs hold until the next start_i.
 // start_i while busy_o is high is ignored.
 //
+// Precondition: the slice's ray spacing m_k lies in [1, 4) (the camera
+// refuses spacings above 3); its box extent then has WeightBits + 2 bits.
+//
 // Parameters:
 //   FracBits   - DDA fraction bits (golden Precision::dda_frac_bits, 20;
 //                not yet in cube4_pkg: the DDA ran in C++ until this unit,
@@ -111,10 +114,14 @@ module cube4_persp_slice #(
   assign has_behind = k_q != '0;
   assign has_ahead  = k_q != last_slice_i;
 
-  // The box extent E = m >> (F - W) and its square.
-  logic [PosBits-1:0]   extent;
-  logic [2*PosBits-1:0] area;
-  assign extent = PosBits'(m_here >>> (FracBits - WeightBits));
+  // The box extent E = m >> (F - W) and its square. The ray spacing is
+  // below 4 (the camera allows at most 3: the box filter's four taps), so
+  // E has WeightBits + 2 bits and E^2 twice that: a small multiplier, not
+  // a PosBits-square one.
+  localparam int unsigned ExtentBits = WeightBits + 2;
+  logic [ExtentBits-1:0]   extent;
+  logic [2*ExtentBits-1:0] area;
+  assign extent = m_here[FracBits-WeightBits +: ExtentBits];
   assign area   = extent * extent;
 
   logic signed [PosBits-1:0] m_half;
@@ -142,7 +149,7 @@ module cube4_persp_slice #(
       4'd2: dividend = -(DivW'(cy_here));
       4'd3: dividend = (DivW'($signed({1'b0, dim_y_i})) <<< FracBits) - DivW'(cy_here);
       4'd4: begin  // round(2^Q / E^2) = (2^Q + E^2 / 2) / E^2
-        dividend = (DivW'(1) <<< RecipQ) + DivW'(area >> 1);
+        dividend = (DivW'(1) <<< RecipQ) + DivW'(area[2*ExtentBits-1:1]);
         divisor  = PosBits'(area);
         rounding = RoundTrunc;
       end
