@@ -249,6 +249,15 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
     throw std::invalid_argument(std::string("precision: ") + f->key + " = " + std::to_string(r.p.*f->member) +
                                 ", but the system's RTL is verilated with the default widths "
                                 "(docs/fixed-point.md); run other widths with --model tlm");
+  // The address generator's dimension registers (cube4_pkg::DimBits).
+  if (cfg.levels[static_cast<size_t>(Unit::Addr)] == Level::Rtl)
+    for (int axis = 0; axis < 3; ++axis)
+      if (r.dim[axis] >= (1 << kRtlAddrDimBits))
+        throw std::invalid_argument(
+            "volume: a dimension of " + std::to_string(r.dim[axis]) + " voxels, more than the RTL address "
+            "generator's " + std::to_string(kRtlAddrDimBits) + "-bit dimension registers hold (at most " +
+            std::to_string((1 << kRtlAddrDimBits) - 1) + "; DimBits in rtl/cube4_pkg.sv); run the address "
+            "generation at TLM (--model tlm, or mixed: without addr)");
   // The rings keep beams and slices of the permuted x and y; a gradient
   // unit the scene does not need is not run at all.
   const bool gradient_runs = r.gradient || cfg.simulate_unneeded;

@@ -4,12 +4,10 @@
 #include "golden/units/addr.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 
 namespace cube4::sysc {
-
-// cube4_addr's DimBits (rtl/cube4_pkg.sv; rtl_factory.cpp checks the two).
-constexpr int kRtlAddrDimBits = 10;
 
 template <class M>
 class RtlAddr final : public AddrIf {

@@ -21,6 +21,9 @@ struct TraceWindow;
 // Largest permuted nx, ny the verilated rings' storage holds (cube4_pkg::MaxDim,
 // checked in rtl_factory.cpp).
 constexpr int kRtlMaxDim = 256;
+// cube4_addr's DimBits: its dimension registers (rtl/cube4_pkg.sv; checked
+// in rtl_factory.cpp).
+constexpr int kRtlAddrDimBits = 10;
 // The voxel tag width of the rings and shading unit verilated with tags
 // (bela §III; CMake CUBE4_SYSTEM_TAG_PIPES, checked in rtl_factory.cpp): a
 // scene's tags of up to this many bits use them, in their low bits.

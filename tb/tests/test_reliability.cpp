@@ -492,6 +492,14 @@ TEST_F(Reliability, LimitsAreCheckedBeforeAnyVoxelIsLoaded) {
     const CliResult r = run("render " + wide + " --model " + std::string(model) + out);
     expect_one_error_line(r, "missing.raw: cannot open raw volume");
   }
+  // The address generator's 10-bit dimensions, at RTL: 1024 (which the
+  // host interface's window takes) is refused for it, named.
+  const CliResult a = run("render " + write("a.json", missing_raw_scene(1024, 4, 4)) + " --model mixed:addr" + out);
+  expect_one_error_line(a, "1024 voxels");
+  EXPECT_NE(a.err.find("10-bit"), std::string::npos) << a.err;
+  EXPECT_NE(a.err.find("at TLM"), std::string::npos) << a.err;
+  expect_one_error_line(run("render " + write("a2.json", missing_raw_scene(1023, 4, 4)) + " --model mixed:addr" + out),
+                        "missing.raw: cannot open raw volume");
   // An unshaded scene runs no gradient unit, so its ring limit does not apply.
   const std::string mip = write("mip.json", missing_raw_scene(300, 20, 8, R"(, "shading": false, "blend": "mip")"));
   expect_one_error_line(run("render " + mip + " --model mixed:gradient" + out), "missing.raw: cannot open raw volume");
