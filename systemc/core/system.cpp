@@ -269,8 +269,10 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
             std::string("volume: the view's permuted ") + (axis == 0 ? "x" : "y") + " axis has " +
             std::to_string(r.dim[axis]) + " voxels, more than the " + unit_name(u) +
             " ring's storage at RTL holds (MaxDim " + std::to_string(kRtlMaxDim) +
-            " per axis, verilated in systemc/CMakeLists.txt); run the " + unit_name(u) +
-            " unit at TLM (--model tlm, or mixed: without it), or a view whose permuted x and y fit");
+            " per axis); run the " + unit_name(u) +
+            " unit at TLM (--model tlm, or mixed: without it), split the volume into sub-cubes that fit "
+            "(--blocks AxBxC), choose a view whose permuted x and y fit, or build larger rings (CMake "
+            "-DCUBE4_SYSTEM_MAX_DIM=N)");
   }
 }
 

@@ -29,7 +29,6 @@ namespace cube4::sysc {
 // (rtl/cube4_pkg.sv; every verilated model exports it, the shading unit's
 // copy is read here). The golden widths are checked by test_rtl_pkg.
 using Pkg = Vsys_shade_unit_cube4_pkg;
-static_assert(Pkg::MaxDim == kRtlMaxDim, "the rings' storage per axis");
 static_assert(Pkg::DimBits == kRtlAddrDimBits, "the address generator's dimension width");
 static_assert(Pkg::SupersamplingBits == rtl::kSupersamplingBits, "the gradient ring's supersampling field");
 static_assert(Pkg::PosBits == golden::kPositionBits, "the compositor's position width");

@@ -18,9 +18,14 @@ namespace cube4::sysc {
 
 struct TraceWindow;
 
-// Largest permuted nx, ny the verilated rings' storage holds (cube4_pkg::MaxDim,
-// checked in rtl_factory.cpp).
+// Largest permuted nx, ny the verilated rings' storage holds: their MaxDim,
+// CMake's CUBE4_SYSTEM_MAX_DIM (systemc/CMakeLists.txt verilates the rings
+// with it and defines this).
+#ifdef CUBE4_RTL_MAX_DIM
+constexpr int kRtlMaxDim = CUBE4_RTL_MAX_DIM;
+#else
 constexpr int kRtlMaxDim = 256;
+#endif
 // cube4_addr's DimBits: its dimension registers (rtl/cube4_pkg.sv; checked
 // in rtl_factory.cpp).
 constexpr int kRtlAddrDimBits = 10;

@@ -485,6 +485,8 @@ TEST_F(Reliability, LimitsAreCheckedBeforeAnyVoxelIsLoaded) {
     expect_one_error_line(r, "300 voxels");
     EXPECT_NE(r.err.find("MaxDim 256"), std::string::npos) << model << ": " << r.err;
     EXPECT_NE(r.err.find("at TLM"), std::string::npos) << model << ": " << r.err;
+    EXPECT_NE(r.err.find("--blocks"), std::string::npos) << model << ": " << r.err;
+    EXPECT_NE(r.err.find("CUBE4_SYSTEM_MAX_DIM"), std::string::npos) << model << ": " << r.err;
   }
   // The shading unit and address generation have no ring storage: not
   // refused for the rings.
