@@ -133,13 +133,22 @@ TEST(FramePlan, RefusesWhatTheStreamCannotCarry) {
 // --check's stream checker names the unit, slice and sample of the first
 // difference (and takes golden's own values without complaint).
 namespace {
-TEST(StreamChecker, NamesTheFirstDifferingUnitSliceAndSample) {
-  golden::Volume vol = numbered(6, 5, 4);
-  for (auto& v : vol.data) v = static_cast<uint16_t>(v % 4096);
+// A 6 x 5 x 4 volume of numbered voxels and its frame, with gradients.
+struct CheckedFrame {
+  golden::Volume vol;
   golden::Registers r;
-  r.dim = {6, 5, 4};
-  r.classification.resize(4096);
-  r.gradient = true;
+  CheckedFrame() : vol(numbered(6, 5, 4)) {
+    for (auto& v : vol.data) v = static_cast<uint16_t>(v % 4096);
+    r.dim = {6, 5, 4};
+    r.classification.resize(4096);
+    r.gradient = true;
+  }
+};
+
+TEST(StreamChecker, NamesTheFirstDifferingUnitSliceAndSample) {
+  const CheckedFrame f;
+  const golden::Volume& vol = f.vol;
+  const golden::Registers& r = f.r;
   const sysc::FramePlan plan(r, 4);
   sysc::StreamChecker checker(plan, vol);
   const golden::PermutedVolume pv(vol, r.perm, r.flip);
@@ -180,14 +189,9 @@ TEST(StreamChecker, NamesTheFirstDifferingUnitSliceAndSample) {
 // beats before it (here all beyond the volume's x, so compared with
 // nothing) do not count as differences.
 TEST(StreamChecker, FindsADifferenceManyBatchesIntoTheStream) {
-  golden::Volume vol = numbered(6, 5, 4);
-  for (auto& v : vol.data) v = static_cast<uint16_t>(v % 4096);
-  golden::Registers r;
-  r.dim = {6, 5, 4};
-  r.classification.resize(4096);
-  r.gradient = true;
-  const sysc::FramePlan plan(r, 4);
-  sysc::StreamChecker checker(plan, vol);
+  const CheckedFrame f;
+  const sysc::FramePlan plan(f.r, 4);
+  sysc::StreamChecker checker(plan, f.vol);
   sysc::GradientBeat g;
   g.valid = true;
   g.slice = 1;
