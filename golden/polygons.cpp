@@ -236,8 +236,11 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   const RaySlices rays(r, W, H);
   const int64_t slice = int64_t{1} << kZFracBits;
-  std::vector<uint64_t> slab_triangle;  // k << 32 | triangle, per fragment in a slab
-  slab_triangle.reserve(translucent.size());
+  // Each slab's triangles, counted once: in depth order a triangle's
+  // fragments come in slabs that never go back, so a slab is new to a
+  // triangle exactly when it differs from the triangle's last one.
+  out.counts.slab_triangles.assign(static_cast<size_t>(K), 0);
+  std::vector<int> last_slab(static_cast<size_t>(triangle) + 1, -1);
   for (const auto& [depth, index] : order) {
     const Fragment& g = translucent[index];
     const size_t i = static_cast<size_t>(g.v) * W + g.u;
@@ -260,13 +263,11 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       out.slabs[static_cast<size_t>(k)].insert(g.u - r.base_origin_x() + rays.ix(k), g.v - r.base_origin_y() + rays.iy(k),
                                                g.px, p);
       ++out.counts.in_slabs;
-      slab_triangle.push_back(uint64_t{static_cast<uint32_t>(k)} << 32 | g.triangle);
+      int& last = last_slab[g.triangle];
+      if (last != k) ++out.counts.slab_triangles[static_cast<size_t>(k)];
+      last = k;
     }
   }
-  std::sort(slab_triangle.begin(), slab_triangle.end());
-  out.counts.slab_triangles.assign(static_cast<size_t>(K), 0);
-  for (size_t i = 0; i < slab_triangle.size(); ++i)
-    if (i == 0 || slab_triangle[i] != slab_triangle[i - 1]) ++out.counts.slab_triangles[slab_triangle[i] >> 32];
   for (size_t i = 0; i < pixels; ++i)
     if (opaque_depth[i] != kNone) out.back[i] = pixel_over(out.back[i], opaque_px[i], p);
   return out;

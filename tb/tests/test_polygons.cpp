@@ -624,6 +624,38 @@ std::string sphere_with_polygons(const std::string& view) {
 }
 }  // namespace
 
+// Each slab's triangle count (the triangle-rate term of Cube-5's connection
+// times) counts a triangle once per slab it has fragments in, however its
+// fragments interleave with other triangles' in depth order: the whole
+// frame's count is the sum of the counts of each triangle rasterised alone
+// (translucent only, so that none hides another's fragments).
+TEST(Polygons, SlabTriangleCountsAreEachTrianglesSlabs) {
+  for (const std::string& view : {std::string(R"({"direction": [0.4, -0.3, 1]})"),
+                                  std::string(R"({"direction": [-1, 0.2, 0.1], "up": [0, 0, 1]})")}) {
+    Hybrid h = hybrid(sphere_with_polygons(view));
+    std::vector<golden::Mesh> translucent;
+    for (const golden::Mesh& m : h.meshes)
+      if (m.opacity < 1) translucent.push_back(m);
+    h.frame = golden::rasterise_polygons(h.scene, translucent, h.host);
+    std::vector<uint32_t> sum(h.frame.counts.slab_triangles.size(), 0);
+    size_t triangles = 0;
+    for (const golden::Mesh& m : translucent)
+      for (const auto& t : m.triangles) {
+        golden::Mesh one = m;
+        one.triangles = {t};
+        const golden::PolygonFrame f = golden::rasterise_polygons(h.scene, {one}, h.host);
+        for (size_t k = 0; k < sum.size(); ++k) {
+          ASSERT_LE(f.counts.slab_triangles[k], 1u);
+          sum[k] += f.counts.slab_triangles[k];
+        }
+        ++triangles;
+      }
+    EXPECT_GT(triangles, 20u);
+    EXPECT_EQ(h.frame.counts.slab_triangles, sum);
+    EXPECT_GT(*std::max_element(sum.begin(), sum.end()), 2u) << "slabs where triangles meet";
+  }
+}
+
 TEST(Polygons, SkippingAndThreadsStayExact) {
   for (const std::string& view : {std::string(R"({"direction": [0.4, -0.3, 1]})"),
                                   std::string(R"({"direction": [-1, 0.2, 0.1], "up": [0, 0, 1]})")}) {
