@@ -65,8 +65,14 @@ void StreamChecker::hand_over() {
   if (filling_.empty()) return;
   pending_.push_back(std::move(filling_));
   ++handed_;
-  filling_ = {};
-  filling_.reserve(kBatch);
+  // A checked batch's storage again, if one is back: no fresh pages.
+  if (free_.empty()) {
+    filling_ = {};
+    filling_.reserve(kBatch);
+  } else {
+    filling_ = std::move(free_.back());
+    free_.pop_back();
+  }
 }
 
 void StreamChecker::drain() {
@@ -115,9 +121,11 @@ void StreamChecker::work(const golden::Volume& vol) {
     changed_.notify_all();
     if (!error_)  // else the render failed: nothing to compare with
       for (const Beat& b : batch) std::visit([this](const auto& beat) { check(beat); }, b);
+    batch.clear();
     {
       std::lock_guard<std::mutex> lock(mutex_);
       ++checked_;
+      free_.push_back(std::move(batch));
     }
     changed_.notify_all();
   }

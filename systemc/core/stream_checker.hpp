@@ -82,6 +82,7 @@ class StreamChecker {
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::vector<Beat>> pending_;
+  std::vector<std::vector<Beat>> free_;  // checked batches' storage, for the simulation's side
   size_t handed_ = 0, checked_ = 0;  // batches
   bool closed_ = false, rendered_ = false;
   std::exception_ptr error_;
