@@ -14,6 +14,7 @@
 
 #include "golden/errors.hpp"
 #include "golden/scene_io.hpp"
+#include "tb/tests/one_node_slurm.hpp"
 
 namespace cube4::tb {
 namespace {
@@ -207,6 +208,56 @@ TEST(Explore, SmallSweepRunsThroughParallelAndResumes) {
   const std::string jobs = read(d / "jobs" / "jobs.txt");
   EXPECT_EQ(std::count(jobs.begin(), jobs.end(), '\n'), 4);
   EXPECT_FALSE(fs::exists(d / "jobs" / "points"));
+}
+
+// The same sweep as a Slurm job array and a collect job after it
+// (scripts/explore_slurm.sh --wait), on a one-node Slurm started here, gives
+// the table GNU parallel gives (all but the simulation times); skipped,
+// with the reason, where Slurm cannot run. Made-up gate counts in a cache
+// the jobs find through XDG_CACHE_HOME (sbatch passes the environment on).
+TEST(Explore, SlurmJobArrayGivesTheParallelTable) {
+  const fs::path d = scratch("slurm");
+  cube4::test::OneNodeSlurm slurm(d / "slurm");
+  if (!slurm.why_not().empty()) GTEST_SKIP() << "no Slurm here: " << slurm.why_not();
+  if (exit_code("command -v parallel >/dev/null") != 0) GTEST_SKIP() << "GNU parallel not installed";
+  write(d / "scene.json", kScene);
+  write(d / "s.json", R"({"scene": "scene.json", "model": "tlm", "reference_step": 0.5, "roi": [12, 12, 24, 24],
+    "axes": {"pipelines": [2, 4]}})");
+  const Sweep sweep = load_sweep((d / "s.json").string());
+  const fs::path cache = d / "xdg" / "cube4" / "gates";
+  fs::create_directories(cache);
+  for (const ExplorePoint& p : sweep.points) {
+    const golden::Scene s = golden::parse_scene(p.scene.dump(), "point");
+    for (const auto& [unit, params] : declared_parameters(gate_config(s)))
+      write(gates_cache_file(cache.string(), unit, params),
+            nlohmann::json{{"unit", unit}, {"parameters", params}, {"row", {{"nand2", 100.0}, {"ram_bits", 10.0}}}}.dump());
+  }
+  ::setenv("XDG_CACHE_HOME", (d / "xdg").c_str(), 1);
+  const std::string bin = CUBE4_BINARY, sweep_file = (d / "s.json").string();
+  ASSERT_EQ(exit_code(bin + " explore " + sweep_file + " --out " + (d / "parallel").string() + " -j 2 -q 2> " +
+                      (d / "parallel.log").string()),
+            0)
+      << read(d / "parallel.log");
+  ASSERT_EQ(exit_code("timeout 300 " CUBE4_SOURCE_DIR "/scripts/explore_slurm.sh " + sweep_file + " --out " +
+                      (d / "slurm-out").string() + " --cube4 " + bin + " --wait > " + (d / "slurm.log").string() +
+                      " 2>&1"),
+            0)
+      << read(d / "slurm.log") << read(d / "slurm-out" / "slurm-collect.log");
+  ::unsetenv("XDG_CACHE_HOME");
+  const nlohmann::json a = nlohmann::json::parse(read(d / "parallel" / "results.json"));
+  const nlohmann::json b = nlohmann::json::parse(read(d / "slurm-out" / "results.json"));
+  ASSERT_EQ(a["points"].size(), 2u);
+  ASSERT_EQ(b["points"].size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    nlohmann::json x = a["points"][i], y = b["points"][i];
+    EXPECT_EQ(y["status"], "ok") << y.dump();
+    for (nlohmann::json* p : {&x, &y}) {
+      p->erase("sim_seconds");  // a simulation's own times: not the same twice
+      p->erase("process_seconds");
+      p->erase("pareto");       // partly by simulation time
+    }
+    EXPECT_EQ(x, y) << "point " << i;
+  }
 }
 
 TEST(Explore, CommandRefusesABadSweepWithExitTwo) {
