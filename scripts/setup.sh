@@ -10,6 +10,7 @@ packages=(build-essential cmake ninja-build pkg-config zlib1g-dev libpng-dev
   verilator libsystemc-dev libgtest-dev libopenimageio-dev openimageio-tools yosys
   libcli11-dev nlohmann-json3-dev libnifti2-dev libvolpack1-dev libassimp-dev libxml2-utils z3 ccache
   parallel python3-matplotlib
+  slurm-wlm  # the job-array tests start a one-node Slurm of their own (tb/tests/one_node_slurm.hpp)
   clang libclang-rt-14-dev)  # clang: the sanitizer and fuzzer build (docs/reliability.md)
 "$here/scripts/install_packages.sh" setup "${packages[@]}"
 [ "$build" = --packages-only ] && exit 0
