@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 
 #include "golden/registers.hpp"
 #include "golden/units/shade_classify.hpp"
@@ -77,6 +78,15 @@ inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const
   const uint32_t ahead = abc_sample(n.ahead[0], n.ahead[1], n.ahead[2], n.ahead[3],
                                     c.ahead_x.weight, c.ahead_y.weight, w);
   return gradient_12n(n.left, n.right, n.up, n.down, behind, ahead, r.supersampling, r.p);
+}
+
+// The cube-map divider's table (same values) for the registers' shading,
+// or null where it does not pay: up to 10-bit gradients it holds 1 MB at
+// most and is cheaper to fill than dividing per sample.
+inline std::unique_ptr<FacePositionTable> make_face_table(const Registers& r) {
+  if (!r.shading || r.p.gradient_bits > 10) return nullptr;
+  return std::make_unique<FacePositionTable>(static_cast<int>(max_signed(r.p.gradient_bits)), r.p.map_face_res,
+                                             r.p.weight_bits);
 }
 
 // Magnitude, classification and shading of a sample with value `centre`,

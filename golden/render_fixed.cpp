@@ -50,7 +50,6 @@ class Band {
 
   void run(const Progress* progress) {
     const Registers& r = r_;
-    const uint32_t opaque = static_cast<uint32_t>(max_unsigned(acc_bits(r.p)));
     int32_t first_visible = 0;
     while (first_visible < static_cast<int32_t>(r.class_values()) && !r.value_visible(first_visible)) ++first_visible;
     // Sample slices behind, current and ahead of the one being shaded.
@@ -70,14 +69,15 @@ class Band {
         while (s.end > s.begin && samples[s.end - 1] < first_visible) --s.end;
         return s;
       };
-      // A composited sample whose classified α is zero, or that meets an
-      // opaque ray, leaves the ray exactly as it is (α only shrinks on the
-      // way through the pipeline, and blend_front_to_back adds nothing for
-      // α = 0 or full α_acc), so its gradient and shading are not computed.
-      auto shade = [&](int x, int y, const RayAcc& ray, ShadedSample& s) {
+      // A composited sample whose classified α is zero leaves its ray
+      // exactly as it is (α only shrinks on the way through the pipeline,
+      // and blend_front_to_back adds nothing for α = 0), so its gradient and
+      // shading are not computed; nor are those of rays the compositor has
+      // stopped (RayStop).
+      auto shade = [&](int x, int y, const RayAcc&, ShadedSample& s) {
         const uint32_t centre = current.at(x, y);
         const uint32_t tag = tagged_ ? tag_current_.at(x, y) : 0;
-        if (f_.may_skip && (classify(r.classification, tag, centre, r.p).a == 0 || ray.a == opaque)) return false;
+        if (f_.may_skip && classify(r.classification, tag, centre, r.p).a == 0) return false;
         if (r.gradient) {
           gather_neighbourhood(behind, current, ahead, c, x, y, n);
           if (voxel_z_) n.z_difference = zdiff_.row(y)[x];
@@ -85,6 +85,7 @@ class Band {
           n.centre = centre;
         }
         n.tag = tag;
+        ++shaded_;
         s = shade_sample(r, c, x, y, n, f_.faces);
         if (f_.probe) {
           if (tagged_) f_.probe->tagged(x, y, c, tag);
@@ -107,6 +108,7 @@ class Band {
     }
     f_.compositor.finish(v0_, v1_);
   }
+  uint64_t shaded() const { return shaded_; }
 
  private:
   // The band's own beams of slice k.
@@ -200,6 +202,7 @@ class Band {
   SliceInterp interp_;
   std::vector<Span> spans_;
   int loaded_z_ = -1;
+  uint64_t shaded_ = 0;
 };
 
 // Bands of base-plane rows with about equal work: a beam costs its
@@ -241,32 +244,28 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions
     ranges = opt.ranges ? opt.ranges : &own;
   }
   const SkipMap skip(r, ranges);
-  SliceCompositor compositor(r, bp, opt.polygons);
-  // Up to 10-bit gradients a table of the cube-map divisions (1 MB at most)
-  // is cheaper than dividing per sample.
-  std::unique_ptr<FacePositionTable> faces;
-  if (r.shading && r.p.gradient_bits <= 10)
-    faces = std::make_unique<FacePositionTable>(static_cast<int>(max_signed(r.p.gradient_bits)), r.p.map_face_res,
-                                                r.p.weight_bits);
+  // Without accumulators asked for, only the base plane's pixels must be exact.
+  const RayStop stop = !may_skip ? RayStop::never : opt.accumulators ? RayStop::full_alpha : RayStop::settled_pixel;
+  SliceCompositor compositor(r, bp, opt.polygons, stop);
+  const std::unique_ptr<FacePositionTable> faces = make_face_table(r);
   const Frame frame{r, PermutedVolume(vol, r.perm, r.flip), skip, compositor, faces.get(), opt.probe, may_skip};
   const int threads = opt.probe ? 1 : std::clamp(opt.threads > 0 ? opt.threads : default_threads(), 1,
                                                  std::max(1, bp.height));
   const std::vector<int> edges = threads == 1 ? std::vector<int>{0, bp.height} : band_edges(r, skip, threads);
   std::vector<std::thread> workers;
   std::vector<std::exception_ptr> failed(edges.size() - 1);
-  for (size_t b = 1; b + 1 < edges.size(); ++b)
-    workers.emplace_back([&, b] {
-      try {
-        Band(frame, edges[b], edges[b + 1]).run(nullptr);
-      } catch (...) {
-        failed[b] = std::current_exception();
-      }
-    });
-  try {
-    Band(frame, edges[0], edges[1]).run(&opt.progress);
-  } catch (...) {
-    failed[0] = std::current_exception();
-  }
+  std::vector<uint64_t> shaded(edges.size() - 1, 0);
+  auto run_band = [&](size_t b, const Progress* progress) {
+    try {
+      Band band(frame, edges[b], edges[b + 1]);
+      band.run(progress);
+      shaded[b] = band.shaded();
+    } catch (...) {
+      failed[b] = std::current_exception();
+    }
+  };
+  for (size_t b = 1; b + 1 < edges.size(); ++b) workers.emplace_back(run_band, b, nullptr);
+  run_band(0, &opt.progress);
   for (std::thread& t : workers) t.join();
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
@@ -274,6 +273,8 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions
   if (opt.stats) {
     opt.stats->samples = static_cast<uint64_t>(r.dim[0]) * r.dim[1] * r.sample_slices();
     opt.stats->slices = r.sample_slices();
+    opt.stats->shaded = 0;
+    for (uint64_t n : shaded) opt.stats->shaded += n;
   }
   return bp;
 }

@@ -42,11 +42,7 @@ class Traversal {
       : r_(r), opt_(opt), bp_(bp), pv_(vol, r.perm, r.flip), K_(r.sample_slices()), tagged_(r.p.tag_bits > 0),
         ox_(r.base_origin_x()), oy_(r.base_origin_y()), rays_(static_cast<size_t>(bp.width) * bp.height),
         lo_(r.dim[0], r.dim[1], kBoxPad), hi_(lo_), behind_(plane()), current_(plane()), ahead_(plane()),
-        tag_(plane()), next_tag_(plane()) {
-    if (r.shading && r.p.gradient_bits <= 10)
-      faces_ = std::make_unique<FacePositionTable>(static_cast<int>(max_signed(r.p.gradient_bits)), r.p.map_face_res,
-                                                   r.p.weight_bits);
-  }
+        tag_(plane()), next_tag_(plane()), faces_(make_face_table(r)) {}
 
   void run() {
     const bool may_skip = r_.blend == BlendMode::Composite && opt_.probe == nullptr;

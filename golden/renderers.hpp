@@ -50,6 +50,7 @@ using Progress = std::function<void(double fraction_done)>;
 // Counts of what the renderer computed, for reports.
 struct RenderStats {
   uint64_t samples = 0;         // samples computed (S * n^3 for the fixed renderer)
+  uint64_t shaded = 0;          // fixed renderer: samples given a gradient and shading (those that could change a pixel)
   int slices = 0;               // sample slices
 };
 

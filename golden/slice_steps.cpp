@@ -98,16 +98,20 @@ void SliceCompositor::start_polygons() {
   for (size_t i = 0; i < n; ++i) {
     rays_[i] = pixel_to_acc(poly_->front[i], r_.p);
     const auto u = static_cast<int>(i % static_cast<size_t>(width_)), v = static_cast<int>(i / width_);
+    mark_if_stopped(u, v);
     write_pixel(bp_, u, v, leave_with_polygons(rays_[i], poly_->back[i], r_.p));
   }
 }
 
-void SliceCompositor::composite_slab(int k, int y, RayAcc* ray) const {
-  const SlabImage& slab = poly_->slabs[static_cast<size_t>(k)];
+void SliceCompositor::composite_slab(const SliceControl& c, int y, RayAcc* ray) {
+  const SlabImage& slab = poly_->slabs[static_cast<size_t>(c.k)];
   if (slab.empty()) return;
   // A blank slab pixel leaves its ray as it is (ray_over_pixel): only the
   // slab's fragments are composited.
-  slab.for_each_pixel(y, [&](int x, const Pixel& px) { ray[x] = ray_over_pixel(ray[x], px, r_.p); });
+  slab.for_each_pixel(y, [&](int x, const Pixel& px) {
+    ray[x] = ray_over_pixel(ray[x], px, r_.p);
+    mark_if_stopped(x - c.ix + ix_last_, y - c.iy + iy_last_);
+  });
 }
 
 BasePlane empty_base_plane(const Registers& r) {

@@ -111,12 +111,34 @@ inline void write_pixel(BasePlane& bp, int u, int v, const Pixel& a) {
 // pixel follows it (double_composite(), in two passes over a beam that keep
 // each ray's order), and the back image goes behind it when it leaves;
 // pixels whose ray meets no sample are front over back from the start.
+//
+// With a RayStop other than `never` (front-to-back compositing only) the
+// compositor stops offering a ray's samples to `shade` once they cannot
+// change what is asked of the ray, and steps over stopped rays a word of
+// bits at a time (most samples of a dense volume lie behind such rays):
+// - `full_alpha`: the ray's α is full, so compose_over() adds mul_frac(0, ·)
+//   = 0 to it: the accumulator itself is final (BasePlane::acc stays exact).
+// - `settled_pixel`: the ray's base-plane pixel is final. Whatever is
+//   composited behind the ray (samples, slab pixels, the back image) adds
+//   to each colour channel at most what it adds to α (their premultiplied
+//   colour is never above their α, and mul_frac() is monotonic), and α's
+//   increments sum to at most t = full - α; so each channel ends in
+//   [v, min(v + t, full)], and once acc_to_pixel() (monotonic) maps both
+//   ends of that range to the same value for all four channels, no sample
+//   can change the pixel, though it could still change the accumulator.
+enum class RayStop { never, full_alpha, settled_pixel };
+
 class SliceCompositor {
  public:
-  SliceCompositor(const Registers& r, BasePlane& bp, const PolygonFrame* polygons = nullptr)
+  SliceCompositor(const Registers& r, BasePlane& bp, const PolygonFrame* polygons = nullptr,
+                  RayStop stop = RayStop::never)
       : r_(r), bp_(bp), nx_(r.dim[0]), ny_(r.dim[1]), K_(r.sample_slices()),
         ix_last_(r.base_origin_x()), iy_last_(r.base_origin_y()), width_(r.base_width()),
-        rays_(static_cast<size_t>(r.base_width()) * r.base_height()), poly_(polygons) {
+        stop_(r.blend == BlendMode::Composite ? stop : RayStop::never),
+        words_(stop_ != RayStop::never ? (r.base_width() + 63) / 64 : 0),
+        full_(static_cast<uint32_t>(max_unsigned(acc_bits(r.p)))), settled_t_(settled_transparency()),
+        rays_(static_cast<size_t>(r.base_width()) * r.base_height()),
+        stopped_(static_cast<size_t>(words_) * r.base_height()), poly_(polygons) {
     if (poly_) start_polygons();
   }
 
@@ -135,18 +157,36 @@ class SliceCompositor {
         span = beams(y);
       }
       if (span.empty() && !poly_) continue;
-      const size_t row = static_cast<size_t>(y - c.iy + iy_last_) * width_ + (ix_last_ - c.ix);
+      const int v = y - c.iy + iy_last_, shift = ix_last_ - c.ix;  // ray (u, v) = sample (u - shift, y)
+      const size_t row = static_cast<size_t>(v) * width_ + shift;
       RayAcc* ray = &rays_[row];
       ShadedSample s;
-      if (!poly_) {
+      if (words_ > 0) {
+        uint64_t* stopped = &stopped_[static_cast<size_t>(v) * words_];
+        const uint32_t* z = poly_ ? &poly_->z[row] : nullptr;
+        for (int x = span.begin; x < span.end; ++x) {
+          const uint64_t live = ~stopped[(x + shift) >> 6] >> ((x + shift) & 63);
+          if (live == 0) {  // the rest of this word's rays are stopped
+            x += 63 - ((x + shift) & 63);
+            continue;
+          }
+          x += __builtin_ctzll(live);
+          if (x >= span.end) break;
+          if ((z && !sample_before_z(c.k, z[x])) || !shade(x, y, ray[x], s)) continue;
+          ray[x] = blend_front_to_back(ray[x], s, r_.p);
+          const int u = x + shift;
+          if (can_stop(ray[x])) stopped[u >> 6] |= uint64_t{1} << (u & 63);
+        }
+      } else if (!poly_) {
         for (int x = span.begin; x < span.end; ++x)
           if (shade(x, y, ray[x], s)) ray[x] = blend(r_.blend, ray[x], s, r_.p);
         continue;
+      } else {
+        const uint32_t* z = &poly_->z[row];
+        for (int x = span.begin; x < span.end; ++x)
+          if (sample_before_z(c.k, z[x]) && shade(x, y, ray[x], s)) ray[x] = blend(r_.blend, ray[x], s, r_.p);
       }
-      const uint32_t* z = &poly_->z[row];
-      for (int x = span.begin; x < span.end; ++x)
-        if (sample_before_z(c.k, z[x]) && shade(x, y, ray[x], s)) ray[x] = blend(r_.blend, ray[x], s, r_.p);
-      composite_slab(c.k, y, ray);
+      if (poly_) composite_slab(c, y, ray);
     }
     // Rays of slice k-1 with no successor in slice k left through a side
     // face; only the last dy beams and the last dx rays of a beam can.
@@ -175,12 +215,41 @@ class SliceCompositor {
     if (!bp_.acc.empty()) bp_.acc[i] = rays_[i];
   }
   void start_polygons();
-  // Slab k's pixels of beam y behind the beam's rays (those already holding sample k).
-  void composite_slab(int k, int y, RayAcc* ray) const;
+  // Slab c.k's pixels of beam y behind the beam's rays (those already holding sample c.k).
+  void composite_slab(const SliceControl& c, int y, RayAcc* ray);
+  bool can_stop(const RayAcc& a) const {
+    if (a.a == full_) return true;
+    const uint32_t t = full_ - a.a;
+    if (t > settled_t_) return false;  // α's own pixel can still change
+    auto settled = [&](uint32_t v) {
+      return acc_to_pixel(v, r_.p) == acc_to_pixel(v < full_ - t ? v + t : full_, r_.p);
+    };
+    return settled(a.r) && settled(a.g) && settled(a.b);
+  }
+  // The largest t = full - α whose α still rounds to the full pixel (none
+  // with full_alpha): acc_to_pixel() is monotonic, so a binary search.
+  uint32_t settled_transparency() const {
+    if (stop_ != RayStop::settled_pixel) return 0;
+    const uint32_t top = acc_to_pixel(full_, r_.p);
+    uint32_t lo = 0, hi = full_;  // acc_to_pixel(full_ - lo) == top, acc_to_pixel(full_ - hi) < top
+    while (hi - lo > 1) {
+      const uint32_t mid = lo + (hi - lo) / 2;
+      (acc_to_pixel(full_ - mid, r_.p) == top ? lo : hi) = mid;
+    }
+    return lo;
+  }
+  void mark_if_stopped(int u, int v) {
+    if (words_ > 0 && can_stop(rays_[static_cast<size_t>(v) * width_ + u]))
+      stopped_[static_cast<size_t>(v) * words_ + (u >> 6)] |= uint64_t{1} << (u & 63);
+  }
   const Registers& r_;
   BasePlane& bp_;
   int nx_, ny_, K_, ix_last_, iy_last_, width_;
+  RayStop stop_;
+  int words_;
+  uint32_t full_, settled_t_;
   std::vector<RayAcc> rays_;
+  std::vector<uint64_t> stopped_;  // words_ per base-plane row, bit u: ray u is stopped
   const PolygonFrame* poly_;
 };
 

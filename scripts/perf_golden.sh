@@ -110,8 +110,9 @@ for vol, label in (("brainsmall", "brainsmall 128×128×84"), ("brain2x", "brain
     vp = load(f"{vol}.volpack")
     f1, fn = load(f"{vol}.fixed1"), load(f"{vol}.fixedN")
     for r, name in ((f1, "cube4 fixed-point golden (bit-exact)"), (fn, "cube4 fixed-point golden (bit-exact)")):
+        shaded = f" ({r['shaded_per_frame']/1e6:.2f} M shaded)" if "shaded_per_frame" in r else ""
         print(f"| {label} | {name} | {r['threads']} | {r['ms']['median']:.2f} | {r['ms']['min']:.2f} | "
-              f"{r['samples_per_frame']:,} | {r['samples_per_second']/1e6:.1f} M |")
+              f"{r['samples_per_frame']:,}{shaded} | {r['samples_per_second']/1e6:.1f} M |")
     raw, cls, pre = vp["raw_ms"]["median"], vp["classified_ms"]["median"], vp["classify_ms"]["median"]
     vox = vp["voxels_per_frame"]
     print(f"| {label} | VolPack `vpRenderRawVolume` (classifies on the fly) | 1 | {raw:.2f} | "

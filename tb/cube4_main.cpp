@@ -11,7 +11,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <malloc.h>
 #include <optional>
 #include <string>
 
@@ -27,6 +26,7 @@
 #include "golden/volume_io.hpp"
 #include "tb/block_jobs.hpp"
 #include "tb/explore.hpp"
+#include "tb/heap_tuning.hpp"
 #include "tb/image_io.hpp"
 #include "tb/output_files.hpp"
 #include "tb/progress.hpp"
@@ -868,13 +868,7 @@ int run_info(const std::string& scene, uint64_t max_memory_mib) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Frames allocate and free the same large buffers again and again (the
-  // base plane, polygon images, fragments): kept in the heap rather than
-  // mapped and returned to the kernel each time, they cost no page faults
-  // after the first frame (docs/performance.md, "What polygons cost the
-  // simulation"). Volumes above 32 MiB are still mapped.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  cube4::keep_frame_buffers_in_heap();
   CLI::App app{"cube4: cycle-level model of the Cube-4 / VolumePro volume rendering architecture"};
   app.require_subcommand(1);
   RenderArgs ra;

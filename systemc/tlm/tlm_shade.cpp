@@ -10,11 +10,8 @@ int shade_latency(const golden::Precision& p) {
   return (p.nr_iterations + 1) + 4 + cube + 3 + 3;
 }
 
-TlmShade::TlmShade(const FramePlan& plan) : plan_(plan), line_(static_cast<size_t>(shade_latency(plan.r.p))) {
-  if (plan.r.shading && plan.r.p.gradient_bits <= 10)
-    faces_ = std::make_unique<golden::FacePositionTable>(static_cast<int>(golden::max_signed(plan.r.p.gradient_bits)),
-                                                         plan.r.p.map_face_res, plan.r.p.weight_bits);
-}
+TlmShade::TlmShade(const FramePlan& plan)
+    : plan_(plan), faces_(golden::make_face_table(plan.r)), line_(static_cast<size_t>(shade_latency(plan.r.p))) {}
 
 void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   out = line_[head_];

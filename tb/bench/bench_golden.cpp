@@ -22,10 +22,12 @@
 #include "golden/renderers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
+#include "tb/heap_tuning.hpp"
 
 using namespace cube4::golden;
 
 int main(int argc, char** argv) {
+  cube4::keep_frame_buffers_in_heap();  // as cube4 runs frames
   std::string scene_path, model = "fixed";
   int frames = 20, warmup = 3, supersampling = 0, threads = 1;
   bool skip = true;
@@ -100,6 +102,7 @@ int main(int argc, char** argv) {
     if (model == "fixed") {
       j["threads"] = threads > 0 ? threads : default_threads();
       j["skip_empty"] = skip;
+      j["shaded_per_frame"] = stats.shaded;
     }
     std::printf("%s\n", j.dump().c_str());
   } catch (const InputError& e) {

@@ -119,6 +119,38 @@ TEST(EmptySpace, NothingIsSkippedForMipOrMinIp) {
   }
 }
 
+TEST(EmptySpace, StoppedRaysAreExactAndSaveShading) {
+  // Thin translucent material everywhere above a low threshold: rays keep a
+  // little transparency over long stretches, where their pixel is settled
+  // long before their α is full.
+  for (const char* view : {R"([20, 60, 180])", R"([-35, 10, 75])"}) {
+    const auto s = test::setup(brainsmall(std::string(R"("view": {"rotate": )") + view + R"(},
+        "transfer": {"opacity": [[0, 0], [0.05, 0], [0.1, 0.2], [0.3, 0.6], [1, 0.7]]})"));
+    SeeAll all;
+    golden::FixedOptions every;
+    every.probe = &all;
+    every.accumulators = true;
+    const golden::BasePlane reference = golden::render_fixed(s.volume, s.host.regs, every);
+    golden::RenderStats full_alpha, settled;
+    golden::FixedOptions o;
+    o.accumulators = true;  // only rays of full α may stop: their accumulators are final
+    o.stats = &full_alpha;
+    const golden::BasePlane with_acc = golden::render_fixed(s.volume, s.host.regs, o);
+    EXPECT_EQ(with_acc.acc, reference.acc) << view;
+    EXPECT_EQ(with_acc.rgba, reference.rgba) << view;
+    o.accumulators = false;  // rays stop once their pixel is settled
+    o.stats = &settled;
+    EXPECT_EQ(golden::render_fixed(s.volume, s.host.regs, o).rgba, reference.rgba) << view;
+    o.threads = 3;
+    EXPECT_EQ(golden::render_fixed(s.volume, s.host.regs, o).rgba, reference.rgba) << view;
+    EXPECT_GT(settled.shaded, 0u);
+    EXPECT_LT(settled.shaded, full_alpha.shaded) << view;
+    EXPECT_LT(full_alpha.shaded, full_alpha.samples) << view;
+    std::printf("%s: %llu samples shaded with rays stopped at full alpha, %llu at a settled pixel\n", view,
+                static_cast<unsigned long long>(full_alpha.shaded), static_cast<unsigned long long>(settled.shaded));
+  }
+}
+
 TEST(EmptySpace, EveryThreadCountGivesTheSameImage) {
   const std::vector<test::Setup> scenes = {
       test::setup(brainsmall(R"("view": {"rotate": [20, 60, 180]})")),
