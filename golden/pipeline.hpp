@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "golden/registers.hpp"
 #include "golden/units/shade_classify.hpp"
@@ -89,14 +90,34 @@ inline std::unique_ptr<FacePositionTable> make_face_table(const Registers& r) {
                                              r.p.weight_bits);
 }
 
-// Magnitude, classification and shading of a sample with value `centre`,
-// tag `tag` and gradient `g` (Gradient{} when the gradient unit is off): the
-// classification entry is {tag, centre}'s and the material the tag's. The shading
-// unit's work (rtl/cube4_shade_unit.sv). Units the registers leave off are
-// not evaluated at all, exactly as the hardware would skip them. `faces`, if
-// given, replaces the cube-map divider by its table (same values).
-inline ShadedSample shade_classified(const Registers& r, uint32_t centre, uint32_t tag, const Gradient& g,
-                                     const FacePositionTable* faces = nullptr) {
+// What a sample's shading takes from its gradient alone: the magnitude as a
+// unit value (full without the magnitude unit) and the diffuse and specular
+// reflectance-map values (zero without shading, specular). Nothing else of
+// the sample enters them, so a software renderer may reuse them for equal
+// gradients of a frame (GradientShadingCache). `faces`, if given, replaces
+// the cube-map divider by its table (same values).
+struct GradientShading {
+  uint32_t gm = 0, id = 0, is = 0;
+};
+inline GradientShading gradient_shading(const Registers& r, const Gradient& g,
+                                        const FacePositionTable* faces = nullptr) {
+  const Precision& p = r.p;
+  GradientShading out;
+  out.gm = r.magnitude ? gm_unit(r.gm_lut[gradient_magnitude(g, p)], p) : static_cast<uint32_t>(max_unsigned(p.alpha_bits));
+  if (r.shading) {
+    auto coords = [&](const Gradient& v) {
+      return faces ? cube_coordinates_with(v.x, v.y, v.z, *faces) : cube_coordinates(v.x, v.y, v.z, p);
+    };
+    out.id = reflectance_lookup(r.diffuse_map, coords(g), p);
+    if (r.specular) out.is = reflectance_lookup(r.specular_map, coords(reflection_vector(g, r.eye, p)), p);
+  }
+  return out;
+}
+
+// Classification and shading of a sample with value `centre` and tag `tag`
+// whose gradient gave `gs`: the classification entry is {tag, centre}'s and
+// the material the tag's.
+inline ShadedSample shade_with(const Registers& r, uint32_t centre, uint32_t tag, const GradientShading& gs) {
   const Precision& p = r.p;
   const uint32_t one = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
   ShadedSample out;
@@ -104,23 +125,49 @@ inline ShadedSample shade_classified(const Registers& r, uint32_t centre, uint32
   const ClassEntry& e = classify(r.classification, tag, centre, p);
   out.alpha = e.a;
   out.rgb = widen_color(e.r, e.g, e.b, p);
-  uint32_t gm = one;
-  if (r.magnitude) gm = gm_unit(r.gm_lut[gradient_magnitude(g, p)], p);
-  if (r.gm_opacity) out.alpha = modulate_alpha(out.alpha, gm, p);
-  if (r.shading) {
-    auto coords = [&](const Gradient& v) {
-      return faces ? cube_coordinates_with(v.x, v.y, v.z, *faces) : cube_coordinates(v.x, v.y, v.z, p);
-    };
-    const uint32_t id = reflectance_lookup(r.diffuse_map, coords(g), p);
-    uint32_t is = 0;
-    if (r.specular) {
-      const Gradient refl = reflection_vector(g, r.eye, p);
-      is = reflectance_lookup(r.specular_map, coords(refl), p);
-    }
-    out.rgb = phong(out.rgb, id, is, r.gm_diffuse ? gm : one, r.gm_specular ? gm : one, r.coefs_of(tag), p);
-  }
+  if (r.gm_opacity) out.alpha = modulate_alpha(out.alpha, gs.gm, p);
+  if (r.shading)
+    out.rgb = phong(out.rgb, gs.id, gs.is, r.gm_diffuse ? gs.gm : one, r.gm_specular ? gs.gm : one, r.coefs_of(tag), p);
   return out;
 }
+
+// Magnitude, classification and shading of a sample with value `centre`,
+// tag `tag` and gradient `g` (Gradient{} when the gradient unit is off): the
+// shading unit's work (rtl/cube4_shade_unit.sv). Units the registers leave
+// off are not evaluated at all, exactly as the hardware would skip them.
+inline ShadedSample shade_classified(const Registers& r, uint32_t centre, uint32_t tag, const Gradient& g,
+                                     const FacePositionTable* faces = nullptr) {
+  return shade_with(r, centre, tag, gradient_shading(r, g, faces));
+}
+
+// gradient_shading() of a frame's gradients, remembered in a small direct-
+// mapped table: neighbouring samples of smooth material often have equal
+// gradients. Equal by construction (an entry holds the function's value for
+// exactly its gradient). One per thread.
+class GradientShadingCache {
+ public:
+  GradientShadingCache(const Registers& r, const FacePositionTable* faces) : r_(r), faces_(faces), entries_(kSize) {}
+  const GradientShading& operator()(const Gradient& g) {
+    // Components are at most 16 bits signed: 21-bit fields keep them apart,
+    // and the top bit marks a filled entry.
+    auto field = [](int32_t c) { return static_cast<uint64_t>(c) & 0x1FFFFF; };
+    const uint64_t key = uint64_t{1} << 63 | field(g.x) << 42 | field(g.y) << 21 | field(g.z);
+    Entry& e = entries_[(key * 0x9E3779B97F4A7C15ull) >> (64 - kBits)];
+    if (e.key != key) e = {key, gradient_shading(r_, g, faces_)};
+    return e.value;
+  }
+
+ private:
+  static constexpr int kBits = 12;
+  static constexpr size_t kSize = size_t{1} << kBits;
+  struct Entry {
+    uint64_t key = 0;
+    GradientShading value;
+  };
+  const Registers& r_;
+  const FacePositionTable* faces_;
+  std::vector<Entry> entries_;
+};
 
 // Cropping, the block window and the cut plane of the shaded sample at
 // (x, y) of slice c.k: the compositing unit's first steps
@@ -141,10 +188,16 @@ inline ShadedSample crop_and_cut(const Registers& r, const SliceControl& c, int 
 
 // Gradient, magnitude, classification, shading, cropping and cut plane of
 // the sample at (x, y) of slice c.k: one pipeline's work on one sample.
+// `shading(g)` gives gradient_shading() of the sample's gradient g.
+template <class Shading>
+ShadedSample shade_sample_with(const Registers& r, const SliceControl& c, int x, int y, const Neighbourhood& n,
+                               Shading&& shading) {
+  const Gradient g = r.gradient ? sample_gradient(r, c, n) : Gradient{};
+  return crop_and_cut(r, c, x, y, shade_with(r, n.centre, n.tag, shading(g)));
+}
 inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int x, int y,
                                  const Neighbourhood& n, const FacePositionTable* faces = nullptr) {
-  const Gradient g = r.gradient ? sample_gradient(r, c, n) : Gradient{};
-  return crop_and_cut(r, c, x, y, shade_classified(r, n.centre, n.tag, g, faces));
+  return shade_sample_with(r, c, x, y, n, [&](const Gradient& g) { return gradient_shading(r, g, faces); });
 }
 
 }  // namespace cube4::golden

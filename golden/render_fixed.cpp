@@ -40,7 +40,8 @@ class Band {
       : f_(f), r_(f.r), nx_(r_.dim[0]), ny_(r_.dim[1]), K_(r_.sample_slices()), reach_(r_.gradient ? 1 : 0),
         iy_last_(r_.base_origin_y()), v0_(v0), v1_(v1), tagged_(r_.p.tag_bits > 0),
         voxel_z_(r_.gradient && r_.z_gradient == ZGradient::VoxelDifferences), vox_lo_(nx_, ny_, 1),
-        vox_hi_(nx_, ny_, 1), interp_(nx_, ny_, r_.p.weight_bits), spans_(static_cast<size_t>(ny_)) {
+        vox_hi_(nx_, ny_, 1), interp_(nx_, ny_, r_.p.weight_bits), spans_(static_cast<size_t>(ny_)),
+        shading_(r_, f.faces) {
     if (tagged_) tag_lo_ = tag_hi_ = tag_current_ = tag_ahead_ = Plane(nx_, ny_, 1);
     if (voxel_z_) {
       for (Plane& v : zvox_) v = Plane(nx_, ny_, 1);
@@ -86,7 +87,7 @@ class Band {
         }
         n.tag = tag;
         ++shaded_;
-        s = shade_sample(r, c, x, y, n, f_.faces);
+        s = shade_sample_with(r, c, x, y, n, shading_);
         if (f_.probe) {
           if (tagged_) f_.probe->tagged(x, y, c, tag);
           f_.probe->sample(x, y, c, n.centre, r.gradient ? sample_gradient(r, c, n) : Gradient{});
@@ -203,6 +204,7 @@ class Band {
   std::vector<Span> spans_;
   int loaded_z_ = -1;
   uint64_t shaded_ = 0;
+  GradientShadingCache shading_;
 };
 
 // Bands of base-plane rows with about equal work: a beam costs its

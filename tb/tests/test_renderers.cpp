@@ -190,6 +190,39 @@ TEST(RenderFixed, SkippingSamplesThatCannotChangeTheRayIsExact) {
 }
 
 namespace {
+// Recomputes every shaded sample from its value and gradient with the plain
+// unit functions: the renderer takes the gradient's part of the shading
+// from a cache (GradientShadingCache), which must give the same bits.
+struct ShadingCheck : golden::SampleProbe {
+  const golden::Registers& r;
+  uint32_t value = 0;
+  golden::Gradient gradient;
+  uint64_t checked = 0, wrong = 0;
+  explicit ShadingCheck(const golden::Registers& regs) : r(regs) {}
+  void sample(int, int, const golden::SliceControl&, uint32_t v, const golden::Gradient& g) override {
+    value = v;
+    gradient = g;
+  }
+  void shaded(int x, int y, const golden::SliceControl& c, const golden::ShadedSample& s) override {
+    const golden::ShadedSample e = golden::crop_and_cut(r, c, x, y, golden::shade_classified(r, value, 0, gradient));
+    ++checked;
+    if (e.rgb != s.rgb || e.alpha != s.alpha || e.value != s.value || e.visible != s.visible) ++wrong;
+  }
+};
+}  // namespace
+
+TEST(RenderFixed, CachedGradientShadingEqualsTheUnitFunctions) {
+  for (const char* extra : {R"("view": {"rotate": [20, 60, 180]})",
+                            R"("view": {"rotate": [-35, 10, 75]}, "gradient_modulation": {"opacity": true, "diffuse": true, "specular": true})"}) {
+    const auto s = test::setup(R"({"volume": {"file": ")" + golden::default_brainsmall_path() + R"("}, )" + extra + "}");
+    ShadingCheck check(s.host.regs);
+    golden::render_fixed(s.volume, s.host.regs, nullptr, {}, &check);
+    EXPECT_GT(check.checked, 100000u) << extra;
+    EXPECT_EQ(check.wrong, 0u) << extra;
+  }
+}
+
+namespace {
 // Checks every sample the renderer produced against trilinear() on the
 // sample's own eight voxels, fetched through the view's axis mapping.
 struct TrilinearCheck : golden::SampleProbe {
