@@ -16,9 +16,10 @@ ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactor
   out.width = f.image_width;
   out.height = f.image_height;
   out.rgba.assign(static_cast<size_t>(out.width) * out.height * 4, 0.0f);
-  auto texel = [&](int u, int v, int c) -> float {
-    if (u < 0 || v < 0 || u >= base.width || v >= base.height) return 0.0f;
-    return base.pixel(u, v)[c];
+  // A base-plane pixel's four channels, transparent black outside it.
+  static constexpr float kOutside[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  auto texel = [&](int u, int v) -> const float* {
+    return u < 0 || v < 0 || u >= base.width || v >= base.height ? kOutside : base.pixel(u, v);
   };
   for (int Y = 0; Y < out.height; ++Y)
     for (int X = 0; X < out.width; ++X) {
@@ -34,10 +35,11 @@ ImageF warp(const ImageF& base, double shift_x, double shift_y, const ViewFactor
       const int u = static_cast<int>(fu), v = static_cast<int>(fv);
       if (u < -1 || v < -1 || u >= base.width || v >= base.height) continue;
       const float tu = static_cast<float>(uv[0] - fu), tv = static_cast<float>(uv[1] - fv);
+      const float *t00 = texel(u, v), *t10 = texel(u + 1, v), *t01 = texel(u, v + 1), *t11 = texel(u + 1, v + 1);
       float* px = out.pixel(X, Y);
       for (int c = 0; c < 4; ++c) {
-        const float a = texel(u, v, c) + tu * (texel(u + 1, v, c) - texel(u, v, c));
-        const float b = texel(u, v + 1, c) + tu * (texel(u + 1, v + 1, c) - texel(u, v + 1, c));
+        const float a = t00[c] + tu * (t10[c] - t00[c]);
+        const float b = t01[c] + tu * (t11[c] - t01[c]);
         px[c] = a + tv * (b - a);
       }
     }
