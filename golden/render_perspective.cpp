@@ -46,7 +46,11 @@ class Traversal {
 
   void run() {
     const bool may_skip = r_.blend == BlendMode::Composite && opt_.probe == nullptr;
-    const uint32_t opaque = static_cast<uint32_t>(max_unsigned(acc_bits(r_.p)));
+    // Rays stop as in the parallel renderer (RayStop): at a settled pixel,
+    // or at full α when the accumulators are asked for.
+    const RayStopRule stop(!may_skip ? RayStop::never : opt_.accumulators ? RayStop::full_alpha : RayStop::settled_pixel,
+                           r_.blend, r_.p);
+    std::vector<uint8_t> stopped(rays_.size(), 0);
     sample_slice(0, current_, tag_);
     if (r_.gradient) sample_slice(1, ahead_, next_tag_);
     uint64_t count = 0;
@@ -55,9 +59,11 @@ class Traversal {
       for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
         for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
           ++count;
-          RayAcc& ray = rays_[current_.index(u, v)];
+          const size_t i = current_.index(u, v);
+          if (stopped[i]) continue;
+          RayAcc& ray = rays_[i];
           const uint32_t centre = current_.at(u, v), tag = tagged_ ? tag_.at(u, v) : 0;
-          if (may_skip && (ray.a == opaque || classify(r_.classification, tag, centre, r_.p).a == 0)) continue;
+          if (may_skip && classify(r_.classification, tag, centre, r_.p).a == 0) continue;
           const Gradient g = r_.gradient ? gradient(u, v) : Gradient{};
           const SamplePlace place = sample_place(r_, s, u, v);
           SliceControl c;
@@ -74,6 +80,7 @@ class Traversal {
             opt_.probe->shaded(place.x, place.y, c, out);
           }
           ray = blend(r_.blend, ray, out, r_.p);
+          if (stop.active() && stop.can_stop(ray)) stopped[i] = 1;
         }
       if (r_.gradient) {
         std::swap(behind_, current_);

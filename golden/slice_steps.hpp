@@ -128,15 +128,48 @@ inline void write_pixel(BasePlane& bp, int u, int v, const Pixel& a) {
 //   can change the pixel, though it could still change the accumulator.
 enum class RayStop { never, full_alpha, settled_pixel };
 
+// RayStop's test on one ray, for every renderer that keeps rays.
+class RayStopRule {
+ public:
+  RayStopRule(RayStop stop, BlendMode blend, const Precision& p)
+      : p_(p), stop_(blend == BlendMode::Composite ? stop : RayStop::never),
+        full_(static_cast<uint32_t>(max_unsigned(acc_bits(p)))), settled_t_(settled_transparency()) {}
+  bool active() const { return stop_ != RayStop::never; }
+  bool can_stop(const RayAcc& a) const {
+    if (a.a == full_) return true;
+    const uint32_t t = full_ - a.a;
+    if (t > settled_t_) return false;  // α's own pixel can still change
+    auto settled = [&](uint32_t v) {
+      return acc_to_pixel(v, p_) == acc_to_pixel(v < full_ - t ? v + t : full_, p_);
+    };
+    return settled(a.r) && settled(a.g) && settled(a.b);
+  }
+
+ private:
+  // The largest t = full - α whose α still rounds to the full pixel (none
+  // with full_alpha): acc_to_pixel() is monotonic, so a binary search.
+  uint32_t settled_transparency() const {
+    if (stop_ != RayStop::settled_pixel) return 0;
+    const uint32_t top = acc_to_pixel(full_, p_);
+    uint32_t lo = 0, hi = full_;  // acc_to_pixel(full_ - lo) == top, acc_to_pixel(full_ - hi) < top
+    while (hi - lo > 1) {
+      const uint32_t mid = lo + (hi - lo) / 2;
+      (acc_to_pixel(full_ - mid, p_) == top ? lo : hi) = mid;
+    }
+    return lo;
+  }
+  Precision p_;
+  RayStop stop_;
+  uint32_t full_, settled_t_;
+};
+
 class SliceCompositor {
  public:
   SliceCompositor(const Registers& r, BasePlane& bp, const PolygonFrame* polygons = nullptr,
                   RayStop stop = RayStop::never)
       : r_(r), bp_(bp), nx_(r.dim[0]), ny_(r.dim[1]), K_(r.sample_slices()),
         ix_last_(r.base_origin_x()), iy_last_(r.base_origin_y()), width_(r.base_width()),
-        stop_(r.blend == BlendMode::Composite ? stop : RayStop::never),
-        words_(stop_ != RayStop::never ? (r.base_width() + 63) / 64 : 0),
-        full_(static_cast<uint32_t>(max_unsigned(acc_bits(r.p)))), settled_t_(settled_transparency()),
+        stop_(stop, r.blend, r.p), words_(stop_.active() ? (r.base_width() + 63) / 64 : 0),
         rays_(static_cast<size_t>(r.base_width()) * r.base_height()),
         stopped_(static_cast<size_t>(words_) * r.base_height()), poly_(polygons) {
     if (poly_) start_polygons();
@@ -175,7 +208,7 @@ class SliceCompositor {
           if ((z && !sample_before_z(c.k, z[x])) || !shade(x, y, ray[x], s)) continue;
           ray[x] = blend_front_to_back(ray[x], s, r_.p);
           const int u = x + shift;
-          if (can_stop(ray[x])) stopped[u >> 6] |= uint64_t{1} << (u & 63);
+          if (stop_.can_stop(ray[x])) stopped[u >> 6] |= uint64_t{1} << (u & 63);
         }
       } else if (!poly_) {
         for (int x = span.begin; x < span.end; ++x)
@@ -217,37 +250,15 @@ class SliceCompositor {
   void start_polygons();
   // Slab c.k's pixels of beam y behind the beam's rays (those already holding sample c.k).
   void composite_slab(const SliceControl& c, int y, RayAcc* ray);
-  bool can_stop(const RayAcc& a) const {
-    if (a.a == full_) return true;
-    const uint32_t t = full_ - a.a;
-    if (t > settled_t_) return false;  // α's own pixel can still change
-    auto settled = [&](uint32_t v) {
-      return acc_to_pixel(v, r_.p) == acc_to_pixel(v < full_ - t ? v + t : full_, r_.p);
-    };
-    return settled(a.r) && settled(a.g) && settled(a.b);
-  }
-  // The largest t = full - α whose α still rounds to the full pixel (none
-  // with full_alpha): acc_to_pixel() is monotonic, so a binary search.
-  uint32_t settled_transparency() const {
-    if (stop_ != RayStop::settled_pixel) return 0;
-    const uint32_t top = acc_to_pixel(full_, r_.p);
-    uint32_t lo = 0, hi = full_;  // acc_to_pixel(full_ - lo) == top, acc_to_pixel(full_ - hi) < top
-    while (hi - lo > 1) {
-      const uint32_t mid = lo + (hi - lo) / 2;
-      (acc_to_pixel(full_ - mid, r_.p) == top ? lo : hi) = mid;
-    }
-    return lo;
-  }
   void mark_if_stopped(int u, int v) {
-    if (words_ > 0 && can_stop(rays_[static_cast<size_t>(v) * width_ + u]))
+    if (words_ > 0 && stop_.can_stop(rays_[static_cast<size_t>(v) * width_ + u]))
       stopped_[static_cast<size_t>(v) * words_ + (u >> 6)] |= uint64_t{1} << (u & 63);
   }
   const Registers& r_;
   BasePlane& bp_;
   int nx_, ny_, K_, ix_last_, iy_last_, width_;
-  RayStop stop_;
+  RayStopRule stop_;
   int words_;
-  uint32_t full_, settled_t_;
   std::vector<RayAcc> rays_;
   std::vector<uint64_t> stopped_;  // words_ per base-plane row, bit u: ray u is stopped
   const PolygonFrame* poly_;

@@ -340,3 +340,35 @@ TEST(PerspectiveRender, CroppingAndCutPlaneAgreeWithFloat) {
     EXPECT_LT(test::compare(test::final_fixed(s), test::final_fixed(plain)).psnr, 30.0) << extra;
   }
 }
+
+namespace {
+struct SeeEverySample : golden::SampleProbe {
+  void sample(int, int, const golden::SliceControl&, uint32_t, const golden::Gradient&) override {}
+};
+}  // namespace
+
+TEST(PerspectiveRender, StoppingRaysIsExact) {
+  // A probe makes the renderer shade every sample of every ray; without one
+  // it stops rays at a settled pixel, or at full α when it is asked for the
+  // accumulators (RayStop, as in the parallel renderer).
+  for (const char* view : {R"({"rotate": [20, 60, 180], "projection": "perspective", "distance": 200})",
+                           R"({"rotate": [-35, 10, 75], "projection": "perspective", "distance": 150, "fov": 50})"}) {
+    const auto s = test::setup(R"({"volume": {"file": ")" + golden::default_brainsmall_path() +
+                               R"("}, "output": {"width": 128, "height": 128}, "view": )" + view + R"(,
+        "transfer": {"opacity": [[0, 0], [0.05, 0], [0.1, 0.2], [0.3, 0.6], [1, 0.7]]}})");
+    SeeEverySample all;
+    golden::FixedOptions every;
+    every.probe = &all;
+    every.accumulators = true;
+    const golden::BasePlane reference = golden::render_fixed(s.volume, s.host.regs, every);
+    golden::FixedOptions o;
+    o.accumulators = true;
+    const golden::BasePlane with_acc = golden::render_fixed(s.volume, s.host.regs, o);
+    EXPECT_EQ(with_acc.acc, reference.acc) << view;
+    o.accumulators = false;
+    EXPECT_EQ(golden::render_fixed(s.volume, s.host.regs, o).rgba, reference.rgba) << view;
+    int64_t alpha = 0;
+    for (size_t i = 3; i < reference.rgba.size(); i += 4) alpha += reference.rgba[i];
+    EXPECT_GT(alpha, 0) << view;
+  }
+}
