@@ -43,8 +43,8 @@ struct PrecisionField {
 inline constexpr PrecisionField kPrecisionFields[] = {
     {"voxel_bits", &Precision::voxel_bits, 8, 16, "P_VOXEL_BITS", "VoxelBits"},
     {"weight_bits", &Precision::weight_bits, 2, 14, "P_WEIGHT_BITS", "WeightBits"},
-    // The DDA runs in C++ in the system (FramePlan's slice control).
-    {"dda_frac_bits", &Precision::dda_frac_bits, 2, 30, "P_DDA_FRAC_BITS", nullptr},
+    // The weight generator's fraction (rtl/cube4_dda.sv; the perspective units' W).
+    {"dda_frac_bits", &Precision::dda_frac_bits, 2, 30, "P_DDA_FRAC_BITS", "FracBits"},
     {"gradient_bits", &Precision::gradient_bits, 4, 16, "P_GRADIENT_BITS", "GradientBits"},
     {"gradient_shift", &Precision::gradient_shift, 0, 16, "P_GRADIENT_SHIFT", "GradientShift"},
     {"magnitude_bits", &Precision::magnitude_bits, 4, 16, "P_MAGNITUDE_BITS", "MagnitudeBits"},

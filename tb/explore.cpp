@@ -38,11 +38,11 @@ namespace {
 constexpr int kMaxDim = 256;
 constexpr int kMaxPoints = 10000;
 
-// The units one pipeline is made of, and the chip's one address generator
-// (rtl/; docs/gates.md).
+// The units one pipeline is made of, and those the chip has one of: the
+// address generator and the weight generator (rtl/; docs/gates.md).
 const std::vector<std::string> kPipelineUnits = {"cube4_interp_unit", "cube4_gradient_unit", "cube4_shade_unit",
                                                  "cube4_composite_unit"};
-const std::string kChipUnit = "cube4_addr";
+const std::vector<std::string> kChipUnits = {"cube4_addr", "cube4_dda"};
 
 std::string read_text(const fs::path& p) {
   std::ifstream f(p);
@@ -248,7 +248,8 @@ std::string gates_cache_file(const std::string& cache_dir, const std::string& un
 }
 
 std::map<std::string, std::string> declared_parameters(const std::string& config) {
-  std::vector<std::string> args{"bash", source_dir() + "/scripts/gates.sh", "--declared", "--set", config, kChipUnit};
+  std::vector<std::string> args{"bash", source_dir() + "/scripts/gates.sh", "--declared", "--set", config};
+  args.insert(args.end(), kChipUnits.begin(), kChipUnits.end());
   args.insert(args.end(), kPipelineUnits.begin(), kPipelineUnits.end());
   char tmpl[] = "/tmp/cube4-declared-XXXXXX";
   const int fd = ::mkstemp(tmpl);
@@ -264,7 +265,7 @@ std::map<std::string, std::string> declared_parameters(const std::string& config
     const size_t sp = line.find(' ');
     if (sp != std::string::npos) out[line.substr(0, sp)] = line.substr(sp + 1);
   }
-  if (out.size() != kPipelineUnits.size() + 1) throw std::runtime_error("explore: scripts/gates.sh --declared said: " + text);
+  if (out.size() != kPipelineUnits.size() + kChipUnits.size()) throw std::runtime_error("explore: scripts/gates.sh --declared said: " + text);
   return out;
 }
 
@@ -417,12 +418,16 @@ int run_point(const Sweep& s, const ExplorePoint& p, const ExploreArgs& a, const
         pipe_nand2 += g["units"][u]["nand2"].get<double>();
         pipe_ram += g["units"][u]["ram_bits"].get<double>();
       }
-      const json& chip = g["units"][kChipUnit];
+      double chip_nand2 = 0, chip_ram = 0;
+      for (const std::string& u : kChipUnits) {
+        chip_nand2 += g["units"][u]["nand2"].get<double>();
+        chip_ram += g["units"][u]["ram_bits"].get<double>();
+      }
       result["gates"] = {{"config", g["config"]},
                          {"nand2_pipeline", pipe_nand2},
                          {"ram_bits_pipeline", pipe_ram},
-                         {"nand2_chip", chip["nand2"].get<double>() + scene.pipelines * pipe_nand2},
-                         {"ram_bits_chip", chip["ram_bits"].get<double>() + scene.pipelines * pipe_ram}};
+                         {"nand2_chip", chip_nand2 + scene.pipelines * pipe_nand2},
+                         {"ram_bits_chip", chip_ram + scene.pipelines * pipe_ram}};
     }
     result["status"] = "ok";
     write_atomic(dir / "result.json", result.dump(1));

@@ -117,8 +117,10 @@ TEST(Explore, ParetoFrontKeepsWhatNothingBeats) {
 TEST(Explore, EachUnitIsSynthesisedWithTheParametersItDeclares) {
   golden::Scene s = golden::parse_scene(kScene, "scene");
   const auto d = declared_parameters(gate_config(s));
-  ASSERT_EQ(d.size(), 5u);
+  ASSERT_EQ(d.size(), 6u);
   EXPECT_EQ(d.at("cube4_addr"), "NumPipes=4");
+  EXPECT_NE(d.at("cube4_dda").find("FracBits=20"), std::string::npos) << d.at("cube4_dda");
+  EXPECT_EQ(d.at("cube4_dda").find("NumPipes"), std::string::npos);
   EXPECT_NE(d.at("cube4_shade_unit").find("AlphaBits=16"), std::string::npos);
   EXPECT_EQ(d.at("cube4_shade_unit").find("NumPipes"), std::string::npos);
   EXPECT_NE(d.at("cube4_composite_unit").find("SliceDepth=16384"), std::string::npos);
@@ -130,7 +132,7 @@ TEST(Explore, GateConfigurationFollowsWidthsAndPipelines) {
   const std::string c4 = gate_config(s);
   EXPECT_NE(c4.find("AlphaBits=16"), std::string::npos) << c4;
   EXPECT_NE(c4.find("NumPipes=4,BeamDepth=64,SliceDepth=16384"), std::string::npos) << c4;
-  EXPECT_EQ(c4.find("DdaFracBits"), std::string::npos) << "a width no RTL unit has: " << c4;
+  EXPECT_NE(c4.find("FracBits=20"), std::string::npos) << "the weight generator's fraction: " << c4;
   s.pipelines = 5;
   EXPECT_NE(gate_config(s).find("NumPipes=5,BeamDepth=52,SliceDepth=13312"), std::string::npos);
 }
@@ -168,8 +170,8 @@ TEST(Explore, SmallSweepRunsThroughParallelAndResumes) {
     EXPECT_GT(p["cycles_per_image"].get<double>(), 0.0);
     const int pipes = p["pipelines"];
     EXPECT_EQ(p["gates"]["nand2_pipeline"], 400.0);
-    EXPECT_EQ(p["gates"]["nand2_chip"], 50.0 + pipes * 400.0);
-    EXPECT_EQ(p["gates"]["ram_bits_chip"], pipes * 40.0);
+    EXPECT_EQ(p["gates"]["nand2_chip"], 50.0 + 100.0 + pipes * 400.0);  // address and weight generators
+    EXPECT_EQ(p["gates"]["ram_bits_chip"], 10.0 + pipes * 40.0);
   }
   // S = 2 costs twice the cycles of S = 1 at the same p.
   EXPECT_NEAR(r["points"][2]["cycles_per_image"].get<double>() / r["points"][0]["cycles_per_image"].get<double>(), 2.0,
