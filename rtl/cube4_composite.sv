@@ -367,6 +367,15 @@ module cube4_composite #(
   // golden premultiply() = min(mul_frac(to_acc(c), alpha, A), to_acc(alpha)):
   // the product is never above to_acc(c), so AB bits hold it; the clamp
   // keeps premultiplied colour <= alpha (a no-op when G = 0).
+  // The clamp compares only the guard bits: the product is at most
+  // alpha * 2^G + 2^G - 1 (to_acc(c) <= 2^AB - 1, and mul_frac's rounding
+  // reaches (alpha + 1) * 2^G - 1 only from alpha >= 2^(A-1), where
+  // unit(alpha) = alpha + 1), so its top A bits never exceed alpha, the top
+  // A bits of the limit: product > limit exactly when those are equal and
+  // the product's guard bits exceed the limit's. A full AB-bit compare
+  // computes the same bit, but abc's SAT sweep (scripts/gates.sh) spent
+  // minutes proving through the multiplier that its upper part never
+  // decides (docs/gates.md).
   logic [AB-1:0]   pre_limit;
   logic [3*AB-1:0] pre_product, premultiplied;  // blue at [0 +: AB], green, red
   logic [2:0]      pre_clamped;                  // the clamp acts (coverage checker)
@@ -377,7 +386,12 @@ module cube4_composite #(
       .pixel_i(rgb_q[4*3*A + ch*A +: A]), .acc_o(colour));
     cube4_mul_frac #(.XBits(AB), .FBits(A)) u_product (
       .x_i(colour), .f_i(cut_alpha_q), .y_o(pre_product[ch*AB +: AB]));
-    assign pre_clamped[ch] = pre_product[ch*AB +: AB] > pre_limit;
+    if (G > 0) begin : g_clamp
+      assign pre_clamped[ch] = (pre_product[ch*AB+G +: A] == cut_alpha_q)
+                            && (pre_product[ch*AB +: G] > pre_limit[G-1:0]);
+    end else begin : g_no_clamp
+      assign pre_clamped[ch] = 1'b0;  // the product is at most alpha
+    end
     assign premultiplied[ch*AB +: AB] = pre_clamped[ch] ? pre_limit : pre_product[ch*AB +: AB];
   end
 
