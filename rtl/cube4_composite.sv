@@ -51,8 +51,9 @@
 //   cut a, b, c: signed CutCoefBits (host: |a| <= 2^10);
 //   dmin, dmax: signed CutBits; falloff: unsigned CutBits;
 //   inv_falloff: unsigned AlphaBits + CutInvShift (host: <= (2^A-1) * 2^24).
-// The ramp product (falloff - outside) * inv_falloff is computed at its full
-// width, CutBits x (AlphaBits + CutInvShift) bits.
+// The ramp product (falloff - outside) * inv_falloff is exact: its low
+// AlphaBits + CutInvShift + 1 bits, and whether any partial product above
+// them is set (stage 4).
 //
 // Parameters (defaults = golden Precision, kCutInvShift): VoxelBits,
 // WeightBits, AlphaBits, AccGuardBits (<= AlphaBits), CutBits, CutInvShift;
@@ -170,7 +171,6 @@ module cube4_composite #(
   localparam int unsigned SumBits  = TermBits + 2;                   // a*X + b*Y + c*Z
   localparam int unsigned DBits    = (SumBits > CutBits) ? SumBits : CutBits;
   localparam int unsigned InvBits  = AlphaBits + CutInvShift;
-  localparam int unsigned RampBits = CutBits + InvBits + 1;          // product + rounding
   localparam int unsigned Latency  = 7;
 
 
@@ -303,18 +303,43 @@ module cube4_composite #(
     ////////////////////////////////////////////////////////////////////////
     // Stage 4: ramp = round_shift(span * inv_falloff, CutInvShift), <= one //
     ////////////////////////////////////////////////////////////////////////
-    localparam logic [RampBits-1:0] RampHalf = RampBits'(1) << (CutInvShift - 1);
+    // The ramp is above one (saturates) iff prod + half >= 2^InvBits
+    // (InvBits = CutInvShift + A). The full product is CutBits + InvBits
+    // bits, but only its low InvBits + 1 bits ever reach the result:
+    //   - if a partial product of weight >= 2^InvBits is set (span bit i and
+    //     inv_falloff bit j, i + j >= InvBits), prod >= 2^InvBits: saturated;
+    //   - if none is, span < 2^(i+1) and inv_falloff < 2^(j+1) for their
+    //     leading ones i, j with i + j < InvBits, so prod < 2^(InvBits+1)
+    //     and its low InvBits + 1 bits are all of it.
+    // The first test is an AND-OR of the operands' bits (high_pp); the
+    // product is truncated to InvBits + 1 bits (about 815 partial products
+    // instead of 1,280 at the defaults). The same ramp, bit for bit, as the
+    // full product's; the full product's saturation (the OR of its 33 top
+    // bits, set by nearly every random operand pair) cost abc's SAT sweep
+    // (scripts/gates.sh) minutes of counterexample search (docs/gates.md).
+    localparam logic [InvBits+1:0] RampHalf = (InvBits+2)'(1) << (CutInvShift - 1);
 
-    logic [RampBits-1:0] ramp_prod;
+    logic [CutBits-1:0]  high_pp;   // span bit i with inv_falloff bits of weight >= 2^(InvBits-i)
+    logic [InvBits:0]    ramp_low;  // prod mod 2^(InvBits+1)
+    logic [InvBits+1:0]  ramp_sum;
     logic [A-1:0]        ramp_d, ramp_q;
     logic                in_slab_qq, beyond_qq;
-    assign ramp_prod = RampBits'(ramp_span_q) * RampBits'(cut_inv_falloff_i) + RampHalf;
-    // ramp > one iff any bit above the A bits of (prod + half) >> CutInvShift.
-    assign cut_ramp_saturated = |ramp_prod[RampBits-1:CutInvShift+A];
-    assign ramp_d = cut_ramp_saturated ? {A{1'b1}} : ramp_prod[CutInvShift+A-1:CutInvShift];
+    for (genvar i = 0; i < CutBits; i++) begin : g_high_pp
+      // inv_falloff's bits j >= InvBits - i (j < InvBits: none for i = 0).
+      localparam int unsigned JMin = (i >= InvBits) ? 0 : InvBits - i;
+      if (JMin < InvBits) begin : g_pp
+        assign high_pp[i] = ramp_span_q[i] && |cut_inv_falloff_i[InvBits-1:JMin];
+      end else begin : g_no_pp
+        assign high_pp[i] = 1'b0;
+      end
+    end
+    assign ramp_low = (InvBits+1)'(ramp_span_q) * (InvBits+1)'(cut_inv_falloff_i);
+    assign ramp_sum = (InvBits+2)'(ramp_low) + RampHalf;
+    assign cut_ramp_saturated = |high_pp || |ramp_sum[InvBits+1:InvBits];
+    assign ramp_d = cut_ramp_saturated ? {A{1'b1}} : ramp_sum[InvBits-1:CutInvShift];
 
     logic unused_ramp_lsbs;
-    assign unused_ramp_lsbs = ^ramp_prod[CutInvShift-1:0];
+    assign unused_ramp_lsbs = ^ramp_sum[CutInvShift-1:0];
 
     always_ff @(posedge clk_i) begin : stage4_regs
       ramp_q     <= ramp_d;
