@@ -14,14 +14,17 @@
 // sample value (VoxelBits) and its selected bit: golden RayAcc, the value a
 // compositing unit holds for a ray (docs/rtl-compose.md).
 //
-// Both modes share one adder per channel: stage 1 picks the base pixel
-// (front, or back when MIP/MinIP takes it) and the increment (the products
-// mul_frac(t, back.c) in over mode, zero otherwise); the last stage adds
-// them, colours saturated. Overlay and underlay are this node with one
-// input held at a layer pixel (a register or an image memory).
+// Both modes share one adder per colour channel: stage 1 picks the base
+// pixel (front, or back when MIP/MinIP takes it) and the increment (the
+// products mul_frac(t, back.c) in over mode, zero otherwise); the last stage
+// adds them, saturated. The over mode's α is no sum but one product, the
+// remaining transparency (bit-exact, see "alpha" below), chosen in stage 1.
+// Overlay and underlay are this node with one input held at a layer pixel
+// (a register or an image memory).
 //
 // Latency (valid_i to valid_o): Latency cycles, 2 (default), 1 or 0.
-//   Latency 2: 1: transparency, the four products, base select (registered)
+//   Latency 2: 1: transparency, the four products, base and α select
+//              (registered)
 //              2: add, saturate (output registers)
 //   Latency 1: the same logic with no register between the products and the
 //              add (the compositor's blend stage: the accumulator loop of one
@@ -88,27 +91,43 @@ module cube4_compose_node #(
   logic [AB-1:0] transparency;
   assign transparency = {AB{1'b1}} - front_alpha_i;
 
-  // golden mul_frac(t, back.c, AB), red, green, blue, alpha.
-  logic [4*AB-1:0] product;
+  // golden mul_frac(t, back.c, AB), red, green, blue (red at [2*AB +: AB]).
+  logic [3*AB-1:0] product;
   cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_mul_red (
-    .x_i(transparency), .f_i(back_red_i), .y_o(product[3*AB +: AB]));
+    .x_i(transparency), .f_i(back_red_i), .y_o(product[2*AB +: AB]));
   cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_mul_green (
-    .x_i(transparency), .f_i(back_green_i), .y_o(product[2*AB +: AB]));
+    .x_i(transparency), .f_i(back_green_i), .y_o(product[AB +: AB]));
   cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_mul_blue (
-    .x_i(transparency), .f_i(back_blue_i), .y_o(product[AB +: AB]));
-  cube4_mul_frac #(.XBits(AB), .FBits(AB)) u_mul_alpha (
-    .x_i(transparency), .f_i(back_alpha_i), .y_o(product[0 +: AB]));
+    .x_i(transparency), .f_i(back_blue_i), .y_o(product[0 +: AB]));
 
+  // The over mode's alpha, golden front.alpha + mul_frac(t, back.alpha), as
+  // one minus the transparency left behind both pixels:
+  //   front.alpha + mul_frac(t, back.alpha) = one - (t - mul_frac(t, back.alpha))
+  //   t - mul_frac(t, f) = (t * unit(one - f) + 2^(AB-1) - 1) >> AB
+  // with unit(f) = f + (f >> (AB-1)) (cube4_mul_frac), because
+  // unit(one - f) = 2^AB - unit(f) and -floor(-x) = ceil(x): the product of
+  // the two transparencies, ties rounded down (HalfDown). Bit-exact with
+  // golden for every input, and no adder after the product: the sum's
+  // carry-out is zero only because mul_frac(t, f) <= t, and abc's SAT
+  // sweep (&fraig, scripts/gates.sh) spent minutes per node proving facts
+  // of that kind through the multiplier (docs/gates.md).
+  logic [AB-1:0] remaining, alpha_over;
+  cube4_mul_frac #(.XBits(AB), .FBits(AB), .HalfDown(1'b1)) u_mul_alpha (
+    .x_i(transparency), .f_i(~back_alpha_i), .y_o(remaining));
+  assign alpha_over = ~remaining;
+
+  // base: {red, green, blue, alpha, value, selected}; its alpha is the
+  // result's (the increment has no alpha).
   logic [PixBits-1:0] base_d, base;
-  logic [4*AB-1:0]    inc_d, inc;
+  logic [3*AB-1:0]    inc_d, inc;
   assign base_d = take_back ? {back_red_i, back_green_i, back_blue_i, back_alpha_i, back_value_i, back_selected_i}
-                            : {front_red_i, front_green_i, front_blue_i, front_alpha_i, front_value_i,
-                               front_selected_i};
+                            : {front_red_i, front_green_i, front_blue_i,
+                               extreme ? front_alpha_i : alpha_over, front_value_i, front_selected_i};
   assign inc_d  = extreme ? '0 : product;
 
   if (Latency == 2) begin : g_product_regs
     logic [PixBits-1:0] base_q;
-    logic [4*AB-1:0]    inc_q;
+    logic [3*AB-1:0]    inc_q;
     always_ff @(posedge clk_i) begin : stage1_regs
       base_q <= base_d;
       inc_q  <= inc_d;
@@ -129,15 +148,14 @@ module cube4_compose_node #(
   logic [3*AB-1:0] colour_sum;
   for (genvar ch = 0; ch < 3; ch++) begin : g_add
     assign {colour_saturated[ch], colour_sum[ch*AB +: AB]} =
-        {1'b0, base[PixBits-1-(2-ch)*AB -: AB]} + {1'b0, inc[(ch+1)*AB +: AB]};
+        {1'b0, base[PixBits-1-(2-ch)*AB -: AB]} + {1'b0, inc[ch*AB +: AB]};
   end
 
   logic [PixBits-1:0] out_d;
   assign out_d = {colour_saturated[2] ? {AB{1'b1}} : colour_sum[2*AB +: AB],
                   colour_saturated[1] ? {AB{1'b1}} : colour_sum[AB +: AB],
                   colour_saturated[0] ? {AB{1'b1}} : colour_sum[0 +: AB],
-                  // Never wraps: the increment is at most the transparency (mul_frac(t, f) <= t).
-                  base[PixBits-1-3*AB -: AB] + inc[0 +: AB],
+                  base[PixBits-1-3*AB -: AB],
                   base[1 +: VoxelBits],
                   base[0]};
 

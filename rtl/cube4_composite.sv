@@ -51,8 +51,9 @@
 //   cut a, b, c: signed CutCoefBits (host: |a| <= 2^10);
 //   dmin, dmax: signed CutBits; falloff: unsigned CutBits;
 //   inv_falloff: unsigned AlphaBits + CutInvShift (host: <= (2^A-1) * 2^24).
-// The ramp product (falloff - outside) * inv_falloff is computed at its full
-// width, CutBits x (AlphaBits + CutInvShift) bits.
+// The ramp product (falloff - outside) * inv_falloff is exact: its low
+// AlphaBits + CutInvShift + 1 bits, and whether any partial product above
+// them is set (stage 4).
 //
 // Parameters (defaults = golden Precision, kCutInvShift): VoxelBits,
 // WeightBits, AlphaBits, AccGuardBits (<= AlphaBits), CutBits, CutInvShift;
@@ -170,7 +171,6 @@ module cube4_composite #(
   localparam int unsigned SumBits  = TermBits + 2;                   // a*X + b*Y + c*Z
   localparam int unsigned DBits    = (SumBits > CutBits) ? SumBits : CutBits;
   localparam int unsigned InvBits  = AlphaBits + CutInvShift;
-  localparam int unsigned RampBits = CutBits + InvBits + 1;          // product + rounding
   localparam int unsigned Latency  = 7;
 
 
@@ -303,18 +303,43 @@ module cube4_composite #(
     ////////////////////////////////////////////////////////////////////////
     // Stage 4: ramp = round_shift(span * inv_falloff, CutInvShift), <= one //
     ////////////////////////////////////////////////////////////////////////
-    localparam logic [RampBits-1:0] RampHalf = RampBits'(1) << (CutInvShift - 1);
+    // The ramp is above one (saturates) iff prod + half >= 2^InvBits
+    // (InvBits = CutInvShift + A). The full product is CutBits + InvBits
+    // bits, but only its low InvBits + 1 bits ever reach the result:
+    //   - if a partial product of weight >= 2^InvBits is set (span bit i and
+    //     inv_falloff bit j, i + j >= InvBits), prod >= 2^InvBits: saturated;
+    //   - if none is, span < 2^(i+1) and inv_falloff < 2^(j+1) for their
+    //     leading ones i, j with i + j < InvBits, so prod < 2^(InvBits+1)
+    //     and its low InvBits + 1 bits are all of it.
+    // The first test is an AND-OR of the operands' bits (high_pp); the
+    // product is truncated to InvBits + 1 bits (about 815 partial products
+    // instead of 1,280 at the defaults). The same ramp, bit for bit, as the
+    // full product's; the full product's saturation (the OR of its 33 top
+    // bits, set by nearly every random operand pair) cost abc's SAT sweep
+    // (scripts/gates.sh) minutes of counterexample search (docs/gates.md).
+    localparam logic [InvBits+1:0] RampHalf = (InvBits+2)'(1) << (CutInvShift - 1);
 
-    logic [RampBits-1:0] ramp_prod;
+    logic [CutBits-1:0]  high_pp;   // span bit i with inv_falloff bits of weight >= 2^(InvBits-i)
+    logic [InvBits:0]    ramp_low;  // prod mod 2^(InvBits+1)
+    logic [InvBits+1:0]  ramp_sum;
     logic [A-1:0]        ramp_d, ramp_q;
     logic                in_slab_qq, beyond_qq;
-    assign ramp_prod = RampBits'(ramp_span_q) * RampBits'(cut_inv_falloff_i) + RampHalf;
-    // ramp > one iff any bit above the A bits of (prod + half) >> CutInvShift.
-    assign cut_ramp_saturated = |ramp_prod[RampBits-1:CutInvShift+A];
-    assign ramp_d = cut_ramp_saturated ? {A{1'b1}} : ramp_prod[CutInvShift+A-1:CutInvShift];
+    for (genvar i = 0; i < CutBits; i++) begin : g_high_pp
+      // inv_falloff's bits j >= InvBits - i (j < InvBits: none for i = 0).
+      localparam int unsigned JMin = (i >= InvBits) ? 0 : InvBits - i;
+      if (JMin < InvBits) begin : g_pp
+        assign high_pp[i] = ramp_span_q[i] && |cut_inv_falloff_i[InvBits-1:JMin];
+      end else begin : g_no_pp
+        assign high_pp[i] = 1'b0;
+      end
+    end
+    assign ramp_low = (InvBits+1)'(ramp_span_q) * (InvBits+1)'(cut_inv_falloff_i);
+    assign ramp_sum = (InvBits+2)'(ramp_low) + RampHalf;
+    assign cut_ramp_saturated = |high_pp || |ramp_sum[InvBits+1:InvBits];
+    assign ramp_d = cut_ramp_saturated ? {A{1'b1}} : ramp_sum[InvBits-1:CutInvShift];
 
     logic unused_ramp_lsbs;
-    assign unused_ramp_lsbs = ^ramp_prod[CutInvShift-1:0];
+    assign unused_ramp_lsbs = ^ramp_sum[CutInvShift-1:0];
 
     always_ff @(posedge clk_i) begin : stage4_regs
       ramp_q     <= ramp_d;
@@ -367,6 +392,15 @@ module cube4_composite #(
   // golden premultiply() = min(mul_frac(to_acc(c), alpha, A), to_acc(alpha)):
   // the product is never above to_acc(c), so AB bits hold it; the clamp
   // keeps premultiplied colour <= alpha (a no-op when G = 0).
+  // The clamp compares only the guard bits: the product is at most
+  // alpha * 2^G + 2^G - 1 (to_acc(c) <= 2^AB - 1, and mul_frac's rounding
+  // reaches (alpha + 1) * 2^G - 1 only from alpha >= 2^(A-1), where
+  // unit(alpha) = alpha + 1), so its top A bits never exceed alpha, the top
+  // A bits of the limit: product > limit exactly when those are equal and
+  // the product's guard bits exceed the limit's. A full AB-bit compare
+  // computes the same bit, but abc's SAT sweep (scripts/gates.sh) spent
+  // minutes proving through the multiplier that its upper part never
+  // decides (docs/gates.md).
   logic [AB-1:0]   pre_limit;
   logic [3*AB-1:0] pre_product, premultiplied;  // blue at [0 +: AB], green, red
   logic [2:0]      pre_clamped;                  // the clamp acts (coverage checker)
@@ -377,7 +411,12 @@ module cube4_composite #(
       .pixel_i(rgb_q[4*3*A + ch*A +: A]), .acc_o(colour));
     cube4_mul_frac #(.XBits(AB), .FBits(A)) u_product (
       .x_i(colour), .f_i(cut_alpha_q), .y_o(pre_product[ch*AB +: AB]));
-    assign pre_clamped[ch] = pre_product[ch*AB +: AB] > pre_limit;
+    if (G > 0) begin : g_clamp
+      assign pre_clamped[ch] = (pre_product[ch*AB+G +: A] == cut_alpha_q)
+                            && (pre_product[ch*AB +: G] > pre_limit[G-1:0]);
+    end else begin : g_no_clamp
+      assign pre_clamped[ch] = 1'b0;  // the product is at most alpha
+    end
     assign premultiplied[ch*AB +: AB] = pre_clamped[ch] ? pre_limit : pre_product[ch*AB +: AB];
   end
 
