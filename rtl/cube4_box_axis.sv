@@ -47,7 +47,7 @@
 
 module cube4_box_axis #(
   parameter int unsigned DdaBits    = 40,
-  parameter int unsigned FracBits   = 20,
+  parameter int unsigned FracBits   = cube4_pkg::FracBits,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits
 ) (
   input  logic signed [DdaBits-1:0]          pos_i,

@@ -25,7 +25,7 @@
 `include "cube4_pkg.sv"
 
 module cube4_persp_ray #(
-  parameter int unsigned FracBits   = 20,
+  parameter int unsigned FracBits   = cube4_pkg::FracBits,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned PosBits    = 48,
   parameter int unsigned RayBits    = 16

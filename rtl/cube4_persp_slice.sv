@@ -38,7 +38,7 @@
 `include "cube4_pkg.sv"
 
 module cube4_persp_slice #(
-  parameter int unsigned FracBits   = 20,
+  parameter int unsigned FracBits   = cube4_pkg::FracBits,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned PosBits    = 48,

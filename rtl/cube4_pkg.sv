@@ -49,6 +49,7 @@ package cube4_pkg;
   localparam int unsigned CutBits        /*verilator public*/ = 32;
   localparam int unsigned AccGuardBits   /*verilator public*/ = 8;
   localparam int unsigned VoxelTagBits   /*verilator public*/ = 0;    // bela's voxel tags: none
+  localparam int unsigned FracBits       /*verilator public*/ = 20;   // dda_frac_bits: the weight generator's fraction
 
   // Hardware choices without a golden counterpart (docs/registers.md gives
   // the register widths they set).

@@ -37,6 +37,7 @@ constexpr PackageWidth kPackageWidths[] = {
     {"CoefBits", Pkg::CoefBits},         {"CoefFracBits", Pkg::CoefFracBits},
     {"EyeBits", Pkg::EyeBits},           {"CutBits", Pkg::CutBits},
     {"AccGuardBits", Pkg::AccGuardBits}, {"VoxelTagBits", Pkg::VoxelTagBits},
+    {"FracBits", Pkg::FracBits},
 };
 
 TEST(RtlPackage, DefaultsAreGoldens) {
