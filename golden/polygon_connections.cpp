@@ -14,11 +14,9 @@ std::vector<SlabLoad> slab_loads(const PolygonFrame& f) {
     l.triangles = k < f.counts.slab_triangles.size() ? f.counts.slab_triangles[k] : 0;
     for (int lane = 0; lane < s.lanes(); ++lane) {
       uint64_t flits = 0;
-      const RleLine cleared = rle_clear(s.lane_width(lane));
       for (int y = 0; y < s.beams(); ++y) {
-        const RleLine& line = s.empty() ? cleared : s.line(y, lane);
-        flits += rle_flits(line);
-        l.words += line.size();
+        flits += s.line_flits(y, lane);
+        l.words += s.line(y, lane).size();
       }
       l.flits += flits;
       l.read_flits = std::max(l.read_flits, flits);

@@ -1,10 +1,12 @@
 #include "golden/polygons.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "golden/errors.hpp"
 #include "golden/polygon_connections.hpp"
@@ -68,6 +70,34 @@ struct Fragment {
   Pixel px;
   uint32_t triangle;  // its triangle's index in the frame, for the triangle counts
 };
+
+// The fragments in depth order, equal depths in the order drawn: a least
+// significant digit first radix sort (stable by construction) of the
+// depths' offsets from the nearest, 11 bits a pass, as many passes as the
+// depths' range needs (two for a volume of 2^14 sample slices). The
+// fragments themselves move, so that the walk in depth order reads them in
+// sequence.
+std::vector<Fragment> depth_order(std::vector<Fragment> order) {
+  if (order.empty()) return order;
+  int64_t nearest = order[0].depth, farthest = nearest;
+  for (const Fragment& g : order) {
+    nearest = std::min(nearest, g.depth);
+    farthest = std::max(farthest, g.depth);
+  }
+  constexpr int kDigitBits = 11;
+  constexpr uint64_t kDigitMask = (uint64_t{1} << kDigitBits) - 1;
+  const auto range = static_cast<uint64_t>(farthest - nearest);
+  std::vector<Fragment> next(order.size());
+  for (int shift = 0; shift < 64 && (range >> shift) != 0; shift += kDigitBits) {
+    const auto digit = [&](const Fragment& g) { return static_cast<uint64_t>(g.depth - nearest) >> shift & kDigitMask; };
+    std::array<uint32_t, (size_t{1} << kDigitBits) + 1> start{};
+    for (const Fragment& g : order) ++start[digit(g) + 1];
+    for (size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
+    for (const Fragment& g : order) next[start[digit(g)]++] = g;
+    order.swap(next);
+  }
+  return order;
+}
 
 }  // namespace
 
@@ -227,13 +257,7 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       out.z[i] = static_cast<uint32_t>(std::clamp<int64_t>(opaque_depth[i], 0, kZNone));
   // Front to back, so that each image blends a pixel's fragments over one
   // another in depth order; equal depths in the order drawn.
-  // (Sorted as depth and draw index, 16 bytes a fragment, rather than the
-  // fragments themselves.)
-  // A triangle's fragments come nearly in depth order: a merge sort
-  // (stable, so equal depths keep the order drawn) takes the runs as they are.
-  std::vector<std::pair<int64_t, uint32_t>> order(translucent.size());
-  for (size_t i = 0; i < translucent.size(); ++i) order[i] = {translucent[i].depth, static_cast<uint32_t>(i)};
-  std::stable_sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  const std::vector<Fragment> order = depth_order(std::move(translucent));
   const RaySlices rays(r, W, H);
   const int64_t slice = int64_t{1} << kZFracBits;
   // Each slab's triangles, counted once: in depth order a triangle's
@@ -241,8 +265,7 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   // triangle exactly when it differs from the triangle's last one.
   out.counts.slab_triangles.assign(static_cast<size_t>(K), 0);
   std::vector<int> last_slab(static_cast<size_t>(triangle) + 1, -1);
-  for (const auto& [depth, index] : order) {
-    const Fragment& g = translucent[index];
+  for (const Fragment& g : order) {
     const size_t i = static_cast<size_t>(g.v) * W + g.u;
     // At or behind the opaque surface: hidden (the unclamped depths, so that
     // this holds in front of the volume too).

@@ -94,17 +94,33 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
   int u0, u1, v0, v1;
   raster::centres(std::min({a.u, b.u, c.u}), std::max({a.u, b.u, c.u}), one, width, u0, u1);
   raster::centres(std::min({a.v, b.v, c.v}), std::max({a.v, b.v, c.v}), one, height, v0, v1);
+  const auto covered = [&](W ea, W eb, W ec) {
+    return raster::inside<T>(ea, b, c) && raster::inside<T>(eb, c, a) && raster::inside<T>(ec, a, b);
+  };
   for (int v = v0; v <= v1; ++v) {
     const W pv = W(v) * one;
-    for (int u = u0; u <= u1; ++u) {
-      const W pu = W(u) * one;
-      const W ea = raster::edge(b, c, pu, pv), eb = raster::edge(c, a, pu, pv), ec = raster::edge(a, b, pu, pv);
-      if (!raster::inside<T>(ea, b, c) || !raster::inside<T>(eb, c, a) || !raster::inside<T>(ec, a, b)) continue;
-      const W num = ea * a.d + eb * b.d + ec * c.d;
-      if constexpr (std::is_integral_v<T>) {
-        emit(u, v, static_cast<T>(raster::floor_div(2 * num + area, 2 * area)));  // rounded half up
-      } else {
-        emit(u, v, num / area);
+    if constexpr (std::is_integral_v<T>) {
+      // The edges and the depth's numerator are linear in u: stepped along
+      // the row exactly, the depth's rounded quotient with its remainder
+      // (N = 2 num + area = q D + r, 0 <= r < D), so no division per pixel.
+      const W pu = W(u0) * one;
+      W ea = raster::edge(b, c, pu, pv), eb = raster::edge(c, a, pu, pv), ec = raster::edge(a, b, pu, pv);
+      const W dea = -(W(c.v) - b.v) * one, deb = -(W(a.v) - c.v) * one, dec = -(W(b.v) - a.v) * one;
+      const W D = 2 * area, dN = 2 * (dea * a.d + deb * b.d + dec * c.d);
+      const W N = 2 * (ea * a.d + eb * b.d + ec * c.d) + area;
+      W q = raster::floor_div(N, D), r = N - q * D;
+      const W dq = raster::floor_div(dN, D), dr = dN - dq * D;
+      for (int u = u0; u <= u1; ++u) {
+        if (covered(ea, eb, ec)) emit(u, v, static_cast<T>(q));  // rounded half up
+        ea += dea, eb += deb, ec += dec;
+        q += dq, r += dr;
+        if (r >= D) ++q, r -= D;
+      }
+    } else {
+      for (int u = u0; u <= u1; ++u) {
+        const W pu = W(u) * one;
+        const W ea = raster::edge(b, c, pu, pv), eb = raster::edge(c, a, pu, pv), ec = raster::edge(a, b, pu, pv);
+        if (covered(ea, eb, ec)) emit(u, v, (ea * a.d + eb * b.d + ec * c.d) / area);
       }
     }
   }

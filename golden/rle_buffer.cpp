@@ -1,6 +1,7 @@
 #include "golden/rle_buffer.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -66,46 +67,83 @@ std::vector<Pixel> rle_decode(const RleLine& line, int width) {
   return out;
 }
 
+namespace {
+
+[[noreturn]] void malformed_at(const RleLine& line, size_t at) {
+  throw std::logic_error(at + 4 > line.size() ? "malformed RLE line: it ends before its width"
+                                              : "malformed RLE line: a run without its length");
+}
+
+// Where Algorithm 1's walk stands after the flit that holds x.
+struct Walk {
+  size_t at = 0;      // the next flit's first word
+  int64_t total = 0;  // pixels walked
+  size_t flits = 0;   // flits of the line before the insert, walked so far
+  int added = 0;      // flits the insert added to the line (a run split in up to three)
+};
+
+// Algorithm 1 up to and through the flit holding x: px blended in there,
+// a run split around it. Stops there: the rest of the line is unchanged.
+Walk insert_through(RleLine& line, int width, int x, const Pixel& px, const Precision& p) {
+  Walk w;
+  if (x < 0 || x >= width) return w;  // no pixel of the line: nothing to insert
+  const uint16_t* words = line.data();
+  const size_t count = line.size();
+  uint32_t length = 1, size = 4;
+  // The flit holding x: total <= x throughout, as x >= 0.
+  for (;; w.at += size, w.total += length) {
+    if (w.at + 4 > count) malformed_at(line, w.at);
+    uint64_t four;  // a pixel flit's four words, all zero for a run
+    std::memcpy(&four, words + w.at, sizeof four);
+    if (four != 0) {
+      length = 1, size = 4;
+    } else {
+      if (w.at + 5 > count) malformed_at(line, w.at);
+      length = uint32_t{words[w.at + 4]} + 1, size = 5;
+    }
+    ++w.flits;
+    if (x < w.total + length) break;
+  }
+  if (size == 4) {
+    const Pixel b = pixel_over({words[w.at], words[w.at + 1], words[w.at + 2], words[w.at + 3]}, px, p);
+    line[w.at] = b.r;
+    line[w.at + 1] = b.g;
+    line[w.at + 2] = b.b;
+    line[w.at + 3] = b.a;
+    w.at += 4;
+  } else {  // split the run's 5 words around the new pixel
+    SplitRun split;
+    put_run(split, x - w.total);
+    put_pixel(split, pixel_over(Pixel{}, px, p));
+    put_run(split, w.total + length - x - 1);
+    const auto pos = line.begin() + static_cast<std::ptrdiff_t>(w.at);
+    if (split.n > 5)
+      line.insert(pos + 5, split.n - 5, 0);
+    else
+      line.erase(pos + static_cast<std::ptrdiff_t>(split.n), pos + 5);
+    std::copy(split.w, split.w + split.n, line.begin() + static_cast<std::ptrdiff_t>(w.at));
+    w.at += split.n;
+    w.added = (x > w.total) + (x < w.total + length - 1);  // the runs left beside the pixel
+  }
+  w.total += length;
+  return w;
+}
+
+}  // namespace
+
 size_t rle_insert_into(RleLine& line, int width, int x, const Pixel& px, const Precision& p) {
   if (blank(px)) return rle_flits(line);
-  size_t at = 0, flits = 0;
-  int64_t total = 0;  // pixels walked so far
-  // Flit by flit over the whole line, as Fig. 13's hardware copies it (so
-  // a malformed tail is refused wherever the fragment falls).
-  while (total < width) {
-    const RleFlit f = rle_flit(line.data(), line.size(), at);
-    if (!f.ok)
-      throw std::logic_error(at + 4 > line.size() ? "malformed RLE line: it ends before its width"
-                                                  : "malformed RLE line: a run without its length");
-    if (total <= x && x < total + f.length) {
-      if (f.words == 4) {
-        const Pixel b = pixel_over(f.px, px, p);
-        line[at] = b.r;
-        line[at + 1] = b.g;
-        line[at + 2] = b.b;
-        line[at + 3] = b.a;
-      } else {  // split the run's 5 words around the new pixel
-        SplitRun split;
-        put_run(split, x - total);
-        put_pixel(split, pixel_over(f.px, px, p));
-        put_run(split, total + f.length - x - 1);
-        const auto pos = line.begin() + static_cast<std::ptrdiff_t>(at);
-        if (split.n > 5)
-          line.insert(pos + 5, split.n - 5, 0);
-        else
-          line.erase(pos + static_cast<std::ptrdiff_t>(split.n), pos + 5);
-        std::copy(split.w, split.w + split.n, line.begin() + static_cast<std::ptrdiff_t>(at));
-        at += split.n;
-        total += f.length;
-        ++flits;
-        continue;
-      }
-    }
-    at += f.words;
-    total += f.length;
-    ++flits;
+  Walk w = insert_through(line, width, x, px, p);
+  // On over the rest of the line, as Fig. 13's hardware copies it (so a
+  // malformed tail is refused wherever the fragment falls).
+  while (w.total < width) {
+    const RleFlit f = rle_flit(line.data(), line.size(), w.at);
+    if (!f.ok) malformed_at(line, w.at);
+    w.at += f.words;
+    w.total += f.length;
+    ++w.flits;
   }
-  return flits;
+  return w.flits;
 }
 
 RleLine rle_insert(const RleLine& in, int width, int x, const Pixel& px, const Precision& p) {
@@ -127,29 +165,41 @@ SlabImage::SlabImage(int width, int beams, int lanes) : width_(width), beams_(be
   for (int l = 0; l < lanes_; ++l) cleared_.push_back(rle_clear(lane_width(l)));
 }
 
+
 SlabImage::SlabImage(int width, int beams, int lanes, std::vector<RleLine> lines)
     : SlabImage(width, beams, lanes) {
   lines_ = std::move(lines);
   if (lines_.size() != static_cast<size_t>(beams) * lanes)
     throw std::logic_error("slab image: " + std::to_string(lines_.size()) + " lines for " + std::to_string(beams) +
                            " beams of " + std::to_string(lanes) + " lanes");
+  flits_.resize(lines_.size());
   for (size_t i = 0; i < lines_.size(); ++i) {
     const auto y = static_cast<int>(i / lanes), l = static_cast<int>(i % lanes);
     const RleLine& words = line(y, l);
     if (!rle_for_each_pixel(words.data(), words.size(), lane_width(l), [](int, const Pixel&) {})) malformed(y, l);
+    flits_[i] = static_cast<uint32_t>(rle_flits(words));
   }
 }
 
 void SlabImage::insert(int x, int y, const Pixel& px, const Precision& p) {
-  if (lines_.empty()) lines_.resize(static_cast<size_t>(beams_) * lanes_);
+  if (lines_.empty()) {
+    lines_.resize(static_cast<size_t>(beams_) * lanes_);
+    flits_.resize(lines_.size());
+  }
   const int lane = x % lanes_;
-  RleLine& l = lines_[static_cast<size_t>(y) * lanes_ + lane];
+  const size_t i = static_cast<size_t>(y) * lanes_ + lane;
+  RleLine& l = lines_[i];
   if (l.empty()) {
     l.reserve(32);  // room for a few fragments without growing
     l = cleared_[static_cast<size_t>(lane)];
+    flits_[i] = lane < width_;  // one run, if the lane has pixels
   }
   ++inserts_;
-  copied_flits_ += rle_insert_into(l, lane_width(lane), x / lanes_, px, p);
+  // Fig. 13 copies the whole line, flits_[i] of them; the line is canonical
+  // (made by inserts alone), so Algorithm 1 need not walk past the pixel to
+  // refuse a malformed tail.
+  copied_flits_ += flits_[i];
+  if (!blank(px)) flits_[i] += static_cast<uint32_t>(insert_through(l, lane_width(lane), x / lanes_, px, p).added);
 }
 
 void SlabImage::decode_beam(int y, Pixel* out) const {
@@ -166,12 +216,6 @@ void SlabImage::decode_beam(int y, Pixel* out) const {
 void SlabImage::malformed(int y, int lane) {
   throw std::logic_error("malformed RLE line in a slab image (beam " + std::to_string(y) + ", lane " +
                          std::to_string(lane) + ")");
-}
-
-size_t SlabImage::flits() const {
-  size_t n = 0;
-  for (const RleLine& l : lines_) n += rle_flits(l);
-  return n;
 }
 
 }  // namespace cube4::golden

@@ -85,14 +85,18 @@ class SlabImage {
   void for_each_pixel(int y, Visit&& visit) const {
     if (empty()) return;
     for (int l = 0; l < lanes_ && l < width_; ++l) {
-      const RleLine& words = line(y, l);
+      const RleLine& words = lines_[static_cast<size_t>(y) * lanes_ + l];
+      if (words.empty()) continue;  // never inserted into: its lane's cleared line, all blank
       if (!rle_for_each_pixel(words.data(), words.size(), lane_width(l),
                               [&](int i, const Pixel& px) { visit(l + i * lanes_, px); }))
         malformed(y, l);
     }
   }
-  // Flits over all lines: the data the slab sends to the pipelines.
-  size_t flits() const;
+  // Flits in a line (rle_flits(line(y, lane))), kept as the line is built.
+  uint32_t line_flits(int y, int lane) const {
+    if (lines_.empty() || lines_[static_cast<size_t>(y) * lanes_ + lane].empty()) return lane < width_;
+    return flits_[static_cast<size_t>(y) * lanes_ + lane];
+  }
   // What building it cost Fig. 13's hardware: the fragments inserted and
   // the flits copied doing so (each insert copies its line, a flit a clock).
   uint64_t inserts() const { return inserts_; }
@@ -107,6 +111,7 @@ class SlabImage {
   // a few fragments allocates only the lines they fall in.
   std::vector<RleLine> lines_;
   std::vector<RleLine> cleared_;
+  std::vector<uint32_t> flits_;  // per line of lines_, rle_flits() of it
   uint64_t inserts_ = 0, copied_flits_ = 0;
 };
 

@@ -107,10 +107,15 @@ void SliceCompositor::composite_slab(const SliceControl& c, int y, RayAcc* ray) 
   const SlabImage& slab = poly_->slabs[static_cast<size_t>(c.k)];
   if (slab.empty()) return;
   // A blank slab pixel leaves its ray as it is (ray_over_pixel): only the
-  // slab's fragments are composited.
+  // slab's fragments are composited, and not on a stopped ray, whose pixel
+  // they cannot change (RayStopRule).
+  const int shift = ix_last_ - c.ix, v = y - c.iy + iy_last_;
+  uint64_t* stopped = words_ > 0 ? &stopped_[static_cast<size_t>(v) * words_] : nullptr;
   slab.for_each_pixel(y, [&](int x, const Pixel& px) {
+    const int u = x + shift;
+    if (stopped && (stopped[u >> 6] >> (u & 63) & 1)) return;
     ray[x] = ray_over_pixel(ray[x], px, r_.p);
-    mark_if_stopped(x - c.ix + ix_last_, y - c.iy + iy_last_);
+    if (stopped && stop_.can_stop(ray[x])) stopped[u >> 6] |= uint64_t{1} << (u & 63);
   });
 }
 
