@@ -96,6 +96,9 @@ void SliceCompositor::start_polygons() {
       r_.blend != BlendMode::Composite)
     throw std::logic_error("SliceCompositor: the polygon frame does not fit the registers' base plane and blend");
   for (size_t i = 0; i < n; ++i) {
+    // Nothing in front or behind: the ray starts at 0 (rays_ is) and, if
+    // nothing reaches it, leaves as the pixel 0 the base plane holds.
+    if (blank(poly_->front[i]) && blank(poly_->back[i])) continue;
     rays_[i] = pixel_to_acc(poly_->front[i], r_.p);
     const auto u = static_cast<int>(i % static_cast<size_t>(width_)), v = static_cast<int>(i / width_);
     mark_if_stopped(u, v);

@@ -165,6 +165,7 @@ class RayStopRule {
 
 class SliceCompositor {
  public:
+  // `bp` as empty_base_plane() makes it: pixels no ray reaches stay 0.
   SliceCompositor(const Registers& r, BasePlane& bp, const PolygonFrame* polygons = nullptr,
                   RayStop stop = RayStop::never)
       : r_(r), bp_(bp), nx_(r.dim[0]), ny_(r.dim[1]), K_(r.sample_slices()),
