@@ -116,11 +116,11 @@ Walk insert_through(RleLine& line, int width, int x, const Pixel& px, const Prec
     put_run(split, x - w.total);
     put_pixel(split, pixel_over(Pixel{}, px, p));
     put_run(split, w.total + length - x - 1);
-    const auto pos = line.begin() + static_cast<std::ptrdiff_t>(w.at);
-    if (split.n > 5)
-      line.insert(pos + 5, split.n - 5, 0);
-    else
-      line.erase(pos + static_cast<std::ptrdiff_t>(split.n), pos + 5);
+    // The run's 5 words make room for the split's n: the tail moves.
+    const size_t tail = w.at + 5, end = line.size();
+    if (split.n > 5) line.resize(end + split.n - 5);
+    std::memmove(line.data() + w.at + split.n, line.data() + tail, (end - tail) * sizeof(uint16_t));
+    if (split.n < 5) line.resize(end + split.n - 5);
     std::copy(split.w, split.w + split.n, line.begin() + static_cast<std::ptrdiff_t>(w.at));
     w.at += split.n;
     w.added = (x > w.total) + (x < w.total + length - 1);  // the runs left beside the pixel
@@ -162,7 +162,10 @@ size_t rle_flits(const RleLine& line) {
 }
 
 SlabImage::SlabImage(int width, int beams, int lanes) : width_(width), beams_(beams), lanes_(lanes) {
-  for (int l = 0; l < lanes_; ++l) cleared_.push_back(rle_clear(lane_width(l)));
+  for (int l = 0; l < lanes_; ++l) {
+    lane_widths_.push_back(l < width_ ? (width_ - l + lanes_ - 1) / lanes_ : 0);
+    cleared_.push_back(rle_clear(lane_widths_.back()));
+  }
 }
 
 
@@ -186,7 +189,7 @@ void SlabImage::insert(int x, int y, const Pixel& px, const Precision& p) {
     lines_.resize(static_cast<size_t>(beams_) * lanes_);
     flits_.resize(lines_.size());
   }
-  const int lane = x % lanes_;
+  const int lane = x % lanes_, at = x / lanes_;  // one division
   const size_t i = static_cast<size_t>(y) * lanes_ + lane;
   RleLine& l = lines_[i];
   if (l.empty()) {
@@ -199,7 +202,7 @@ void SlabImage::insert(int x, int y, const Pixel& px, const Precision& p) {
   // (made by inserts alone), so Algorithm 1 need not walk past the pixel to
   // refuse a malformed tail.
   copied_flits_ += flits_[i];
-  if (!blank(px)) flits_[i] += static_cast<uint32_t>(insert_through(l, lane_width(lane), x / lanes_, px, p).added);
+  if (!blank(px)) flits_[i] += static_cast<uint32_t>(insert_through(l, lane_width(lane), at, px, p).added);
 }
 
 void SlabImage::decode_beam(int y, Pixel* out) const {

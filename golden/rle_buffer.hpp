@@ -54,7 +54,7 @@ size_t rle_flits(const RleLine& line);
 // sample slice and every pipeline lane (golden/units/rle_decode.hpp).
 class SlabImage {
  public:
-  SlabImage() = default;
+  SlabImage() : SlabImage(0, 0, 1) {}
   SlabImage(int width, int beams, int lanes);
   // An image from its beams x lanes lines, beam by beam (as line() orders
   // them), e.g. as a bus delivered them; an empty line stands for its
@@ -65,7 +65,7 @@ class SlabImage {
   int beams() const { return beams_; }
   int lanes() const { return lanes_; }
   // Pixels of lane l of a beam: x = l, l + lanes, ... < width.
-  int lane_width(int lane) const { return lane < width_ ? (width_ - lane + lanes_ - 1) / lanes_ : 0; }
+  int lane_width(int lane) const { return lane_widths_[static_cast<size_t>(lane)]; }
   // No fragment at all: the lines are not even stored (every one cleared).
   bool empty() const { return lines_.empty(); }
   const RleLine& line(int y, int lane) const {
@@ -111,6 +111,8 @@ class SlabImage {
   // a few fragments allocates only the lines they fall in.
   std::vector<RleLine> lines_;
   std::vector<RleLine> cleared_;
+  // Per lane, its pixels: kept rather than divided out per fragment.
+  std::vector<int> lane_widths_;
   std::vector<uint32_t> flits_;  // per line of lines_, rle_flits() of it
   uint64_t inserts_ = 0, copied_flits_ = 0;
 };

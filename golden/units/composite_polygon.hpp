@@ -71,6 +71,7 @@ constexpr Pixel polygon_pixel(const Rgb& rgb, uint32_t alpha, const Precision& p
 // arriving front to back. A blank side gives the other exactly; a
 // non-blank front gives a non-blank result (α only grows).
 constexpr Pixel pixel_over(const Pixel& front, const Pixel& back, const Precision& p) {
+  if (blank(front)) return back;  // what the node gives (mul_frac by full is exact); the test saves the multiplies
   const RayAcc r = compose_over(pixel_as_node(front), pixel_as_node(back), pixel_precision(p));
   return {static_cast<uint16_t>(r.r), static_cast<uint16_t>(r.g), static_cast<uint16_t>(r.b),
           static_cast<uint16_t>(r.a)};

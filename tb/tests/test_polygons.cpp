@@ -112,6 +112,28 @@ TEST(PolygonUnits, DoubleCompositionIsTheSampleThenTheSlabPixel) {
 
 // ---- run-length slab images ----
 
+// pixel_over() returns the back pixel when the front is blank instead of
+// running the node; the node gives exactly that at every α width: a blank
+// front leaves full transparency, and mul_frac by full is the identity.
+TEST(PolygonUnits, BlankFrontSkipsANodeThatWouldGiveTheBackExactly) {
+  for (int bits = 8; bits <= 16; ++bits) {
+    const int64_t full = golden::max_unsigned(bits);
+    for (int64_t f = 0; f <= full; ++f) ASSERT_EQ(golden::mul_frac(full, f, bits), f) << bits << " bits, " << f;
+    golden::Precision p;
+    p.alpha_bits = bits;
+    std::mt19937 gen(static_cast<unsigned>(bits));
+    for (int trial = 0; trial < 1000; ++trial) {
+      const Pixel back = random_pixel(gen, bits);
+      const RayAcc node = golden::compose_over(golden::pixel_as_node(Pixel{}), golden::pixel_as_node(back),
+                                               golden::pixel_precision(p));
+      ASSERT_TRUE(same(Pixel{static_cast<uint16_t>(node.r), static_cast<uint16_t>(node.g),
+                             static_cast<uint16_t>(node.b), static_cast<uint16_t>(node.a)},
+                       back));
+      ASSERT_TRUE(same(golden::pixel_over(Pixel{}, back, p), back));
+    }
+  }
+}
+
 TEST(Rle, RoundTripsAndCanonicalLines) {
   const golden::Precision p;
   std::mt19937 gen(11);
