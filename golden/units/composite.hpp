@@ -100,4 +100,12 @@ constexpr RayAcc blend(BlendMode mode, const RayAcc& acc, const ShadedSample& s,
   }
 }
 
+// False when blend(mode, acc, s, p) is acc for every ray acc: an invisible
+// sample (sample_pixel() is empty, which no node takes), or, compositing,
+// a transparent one (over adds mul_frac(t, 0) = 0 to every channel). A
+// model may skip such samples without changing a bit.
+constexpr bool blend_changes_ray(BlendMode mode, const ShadedSample& s) {
+  return s.visible && (mode != BlendMode::Composite || s.alpha != 0);
+}
+
 }  // namespace cube4::golden

@@ -58,6 +58,11 @@ struct AddrResult {
 struct AddrIf : virtual sc_core::sc_interface {
   virtual AddrResult clock(const AddrRequest& next, int j, int y, int z) = 0;
   virtual Level level() const = 0;
+  // What the next edge will answer, where the model already holds it (the
+  // TLM model's pending access; nullptr from the RTL, whose registers are
+  // not read before their edge). For the simulator only: the stream former
+  // prefetches those voxels, nothing of the machine's behaviour depends on it.
+  virtual const AddrResult* upcoming() const { return nullptr; }
 };
 
 }  // namespace cube4::sysc

@@ -21,6 +21,12 @@ class VoxelMemory {
   // One cycle's reads: module m at index[m]; every module at most once.
   void begin_cycle() { ++cycle_; }
   uint16_t read(int module, int64_t index);
+  // A read expected at a later cycle, for the host's cache only: the
+  // traversal strides through the modules (a cache line per voxel on many
+  // views), and one cycle of the rest of the machine hides the miss.
+  void prefetch(int module, int64_t index) const {
+    __builtin_prefetch(modules_[static_cast<size_t>(module)].data() + index);
+  }
   uint64_t reads() const { return reads_; }
 
  private:

@@ -17,6 +17,7 @@ class TlmAddr final : public AddrIf {
     return out;
   }
   Level level() const override { return Level::Tlm; }
+  const AddrResult* upcoming() const override { return pending_.valid ? &pending_ : nullptr; }
 
  private:
   golden::SkewLayout layout_;

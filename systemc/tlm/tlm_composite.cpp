@@ -26,7 +26,7 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   const golden::SliceControl& c = plan_.slices[in.slice];
   auto shade = [&](int x, int y, const golden::RayAcc&, golden::ShadedSample& s) {
     s = golden::crop_and_cut(plan_.r, c, x, y, slice_[static_cast<size_t>(y) * plan_.nx + x]);
-    return true;
+    return golden::blend_changes_ray(plan_.r.blend, s);
   };
   compositor_->slice(c, shade, [](int) { return true; });
   if (in.slice + 1 == static_cast<uint32_t>(plan_.K)) {

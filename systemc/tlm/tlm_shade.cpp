@@ -11,7 +11,10 @@ int shade_latency(const golden::Precision& p) {
 }
 
 TlmShade::TlmShade(const FramePlan& plan)
-    : plan_(plan), faces_(golden::make_face_table(plan.r)), line_(static_cast<size_t>(shade_latency(plan.r.p))) {}
+    : plan_(plan),
+      faces_(golden::make_face_table(plan.r)),
+      shading_(plan.r, faces_.get()),
+      line_(static_cast<size_t>(shade_latency(plan.r.p))) {}
 
 void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   out = line_[head_];
@@ -27,7 +30,7 @@ void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   for (int k = 0; k < plan_.p; ++k) {
     const auto i = static_cast<size_t>(k);
     const golden::Gradient g{in.gx[i], in.gy[i], in.gz[i]};
-    const golden::ShadedSample r = golden::shade_classified(plan_.r, in.sample[i], in.vtag[i], g, faces_.get());
+    const golden::ShadedSample r = golden::shade_with(plan_.r, in.sample[i], in.vtag[i], shading_(g));
     s.red[i] = static_cast<uint16_t>(r.rgb[0]);
     s.green[i] = static_cast<uint16_t>(r.rgb[1]);
     s.blue[i] = static_cast<uint16_t>(r.rgb[2]);

@@ -1,4 +1,5 @@
-// Shading at transaction level: golden shade_classified() per lane, on a
+// Shading at transaction level: golden shade_classified() per lane (as
+// shade_with() of the gradient's cached shading), on a
 // delay line as long as cube4_shade_unit's latency, so that the shading
 // stage takes the same cycles at both levels.
 #pragma once
@@ -25,6 +26,7 @@ class TlmShade final : public ShadeIf {
  private:
   const FramePlan& plan_;
   std::unique_ptr<golden::FacePositionTable> faces_;
+  golden::GradientShadingCache shading_;  // the golden renderer's: equal gradients shade alike
   std::vector<ShadedBeat> line_;  // circular delay line
   size_t head_ = 0;
 };

@@ -494,6 +494,30 @@ TEST(Compose, OverWithAnEmptyOrOpaquePixelIsExact) {
   }
 }
 
+// What blend_changes_ray() lets a model skip leaves every ray exactly as it
+// was, in every blend mode; what it keeps, compositing, is a sample with α.
+TEST(Composite, SamplesThatCannotChangeARayLeaveItExactly) {
+  for (const Precision& p : {Precision{}, kP}) {
+    std::mt19937 gen(23);
+    const uint32_t sample_full = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
+    for (int i = 0; i < 100000; ++i) {
+      const RayAcc acc = random_partial_pixel(gen, p);
+      ShadedSample s;
+      auto channel = [&] { return static_cast<uint32_t>(gen() % (sample_full + 1)); };
+      s.rgb = {channel(), channel(), channel()};
+      s.alpha = i % 2 ? 0 : channel();
+      s.value = static_cast<uint32_t>(gen() % 4096);
+      s.visible = i % 3 != 0;
+      for (const BlendMode mode : {BlendMode::Composite, BlendMode::Mip, BlendMode::MinIp}) {
+        if (!blend_changes_ray(mode, s)) {
+          ASSERT_EQ(blend(mode, acc, s, p), acc) << i;
+        }
+      }
+      ASSERT_EQ(blend_changes_ray(BlendMode::Composite, s), s.visible && s.alpha != 0);
+    }
+  }
+}
+
 TEST(Compose, OverNeverPassesFullOpacityAndSaturatesColour) {
   for (const Precision& p : {Precision{}, kP}) {
     const uint32_t full = static_cast<uint32_t>(max_unsigned(acc_bits(p)));
