@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The fronts of docs/explore.md: runs `cube4 explore` on the 20-point sweeps
 # of brainsmall and the sphere (scenes/explore/, TLM, around VolumePro's
-# widths), times the brainsmall sweep with the gate counts already cached
+# widths) and on the tape-out candidate's six points (tapeout.json), times the brainsmall sweep with the gate counts already cached
 # (a first run synthesises every width configuration once with yosys,
 # minutes each; the script runs that first and says how long it took),
 # copies the plots to docs/images/ and writes the "explore-fronts" section.
@@ -24,7 +24,7 @@ trap 'rm -rf "$tmp"' EXIT
 cache=${CUBE4_GATES_CACHE:-$HOME/.cache/cube4/gates}
 times=$tmp/times.txt
 : > "$times"
-for sweep in brainsmall_20 sphere_20; do
+for sweep in brainsmall_20 sphere_20 tapeout; do
   # Warm the gate cache (synthesis is per width configuration, not per run).
   t0=$(date +%s.%N)
   [ ${#gates[@]} = 0 ] &&
@@ -49,7 +49,8 @@ print(f"Generated {datetime.date.today()} by `scripts/explore.sh{' ' + no_gates 
       f"{cores} cores, 1-minute load average {load} at the end), from `cube4 explore scenes/explore/SWEEP.json`."
       + (" Gates not counted in this run (--no-gates): the gate columns are empty." if no_gates else ""))
 print()
-for sweep, name in [("brainsmall_20", "brainsmall"), ("sphere_20", "the volume-sampled 64³ sphere")]:
+for sweep, name in [("brainsmall_20", "brainsmall"), ("sphere_20", "the volume-sampled 64³ sphere"),
+                    ("tapeout", "the tape-out candidate on brainsmall")]:
     doc = json.load(open(f"{tmp}/{sweep}.json"))
     first, timed = t[sweep]
     print(f"**{name}** (`scenes/explore/{sweep}.json`, model {doc['model']}): the timed run took {timed:.0f} s "
