@@ -70,8 +70,7 @@ void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
   if (out_.empty()) {
     out = GradientBeat{};
   } else {
-    out = out_.front();
-    out_.pop_front();
+    out = out_.pop_front();
   }
 }
 

@@ -3,11 +3,11 @@
 // of slice s with golden gather_neighbourhood() + sample_gradient() and
 // streams them out. Latency: a slice, where the RTL takes a beam.
 #pragma once
-#include <deque>
 
 #include "golden/slice_steps.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/tlm/beat_queue.hpp"
 
 namespace cube4::sysc {
 
@@ -26,7 +26,7 @@ class TlmGradient final : public GradientIf {
   golden::Plane tags_current_, tags_ahead_;
   int current_slice_ = -1;  // none yet in this frame
   int y_ = 0, j_ = 0;
-  std::deque<GradientBeat> out_;
+  BeatQueue<GradientBeat> out_;
 };
 
 }  // namespace cube4::sysc

@@ -63,8 +63,7 @@ void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
   if (out_.empty()) {
     out = SampleBeat{};
   } else {
-    out = out_.front();
-    out_.pop_front();
+    out = out_.pop_front();
   }
 }
 

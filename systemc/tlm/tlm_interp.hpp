@@ -5,11 +5,11 @@
 // stream it emits keeps the ring's protocol (B idle cycles after each
 // slice: the gradient unit's zero beam).
 #pragma once
-#include <deque>
 
 #include "golden/slice_steps.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/tlm/beat_queue.hpp"
 
 namespace cube4::sysc {
 
@@ -29,7 +29,7 @@ class TlmInterp final : public InterpIf {
   std::vector<golden::Span> whole_;
   golden::SliceInterp interp_;
   int y_ = 0, j_ = 0;
-  std::deque<SampleBeat> out_;
+  BeatQueue<SampleBeat> out_;
 };
 
 }  // namespace cube4::sysc
