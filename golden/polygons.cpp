@@ -17,7 +17,12 @@
 namespace cube4::golden {
 namespace {
 
-constexpr double kRange = 1 << 30;  // pixels or sample slices from the origin the rasteriser takes
+// Pixels or sample slices from the origin the rasteriser takes: in
+// parallel projection 2^30 (so 2^38 units, golden/rasterise.hpp); in
+// perspective 2^24 pixels and 2^20 sample slices, so that with h < 2^24
+// every sum e·h·d stays below 2^121 (docs/fixed-point.md, "Polygons").
+constexpr double kRange = 1 << 30;
+constexpr double kPerspectiveRange[3] = {1 << 24, 1 << 24, 1 << 20};
 
 std::string scene_name(const Scene& s) { return s.file.empty() ? std::string("scene") : s.file; }
 
@@ -31,27 +36,53 @@ std::string fmt(double x) {
 int64_t snap(double x, int bits) { return static_cast<int64_t>(std::floor(std::ldexp(x, bits) + 0.5)); }
 
 // The sample slices in which the ray of each base-plane pixel has a
-// sample: the ray of (u, v) is in slice k iff 0 <= u - origin_x + ix_k < nx
-// and likewise in y; the offsets grow by 0 or 1 a slice, so the slices form
-// an interval, [first, last], empty when first > last. Per axis the
-// interval depends on the column (row) alone: one table entry each.
+// sample, and where that sample sits in slice k's slab image.
+// Parallel: the ray of (u, v) is in slice k iff 0 <= u - origin_x + ix_k < nx
+// and likewise in y, and its slab pixel is that column and row; the offsets
+// grow by 0 or 1 a slice, so the slices form an interval.
+// Perspective: ray u - origin_x is in slice k iff it lies in the slice's ray
+// range [lo_k, hi_k) (Registers::rays_in_slice) on both axes, and its slab
+// pixel is its rank in that range, (u - origin_x - lo_k); a ray enters and
+// leaves once, so the slices form an interval here too.
+// The interval is [first, last], empty when first > last; per axis it
+// depends on the column (row) alone: one table entry each.
 class RaySlices {
  public:
   RaySlices(const Registers& r, int width, int height) {
-    for (int k = 0; k < r.sample_slices(); ++k) {
-      ix_.push_back(r.x_offset(k).integer);
-      iy_.push_back(r.y_offset(k).integer);
+    const int K = r.sample_slices(), size[2] = {width, height}, origin[2] = {r.base_origin_x(), r.base_origin_y()};
+    for (int axis = 0; axis < 2; ++axis) {
+      Axis& a = axes_[axis];
+      auto& to_slab = a.to_slab;
+      if (!r.perspective) {
+        std::vector<int> offsets;
+        for (int k = 0; k < K; ++k) {
+          offsets.push_back(axis == 0 ? r.x_offset(k).integer : r.y_offset(k).integer);
+          to_slab.push_back(offsets.back() - origin[axis]);
+        }
+        for (int u = 0; u < size[axis]; ++u) a.slices.push_back(along(offsets, origin[axis] - u, r.dim[static_cast<size_t>(axis)]));
+        continue;
+      }
+      a.slices.assign(static_cast<size_t>(size[axis]), {K, -1});
+      for (int k = 0; k < K; ++k) {
+        const RayRange rays = r.rays_in_slice(axis, k);
+        to_slab.push_back(static_cast<int>(-origin[axis] - rays.lo));
+        const int64_t lo = std::max<int64_t>(rays.lo + origin[axis], 0), hi = std::min<int64_t>(rays.hi + origin[axis], size[axis]);
+        for (int64_t u = lo; u < hi; ++u) {
+          auto& [first, last] = a.slices[static_cast<size_t>(u)];
+          first = std::min(first, k);
+          last = std::max(last, k);
+        }
+      }
     }
-    for (int u = 0; u < width; ++u) x_.push_back(along(ix_, r.base_origin_x() - u, r.dim[0]));
-    for (int v = 0; v < height; ++v) y_.push_back(along(iy_, r.base_origin_y() - v, r.dim[1]));
   }
   std::pair<int, int> of(int u, int v) const {
-    const auto [x0, x1] = x_[static_cast<size_t>(u)];
-    const auto [y0, y1] = y_[static_cast<size_t>(v)];
+    const auto [x0, x1] = axes_[0].slices[static_cast<size_t>(u)];
+    const auto [y0, y1] = axes_[1].slices[static_cast<size_t>(v)];
     return {std::max(x0, y0), std::min(x1, y1)};
   }
-  int ix(int k) const { return ix_[static_cast<size_t>(k)]; }
-  int iy(int k) const { return iy_[static_cast<size_t>(k)]; }
+  // Slab k's pixel of the ray of base-plane pixel (u, v), which samples slice k.
+  int slab_x(int u, int k) const { return u + axes_[0].to_slab[static_cast<size_t>(k)]; }
+  int slab_y(int v, int k) const { return v + axes_[1].to_slab[static_cast<size_t>(k)]; }
 
  private:
   // Slices whose offset lies in [lo, lo + n - 1].
@@ -60,8 +91,11 @@ class RaySlices {
     const auto end = std::upper_bound(offsets.begin(), offsets.end(), lo + n - 1);
     return {static_cast<int>(first - offsets.begin()), static_cast<int>(end - offsets.begin()) - 1};
   }
-  std::vector<int> ix_, iy_;
-  std::vector<std::pair<int, int>> x_, y_;  // per column u, per row v
+  struct Axis {
+    std::vector<std::pair<int, int>> slices;  // per column u (row v)
+    std::vector<int> to_slab;                 // per slice k: slab column (row) less the pixel's
+  };
+  Axis axes_[2];
 };
 
 struct Fragment {
@@ -103,11 +137,15 @@ std::vector<Fragment> depth_order(std::vector<Fragment> order) {
 
 Vec3 BaseFrame::to_base(const Vec3& p) const {
   const double d = p[2] * S;
-  return {p[0] - (x0 + d * sx) + origin_x, p[1] - (y0 + d * sy) + origin_y, d};
+  if (ms == 0) return {p[0] - (x0 + d * sx) + origin_x, p[1] - (y0 + d * sy) + origin_y, d};
+  const double m = w(d);
+  return {(p[0] - (x0 + d * sx)) / m + origin_x, (p[1] - (y0 + d * sy)) / m + origin_y, d};
 }
 
 BaseFrame base_frame(const Registers& r) {
   const double one = std::ldexp(1.0, r.p.dda_frac_bits);
+  if (r.perspective && r.scale_start != (int64_t{1} << r.p.dda_frac_bits))
+    throw std::logic_error("base_frame: perspective registers with SCALE_START other than one");
   BaseFrame f;
   f.x0 = static_cast<double>(r.x_start) / one;
   f.sx = static_cast<double>(r.x_step) / one;
@@ -116,6 +154,7 @@ BaseFrame base_frame(const Registers& r) {
   f.origin_x = r.base_origin_x();
   f.origin_y = r.base_origin_y();
   f.S = r.supersampling;
+  if (r.perspective) f.ms = static_cast<double>(r.scale_step) / one;
   return f;
 }
 
@@ -123,23 +162,41 @@ Margins polygon_margins(const std::vector<Mesh>& meshes, const ViewFactorisation
                         int width, int height) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   double lo[2] = {inf, inf}, hi[2] = {-inf, -inf};
+  const auto extend = [&](const Vec3& b) {
+    for (int i = 0; i < 2; ++i) {
+      lo[i] = std::min(lo[i], b[i]);
+      hi[i] = std::max(hi[i], b[i]);
+    }
+  };
   for (const Mesh& m : meshes) {
     if (!(m.opacity > 0)) continue;
-    for (const Vec3& vertex : m.vertices) {
-      const Vec3 b = frame.to_base(f.to_permuted(vertex));
-      for (int i = 0; i < 2; ++i) {
-        lo[i] = std::min(lo[i], b[i]);
-        hi[i] = std::max(hi[i], b[i]);
-      }
+    if (frame.ms == 0) {
+      for (const Vec3& vertex : m.vertices) extend(frame.to_base(f.to_permuted(vertex)));
+      continue;
     }
+    // Perspective: only what lies beyond the near plane is drawn.
+    for (const auto& t : m.triangles)
+      project_triangle(frame, f.to_permuted(m.vertices[t[0]]), f.to_permuted(m.vertices[t[1]]),
+                       f.to_permuted(m.vertices[t[2]]), [&](const BaseCorner(&c)[3]) {
+                         for (const BaseCorner& k : c) extend(k.uvd);
+                       });
   }
   // What the final image shows of the base plane's plane: its corners
-  // through the warp's inverse.
-  const Affine2 to_base = f.base_to_image(frame.origin_x - frame.x0, frame.origin_y - frame.y0).inverse();
+  // through the warp's inverse (perspective: their rays' crossings).
   double seen_lo[2] = {inf, inf}, seen_hi[2] = {-inf, -inf};
+  const double shift_x = frame.origin_x - frame.x0, shift_y = frame.origin_y - frame.y0;
+  const Affine2 to_base = f.perspective ? Affine2{} : f.base_to_image(shift_x, shift_y).inverse();
   for (double X : {-0.5, f.image_width - 0.5})
     for (double Y : {-0.5, f.image_height - 0.5}) {
-      const auto uv = to_base.apply(X, Y);
+      std::array<double, 2> uv{};
+      if (!f.perspective) {
+        uv = to_base.apply(X, Y);
+      } else if (const auto crossing = f.base_of_image(X, Y, shift_x, shift_y)) {
+        uv = *crossing;
+      } else {  // a corner ray that never reaches it: the seen part is unbounded
+        for (int i = 0; i < 2; ++i) seen_lo[i] = -inf, seen_hi[i] = inf;
+        continue;
+      }
       for (int i = 0; i < 2; ++i) {
         seen_lo[i] = std::min(seen_lo[i], uv[static_cast<size_t>(i)]);
         seen_hi[i] = std::max(seen_hi[i], uv[static_cast<size_t>(i)]);
@@ -213,42 +270,46 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       Rgb q{};
       for (int i = 0; i < 3; ++i) q[static_cast<size_t>(i)] = static_cast<uint32_t>(quantise_unit(rgb[i], p.alpha_bits));
       const Pixel px = polygon_pixel(q, alpha, p);
-      Vec3 uvd[3];
-      for (int i = 0; i < 3; ++i) uvd[i] = frame.to_base(f.to_permuted(m.vertices[t[static_cast<size_t>(i)]]));
-      // A pixel or more beside the base plane: no pixel centre, snapped or
-      // not, whatever the vertices' range.
-      bool beside = false;
-      for (int axis = 0; axis < 2; ++axis) {
-        const double size = axis == 0 ? W : H;
-        beside = beside || std::max({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) < -1 ||
-                 std::min({uvd[0][axis], uvd[1][axis], uvd[2][axis]}) > size;
-      }
-      if (beside) continue;
-      BaseVertex<int64_t> corner[3];
-      for (int i = 0; i < 3; ++i) {
-        for (double x : uvd[i])
-          if (!(std::fabs(x) <= kRange))
-            throw InputError(scene_name(s) + ": \"" + m.key + "\" has a vertex at base-plane (u, v, depth) = (" +
-                             fmt(uvd[i][0]) + ", " + fmt(uvd[i][1]) + ", " + fmt(uvd[i][2]) +
-                             "), beyond the rasteriser's range of ±2^30 pixels and sample slices");
-        corner[i] = {snap(uvd[i][0], kSubpixelBits), snap(uvd[i][1], kSubpixelBits), snap(uvd[i][2], kZFracBits)};
-      }
-      scan_triangle<int64_t>(corner[0], corner[1], corner[2], int64_t{1} << kSubpixelBits, W, H,
-                             [&](int u, int v, int64_t depth) {
-                               const size_t i = static_cast<size_t>(v) * W + u;
-                               if (!opaque) {
-                                 translucent.push_back({u, v, depth, px, triangle});
-                                 return;
-                               }
-                               if (last_opaque != triangle) ++out.counts.opaque_triangles;
-                               last_opaque = triangle;
-                               ++out.counts.opaque;
-                               // Nearer wins; on a tie the one drawn first.
-                               if (depth < opaque_depth[i]) {
-                                 opaque_depth[i] = depth;
-                                 opaque_px[i] = px;
-                               }
-                             });
+      const auto emit = [&](int u, int v, int64_t depth) {
+        const size_t i = static_cast<size_t>(v) * W + u;
+        if (!opaque) {
+          translucent.push_back({u, v, depth, px, triangle});
+          return;
+        }
+        if (last_opaque != triangle) ++out.counts.opaque_triangles;
+        last_opaque = triangle;
+        ++out.counts.opaque;
+        // Nearer wins; on a tie the one drawn first.
+        if (depth < opaque_depth[i]) {
+          opaque_depth[i] = depth;
+          opaque_px[i] = px;
+        }
+      };
+      const auto draw = [&](const BaseCorner(&c)[3]) {
+        // A pixel or more beside the base plane: no pixel centre, snapped or
+        // not, whatever the vertices' range.
+        bool beside = false;
+        for (int axis = 0; axis < 2; ++axis) {
+          const double size = axis == 0 ? W : H;
+          beside = beside || std::max({c[0].uvd[axis], c[1].uvd[axis], c[2].uvd[axis]}) < -1 ||
+                   std::min({c[0].uvd[axis], c[1].uvd[axis], c[2].uvd[axis]}) > size;
+        }
+        if (beside) return;
+        BaseVertex<int64_t> corner[3];
+        for (int i = 0; i < 3; ++i) {
+          const Vec3& uvd = c[i].uvd;
+          for (int axis = 0; axis < 3; ++axis)
+            if (!(std::fabs(uvd[axis]) <= (frame.ms == 0 ? kRange : kPerspectiveRange[axis])))
+              throw InputError(scene_name(s) + ": \"" + m.key + "\" has a vertex at base-plane (u, v, depth) = (" +
+                               fmt(uvd[0]) + ", " + fmt(uvd[1]) + ", " + fmt(uvd[2]) + "), beyond the rasteriser's range of " +
+                               (frame.ms == 0 ? "±2^30 pixels and sample slices"
+                                              : "±2^24 pixels and ±2^20 sample slices in perspective"));
+          corner[i] = {snap(uvd[0], kSubpixelBits), snap(uvd[1], kSubpixelBits), snap(uvd[2], kZFracBits),
+                       std::max<int64_t>(1, snap(c[i].h, kInverseSpacingBits))};
+        }
+        scan_triangle<int64_t>(corner[0], corner[1], corner[2], int64_t{1} << kSubpixelBits, W, H, emit);
+      };
+      project_triangle(frame, f.to_permuted(a), f.to_permuted(b), f.to_permuted(c), draw);
     }
   }
 
@@ -283,8 +344,7 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
       ++out.counts.in_front;
     } else {
       const int k = static_cast<int>((g.depth - 1) >> kZFracBits);  // k < depth <= k + 1
-      out.slabs[static_cast<size_t>(k)].insert(g.u - r.base_origin_x() + rays.ix(k), g.v - r.base_origin_y() + rays.iy(k),
-                                               g.px, p);
+      out.slabs[static_cast<size_t>(k)].insert(rays.slab_x(g.u, k), rays.slab_y(g.v, k), g.px, p);
       ++out.counts.in_slabs;
       int& last = last_slab[g.triangle];
       if (last != k) ++out.counts.slab_triangles[static_cast<size_t>(k)];

@@ -19,16 +19,40 @@ namespace cube4::golden {
 
 // A renderer's rays on its base plane: the ray of pixel (u, v) passes,
 // at depth d (in sample slices; permuted z = d / S), through permuted
-//   x = u - origin_x + x0 + d·sx,   y = v - origin_y + y0 + d·sy.
+//   x = x0 + d·sx + (u - origin_x)·w(d),   y = y0 + d·sy + (v - origin_y)·w(d),
+// w(d) = 1 + d·ms the rays' spacing: 1 in parallel projection (ms = 0); in
+// perspective the rays leave an eye at w = 0 (Cube-4 §3).
 struct BaseFrame {
-  double x0 = 0, sx = 0, y0 = 0, sy = 0;  // ray offset at slice 0 and its step per sample slice, voxels
-  int origin_x = 0, origin_y = 0;         // base_origin_x/y(): pixel of x = 0 at integer offset 0
+  double x0 = 0, sx = 0, y0 = 0, sy = 0;  // ray 0's (parallel: the ray offset's) position at slice 0 and its step per sample slice, voxels
+  int origin_x = 0, origin_y = 0;         // base_origin_x/y(): the pixel of ray 0
   int S = 1;
-  // (u, v, d) of a point in permuted voxel coordinates.
+  double ms = 0;                          // the spacing's growth per sample slice
+  double w(double d) const { return 1 + d * ms; }
+  // (u, v, d) of a point in permuted voxel coordinates (in front of the eye: w > 0).
   Vec3 to_base(const Vec3& permuted) const;
 };
+
+// In perspective, polygons are drawn where the rays' spacing is at least
+// kNearSpacing (1/16 of the eye's distance to the base plane, and further):
+// the near plane; the part of a triangle nearer the eye is not drawn.
+// Parallel projection draws every triangle whole.
+inline constexpr double kNearSpacing = 1.0 / 16;
+// A triangle's corner projected onto the base plane: (u, v, d) of to_base()
+// and h = 1 / w(d), what perspective-correct depth needs (golden/rasterise.hpp).
+struct BaseCorner {
+  Vec3 uvd{};
+  double h = 1;
+};
+// Calls draw(const BaseCorner (&)[3]) for the part of triangle (a, b, c)
+// (permuted voxel coordinates) on or beyond the near plane: once (the
+// triangle itself, always so in parallel projection), twice (a clipped
+// quadrilateral, split along a diagonal: the halves share it, so no pixel
+// is drawn twice) or not at all.
+template <class Draw>
+void project_triangle(const BaseFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, Draw&& draw);
 // The fixed renderer's rays: the registers' DDA, exactly (a sample's own
-// position differs from it by its weights' truncation, under 2^-weight_bits).
+// position differs from it by its weights' truncation, under 2^-weight_bits),
+// in perspective its rays' positions and spacing (Registers::ray0, ray_spacing).
 BaseFrame base_frame(const Registers& r);
 
 // Base-plane pixels to add before and after a width x height base plane in
@@ -83,7 +107,52 @@ PolygonTraffic polygon_traffic(const PolygonFrame& f, const Precision& p);
 PolygonTraffic polygon_traffic(const PolygonFrame& f, const std::vector<SlabLoad>& loads, const Precision& p);
 
 // Snapped vertex positions: 1/2^kSubpixelBits of a pixel, depth in units of
-// 2^-kZFracBits sample slices, both rounded half up.
+// 2^-kZFracBits sample slices, both rounded half up; in perspective h = 1/w
+// in units of 2^-kInverseSpacingBits, rounded half up and at least 1 unit.
 inline constexpr int kSubpixelBits = 8;
+inline constexpr int kInverseSpacingBits = 20;
+
+template <class Draw>
+void project_triangle(const BaseFrame& frame, const Vec3& a, const Vec3& b, const Vec3& c, Draw&& draw) {
+  const auto corner = [&](const Vec3& p) {
+    BaseCorner k;
+    k.uvd = frame.to_base(p);
+    k.h = 1 / frame.w(k.uvd[2]);
+    return k;
+  };
+  const Vec3* in[3] = {&a, &b, &c};
+  // w is affine in permuted z: its value at each vertex, less the near plane's.
+  double s[3];
+  int nearer = 0;
+  for (int i = 0; i < 3; ++i) {
+    s[i] = frame.w((*in[i])[2] * frame.S) - kNearSpacing;
+    nearer += s[i] < 0;
+  }
+  if (nearer == 0) {
+    const BaseCorner t[3] = {corner(a), corner(b), corner(c)};
+    draw(t);
+    return;
+  }
+  if (nearer == 3) return;
+  // Sutherland-Hodgman against the one plane: 3 or 4 corners, in order.
+  Vec3 poly[4];
+  int n = 0;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (s[i] >= 0) poly[n++] = *in[i];
+    if ((s[i] < 0) != (s[j] < 0)) {
+      const double t = s[i] / (s[i] - s[j]);
+      Vec3 p{};
+      for (int q = 0; q < 3; ++q) p[q] = (*in[i])[q] + t * ((*in[j])[q] - (*in[i])[q]);
+      poly[n++] = p;
+    }
+  }
+  const BaseCorner t0[3] = {corner(poly[0]), corner(poly[1]), corner(poly[2])};
+  draw(t0);
+  if (n == 4) {
+    const BaseCorner t1[3] = {corner(poly[0]), corner(poly[2]), corner(poly[3])};
+    draw(t1);
+  }
+}
 
 }  // namespace cube4::golden

@@ -20,6 +20,11 @@
 //  - Depth: the plane of the triangle at the pixel centre, from its three
 //    vertices' depths by barycentric weights (exact: the shear keeps planes
 //    planar); in integers rounded half up to the vertices' depth unit.
+//    In perspective each vertex also carries h = 1/w, w the rays' spacing
+//    at its depth: the projection keeps d/w and 1/w affine on the footprint
+//    (not d), so the depth is perspective-correct,
+//    sum(e_i h_i d_i) / sum(e_i h_i) over the barycentric weights e_i. With
+//    equal h (parallel projection: h = 1) that is the affine depth exactly.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -31,6 +36,7 @@ namespace cube4::golden {
 template <class T>
 struct BaseVertex {
   T u = 0, v = 0, d = 0;  // base-plane position in 1/`one` pixels; depth
+  T h = 1;                // 1/w in perspective (integers: a fixed-point value >= 1); 1 in parallel projection
 };
 
 namespace raster {
@@ -79,9 +85,10 @@ bool inside(Wide<T> e, const BaseVertex<T>& a, const BaseVertex<T>& b) {
 }  // namespace raster
 
 // Calls emit(u, v, depth) for every pixel of [0, width) x [0, height) that
-// the triangle covers, row by row. Integer vertices must lie within ±2^38
-// units in u, v and d (the host refuses polygons beyond that), so that
-// every product fits 128 bits.
+// the triangle covers, row by row. Integer vertices must keep every sum
+// e_i·h_i·d_i within ±2^124 (the host refuses polygons beyond that: ±2^38
+// units in u, v and d with h = 1; docs/fixed-point.md for perspective), so
+// that every product fits 128 bits.
 template <class T, class Emit>
 void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int width, int height, Emit&& emit) {
   using W = raster::Wide<T>;
@@ -100,6 +107,22 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
   for (int v = v0; v <= v1; ++v) {
     const W pv = W(v) * one;
     if constexpr (std::is_integral_v<T>) {
+      if (a.h != b.h || b.h != c.h) {
+        // Perspective: numerator and denominator are both linear in u,
+        // their quotient is not; one rounded division per covered pixel.
+        const W pu = W(u0) * one;
+        W ea = raster::edge(b, c, pu, pv), eb = raster::edge(c, a, pu, pv), ec = raster::edge(a, b, pu, pv);
+        const W dea = -(W(c.v) - b.v) * one, deb = -(W(a.v) - c.v) * one, dec = -(W(b.v) - a.v) * one;
+        const W ha = a.h, hb = b.h, hc = c.h, hda = ha * a.d, hdb = hb * b.d, hdc = hc * c.d;
+        W N = ea * hda + eb * hdb + ec * hdc, D = ea * ha + eb * hb + ec * hc;
+        const W dN = dea * hda + deb * hdb + dec * hdc, dD = dea * ha + deb * hb + dec * hc;
+        for (int u = u0; u <= u1; ++u) {
+          if (covered(ea, eb, ec)) emit(u, v, static_cast<T>(raster::floor_div(2 * N + D, 2 * D)));  // half up
+          ea += dea, eb += deb, ec += dec;
+          N += dN, D += dD;
+        }
+        continue;
+      }
       // The edges and the depth's numerator are linear in u: stepped along
       // the row exactly, the depth's rounded quotient with its remainder
       // (N = 2 num + area = q D + r, 0 <= r < D), so no division per pixel.
@@ -120,7 +143,11 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
       for (int u = u0; u <= u1; ++u) {
         const W pu = W(u) * one;
         const W ea = raster::edge(b, c, pu, pv), eb = raster::edge(c, a, pu, pv), ec = raster::edge(a, b, pu, pv);
-        if (covered(ea, eb, ec)) emit(u, v, (ea * a.d + eb * b.d + ec * c.d) / area);
+        if (!covered(ea, eb, ec)) continue;
+        if (a.h == b.h && b.h == c.h)
+          emit(u, v, (ea * a.d + eb * b.d + ec * c.d) / area);
+        else
+          emit(u, v, (ea * a.h * a.d + eb * b.h * b.d + ec * c.h * c.d) / (ea * a.h + eb * b.h + ec * c.h));
       }
     }
   }

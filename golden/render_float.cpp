@@ -11,7 +11,7 @@
 #include "golden/fixed.hpp"
 #include "golden/permuted_volume.hpp"
 #include "golden/polygons.hpp"
-#include "golden/rasterise.hpp"
+#include "golden/polygons_float.hpp"
 #include "golden/renderers.hpp"
 #include "golden/shading_model.hpp"
 #include "golden/units/composite_ray_align.hpp"
@@ -86,91 +86,12 @@ double realigned(const PlaneF& s, int x, int y, double ddx, double ddy) {
   return a + wy * (b - a);
 }
 
-struct AccF {
-  double r = 0, g = 0, b = 0, a = 0, value = 0;
-  bool valid = false;
-  // acc over a layer of colour c and opacity alpha behind it.
-  void over(const Vec3& c, double alpha) {
-    const double t = (1 - a) * alpha;
-    r += t * c[0]; g += t * c[1]; b += t * c[2]; a += t;
-  }
-};
-
-// The polygons of the frame in real arithmetic: the golden rasteriser's
-// scan conversion in doubles (no snapping, exact depth), and per
-// base-plane pixel the ray's translucent fragments in depth order and its
-// nearest opaque one. Compositing them with the samples in depth order is
-// what the fixed renderer's front, slab and back images arrange.
-class PolygonsF {
- public:
-  PolygonsF(const Scene& s, const std::vector<Mesh>& meshes, const ViewFactorisation& f, const BaseFrame& frame,
-            int width, int height)
-      : hits_(static_cast<size_t>(width) * height), next_(hits_.size(), 0), done_(hits_.size(), false),
-        z_(hits_.size(), std::numeric_limits<double>::infinity()), opaque_(hits_.size()) {
-    const Lighting L = lighting_of(s, f);
-    for (const Mesh& m : meshes) {
-      if (!(m.opacity > 0)) continue;
-      for (const auto& t : m.triangles) {
-        const Vec3 rgb = polygon_color(s, L, f, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]], m.color, m.lit);
-        BaseVertex<double> c[3];
-        for (int i = 0; i < 3; ++i) {
-          const Vec3 b = frame.to_base(f.to_permuted(m.vertices[t[static_cast<size_t>(i)]]));
-          c[i] = {b[0], b[1], b[2]};
-        }
-        scan_triangle<double>(c[0], c[1], c[2], 1.0, width, height, [&](int u, int v, double d) {
-          const size_t i = static_cast<size_t>(v) * width + u;
-          if (m.opacity < 1) {
-            hits_[i].push_back({d, rgb, m.opacity});
-          } else if (d < z_[i]) {
-            z_[i] = d;
-            opaque_[i] = rgb;
-          }
-        });
-      }
-    }
-    for (size_t i = 0; i < hits_.size(); ++i) {
-      auto& h = hits_[i];
-      h.erase(std::remove_if(h.begin(), h.end(), [&](const Hit& x) { return x.d >= z_[i]; }), h.end());
-      std::stable_sort(h.begin(), h.end(), [](const Hit& x, const Hit& y) { return x.d < y.d; });
-    }
-  }
-  // Before sample slice k of pixel i's ray: its fragments at depths up to
-  // k; true if the sample lies in front of the opaque surface.
-  bool before_sample(size_t i, int k, AccF& acc) {
-    const auto& h = hits_[i];
-    while (next_[i] < h.size() && h[next_[i]].d <= k) over(acc, h[next_[i]++]);
-    return k < z_[i];
-  }
-  // The ray leaves: the rest of its fragments, then the opaque surface.
-  AccF leave(size_t i, AccF acc) {
-    const auto& h = hits_[i];
-    while (next_[i] < h.size()) over(acc, h[next_[i]++]);
-    if (z_[i] < std::numeric_limits<double>::infinity()) acc.over(opaque_[i], 1.0);
-    done_[i] = true;
-    return acc;
-  }
-  bool done(size_t i) const { return done_[i]; }
-
- private:
-  struct Hit {
-    double d;
-    Vec3 rgb;
-    double alpha;
-  };
-  static void over(AccF& acc, const Hit& h) { acc.over(h.rgb, h.alpha); }
-  std::vector<std::vector<Hit>> hits_;
-  std::vector<size_t> next_;
-  std::vector<bool> done_;
-  std::vector<double> z_;
-  std::vector<Vec3> opaque_;
-};
-
 }  // namespace
 
 BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisation& f, RenderStats* stats,
                         const Progress& progress, const std::vector<Mesh>& meshes) {
   check_polygon_scene(s, meshes);
-  if (f.perspective) return render_float_perspective(vol, s, f, stats, progress);
+  if (f.perspective) return render_float_perspective(vol, s, f, stats, progress, meshes);
   const int nx = f.pdim[0], ny = f.pdim[1];
   const int S = s.supersampling, K = f.pdim[2] * S;
   FloatView fv{vol, f, K, S, s.view.ray_offset[0], s.view.ray_offset[1], f.shear_x / S, f.shear_y / S};

@@ -5,10 +5,12 @@
 // reference ray caster (a pinhole camera) the price of the algorithm.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "golden/host_driver.hpp"
 #include "golden/permuted_volume.hpp"
+#include "golden/polygons_float.hpp"
 #include "golden/renderers.hpp"
 #include "golden/shading_model.hpp"
 
@@ -62,7 +64,7 @@ struct Slice {
 }  // namespace
 
 BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const ViewFactorisation& f,
-                                    RenderStats* stats, const Progress& progress) {
+                                    RenderStats* stats, const Progress& progress, const std::vector<Mesh>& meshes) {
   const int nx = f.pdim[0], ny = f.pdim[1];
   const int S = s.supersampling, K = f.pdim[2] * S;
   const Vec3 eye = f.eye_permuted();
@@ -71,7 +73,26 @@ BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const Vie
     const auto a = Geometry::inside(o, e, 1, n), b = Geometry::inside(o, e, geo.spacing(K - 1), n);
     return b.first >= b.second ? a : std::make_pair(std::min(a.first, b.first), std::max(a.second, b.second));
   };
-  const auto jx = span(geo.ox, geo.ex, nx), jy = span(geo.oy, geo.ey, ny);
+  auto jx = span(geo.ox, geo.ex, nx), jy = span(geo.oy, geo.ey, ny);
+  // Polygons: the rays of base-plane pixel p - origin as a BaseFrame (ray j
+  // at e + (o + j - e)·w(d)), and margins for polygons beside the volume.
+  BaseFrame frame;
+  frame.S = S;
+  frame.ms = 1 / (S * geo.d);
+  frame.x0 = geo.ox;
+  frame.y0 = geo.oy;
+  frame.sx = frame.ms * (geo.ox - geo.ex);
+  frame.sy = frame.ms * (geo.oy - geo.ey);
+  frame.origin_x = static_cast<int>(-jx.first);
+  frame.origin_y = static_cast<int>(-jy.first);
+  if (!meshes.empty()) {
+    const Margins margins = polygon_margins(meshes, f, frame, static_cast<int>(jx.second - jx.first),
+                                            static_cast<int>(jy.second - jy.first));
+    jx = {jx.first - margins.lo[0], jx.second + margins.hi[0]};
+    jy = {jy.first - margins.lo[1], jy.second + margins.hi[1]};
+    frame.origin_x = static_cast<int>(-jx.first);
+    frame.origin_y = static_cast<int>(-jy.first);
+  }
   BasePlaneF out;
   out.image.width = static_cast<int>(jx.second - jx.first);
   out.image.height = static_cast<int>(jy.second - jy.first);
@@ -123,11 +144,9 @@ BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const Vie
     return top + b * (bottom - top);
   };
 
-  struct Acc {
-    double r = 0, g = 0, b = 0, a = 0, value = 0;
-    bool valid = false;
-  };
-  std::vector<Acc> rays(static_cast<size_t>(W) * out.image.height);
+  std::optional<PolygonsF> poly;
+  if (!meshes.empty()) poly.emplace(s, meshes, f, frame, W, out.image.height);
+  std::vector<AccF> rays(static_cast<size_t>(W) * out.image.height);
   Slice behind, current, ahead;
   sample_slice(0, current);
   if (e.gradient) sample_slice(1, ahead);
@@ -157,8 +176,10 @@ BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const Vie
           alpha *= fac;
           if (fac == 0) visible = false;
         }
+        const size_t i = static_cast<size_t>(w) * W + u;
+        AccF& acc = rays[i];
+        if (poly && !poly->before_sample(i, k, acc)) visible = false;
         if (!visible) continue;
-        Acc& acc = rays[static_cast<size_t>(w) * W + u];
         if (s.blend == Blend::Composite) {
           const double t = (1 - acc.a) * alpha;
           acc.r += t * sh.rgb[0]; acc.g += t * sh.rgb[1]; acc.b += t * sh.rgb[2]; acc.a += t;
@@ -177,7 +198,8 @@ BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const Vie
   }
   for (int w = 0; w < out.image.height; ++w)
     for (int u = 0; u < W; ++u) {
-      const Acc& a = rays[static_cast<size_t>(w) * W + u];
+      const size_t i = static_cast<size_t>(w) * W + u;
+      const AccF a = poly ? poly->leave(i, rays[i]) : rays[i];
       float* px = out.image.pixel(u, w);
       px[0] = static_cast<float>(a.r); px[1] = static_cast<float>(a.g);
       px[2] = static_cast<float>(a.b); px[3] = static_cast<float>(a.a);

@@ -5,8 +5,14 @@
 // filter, their gradients taken from the neighbouring rays and the samples
 // realigned straight behind and ahead, then shaded and composited with the
 // parallel pipeline's unit functions. One thread: the algorithm, not speed.
+// With polygons (golden/polygon_frame.hpp) a ray starts as its front pixel,
+// each sample passes the Z test and the slice's slab pixel of the ray (its
+// rank among the slice's rays, golden/polygons.hpp) follows it, and the
+// back pixel goes behind the ray when the frame ends: the parallel
+// compositor's steps (SliceCompositor) on the perspective rays.
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "golden/perspective.hpp"
@@ -51,6 +57,8 @@ class Traversal {
     const RayStopRule stop(!may_skip ? RayStop::never : opt_.accumulators ? RayStop::full_alpha : RayStop::settled_pixel,
                            r_.blend, r_.p);
     std::vector<uint8_t> stopped(rays_.size(), 0);
+    const PolygonFrame* poly = opt_.polygons;
+    if (poly) start_polygons(*poly, stop, stopped);
     sample_slice(0, current_, tag_);
     if (r_.gradient) sample_slice(1, ahead_, next_tag_);
     uint64_t count = 0;
@@ -60,7 +68,7 @@ class Traversal {
         for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
           ++count;
           const size_t i = current_.index(u, v);
-          if (stopped[i]) continue;
+          if (stopped[i] || (poly && !sample_before_z(k, poly->z[i]))) continue;
           RayAcc& ray = rays_[i];
           const uint32_t centre = current_.at(u, v), tag = tagged_ ? tag_.at(u, v) : 0;
           if (may_skip && classify(r_.classification, tag, centre, r_.p).a == 0) continue;
@@ -82,6 +90,7 @@ class Traversal {
           ray = blend(r_.blend, ray, out, r_.p);
           if (stop.active() && stop.can_stop(ray)) stopped[i] = 1;
         }
+      if (poly) composite_slab(poly->slabs[static_cast<size_t>(k)], s, stop, stopped);
       if (r_.gradient) {
         std::swap(behind_, current_);
         std::swap(current_, ahead_);
@@ -95,7 +104,7 @@ class Traversal {
     for (int y = 0; y < bp_.height; ++y)
       for (int x = 0; x < bp_.width; ++x) {
         const size_t i = static_cast<size_t>(y) * bp_.width + x;
-        write_pixel(bp_, x, y, pixel_of(rays_[i], r_.p));
+        write_pixel(bp_, x, y, poly ? leave_with_polygons(rays_[i], poly->back[i], r_.p) : pixel_of(rays_[i], r_.p));
         if (!bp_.acc.empty()) bp_.acc[i] = rays_[i];
       }
     if (opt_.stats) {
@@ -106,6 +115,32 @@ class Traversal {
 
  private:
   RayPlane plane() const { return RayPlane(bp_.width, bp_.height, ox_, oy_); }
+
+  void start_polygons(const PolygonFrame& poly, const RayStopRule& stop, std::vector<uint8_t>& stopped) {
+    if (poly.width != bp_.width || poly.height != bp_.height || poly.front.size() != rays_.size() ||
+        poly.back.size() != rays_.size() || poly.z.size() != rays_.size() ||
+        poly.slabs.size() != static_cast<size_t>(K_) || r_.blend != BlendMode::Composite)
+      throw std::logic_error("render_perspective: the polygon frame does not fit the registers' base plane and blend");
+    for (size_t i = 0; i < rays_.size(); ++i) {
+      rays_[i] = pixel_to_acc(poly.front[i], r_.p);
+      if (stop.active() && stop.can_stop(rays_[i])) stopped[i] = 1;
+    }
+  }
+
+  // Slice s.k's slab behind its samples: slab pixel (x, y) is the slice's
+  // ray (rays_x.lo + x, rays_y.lo + y). Not on a stopped ray, whose pixel it
+  // cannot change (RayStopRule).
+  void composite_slab(const SlabImage& slab, const PerspectiveSlice& s, const RayStopRule& stop,
+                      std::vector<uint8_t>& stopped) {
+    if (slab.empty()) return;
+    for (int y = 0; y < s.rays_y.hi - s.rays_y.lo; ++y)
+      slab.for_each_pixel(y, [&](int x, const Pixel& px) {
+        const size_t i = current_.index(s.rays_x.lo + x, s.rays_y.lo + y);
+        if (stopped[i]) return;
+        rays_[i] = ray_over_pixel(rays_[i], px, r_.p);
+        if (stop.active() && stop.can_stop(rays_[i])) stopped[i] = 1;
+      });
+  }
 
   Gradient gradient(int64_t u, int64_t v) const {
     const PerspectiveSlice& s = current_.slice;

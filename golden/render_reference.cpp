@@ -73,6 +73,13 @@ struct Hit {
   double alpha;
 };
 
+// Whether object voxel point p lies in front of a perspective view's eye.
+bool in_front_of_eye(const ViewFactorisation& f, const Vec3& p) {
+  double depth = 0;
+  for (int i = 0; i < 3; ++i) depth += f.view_dir_object[i] * (p[i] - f.eye_object[i]) * f.spacing[i];
+  return depth > 0;
+}
+
 // Every polygon hit of every image pixel's ray, in depth order, and the
 // nearest opaque one (t = infinity: none); translucent hits at or behind
 // it are hidden and left out.
@@ -81,8 +88,10 @@ struct PolygonHits {
   std::vector<Hit> opaque;
 };
 
-PolygonHits polygon_hits(const Scene& s, const std::vector<Mesh>& meshes, const ViewFactorisation& f, const Vec3& d,
-                         int width, int height) {
+// The rays are the renderer's (ViewFactorisation::ray_of_image): in
+// perspective from the eye, meeting what lies in front of it (t > 0).
+PolygonHits polygon_hits(const Scene& s, const std::vector<Mesh>& meshes, const ViewFactorisation& f, int width,
+                         int height) {
   const size_t n = static_cast<size_t>(width) * height;
   PolygonHits h{std::vector<std::vector<Hit>>(n), std::vector<Hit>(n, Hit{std::numeric_limits<double>::infinity(), {}, 1})};
   const Lighting L = lighting_of(s, f);
@@ -91,10 +100,16 @@ PolygonHits polygon_hits(const Scene& s, const std::vector<Mesh>& meshes, const 
     for (const auto& t : m.triangles) {
       const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
       const Vec3 rgb = polygon_color(s, L, f, a, b, c, m.color, m.lit);
-      // The pixels whose rays can meet it: its projection's bounding box.
+      // The pixels whose rays can meet it: its projection's bounding box;
+      // in perspective every pixel when a corner is not in front of the eye.
       double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
       double hi[2] = {-lo[0], -lo[1]};
       for (const Vec3* v : {&a, &b, &c}) {
+        if (f.perspective && !in_front_of_eye(f, *v)) {
+          lo[0] = lo[1] = -std::numeric_limits<double>::infinity();
+          hi[0] = hi[1] = std::numeric_limits<double>::infinity();
+          break;
+        }
         const auto xy = f.image_of(*v);
         for (int i = 0; i < 2; ++i) {
           lo[i] = std::min(lo[i], xy[static_cast<size_t>(i)]);
@@ -107,8 +122,9 @@ PolygonHits polygon_hits(const Scene& s, const std::vector<Mesh>& meshes, const 
                 y1 = static_cast<int>(std::clamp(std::ceil(hi[1]), -1.0, double(height - 1)));
       for (int Y = y0; Y <= y1; ++Y)
         for (int X = x0; X <= x1; ++X) {
-          const auto hit = intersect(f.object_of_image(X, Y), d, a, b, c);
-          if (!hit) continue;
+          const ViewFactorisation::Ray ray = f.ray_of_image(X, Y);
+          const auto hit = intersect(ray.origin, ray.direction, a, b, c);
+          if (!hit || (f.perspective && !(*hit > 0))) continue;
           const size_t i = static_cast<size_t>(Y) * width + X;
           if (m.opacity < 1) {
             h.translucent[i].push_back({*hit, rgb, m.opacity});
@@ -139,8 +155,6 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
   const Lighting L = lighting_of(s, f);
   const double unit = std::min({vol.spacing[0], vol.spacing[1], vol.spacing[2]});
   const double h = opt.step * unit;  // physical step
-  Vec3 view_d{};  // voxel coordinates per physical unit along the (parallel) rays: the polygons'
-  for (int i = 0; i < 3; ++i) view_d[i] = f.view_dir_object[i] / vol.spacing[i];
   double plen = 0;
   for (int i = 0; i < 3; ++i) plen += s.cut.normal[i] * s.cut.normal[i];
   plen = std::sqrt(plen);
@@ -162,7 +176,7 @@ ImageF render_reference(const Volume& vol, const Scene& s, const ViewFactorisati
   const std::vector<Mesh> none;
   const std::vector<Mesh>& meshes = opt.meshes ? *opt.meshes : none;
   check_polygon_scene(s, meshes);
-  const PolygonHits hits = polygon_hits(s, meshes, f, view_d, img.width, img.height);
+  const PolygonHits hits = polygon_hits(s, meshes, f, img.width, img.height);
   uint64_t samples = 0;
   for (int Y = 0; Y < img.height; ++Y) {
     for (int X = 0; X < img.width; ++X) {

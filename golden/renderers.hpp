@@ -89,7 +89,7 @@ struct FixedOptions {
 BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);
 // Registers with `perspective` set: Cube-4's perspective (golden/perspective.hpp);
 // render_fixed() calls it for them. One thread; no empty-space skipping
-// beyond the per-sample one; polygons not yet.
+// beyond the per-sample one.
 BasePlane render_perspective(const Volume& vol, const Registers& regs, const FixedOptions& options);
 BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* stats = nullptr,
                        const Progress& progress = {}, SampleProbe* probe = nullptr);
@@ -104,7 +104,8 @@ BasePlaneF render_float(const Volume& vol, const Scene& s, const ViewFactorisati
 // render_float() for a perspective view (f.perspective): render_perspective()'s
 // algorithm in real arithmetic; render_float() calls it for such views.
 BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const ViewFactorisation& f,
-                                    RenderStats* stats = nullptr, const Progress& progress = {});
+                                    RenderStats* stats = nullptr, const Progress& progress = {},
+                                    const std::vector<Mesh>& meshes = {});
 
 struct ReferenceOptions {
   double step = 0.25;  // ray step in units of the smallest voxel spacing

@@ -2,7 +2,9 @@
 # Pictures of hybrid volume and polygon scenes (docs/accuracy.md,
 # "Polygons"): scenes/brain_probe.json (an opaque probe in the cut-away
 # head), scenes/brain_probe_translucent.json (the same probe translucent)
-# and scenes/sphere_box.json (a translucent box around the sphere), each
+# and scenes/sphere_box.json (a translucent box around the sphere), and
+# brain_probe and sphere_box in perspective (scenes/perspective_brain_probe.json,
+# scenes/perspective_sphere_box.json; the reference a pinhole camera), each
 # rendered by the fixed-point golden model and by the reference ray caster
 # into docs/images/hybrid-*.png; the float model is measured too. Each
 # scene's figures are set beside those of the same scene without its
@@ -29,7 +31,7 @@ figures() {  # "PSNR dB, mean M, max X" of $1 against $2
   echo
   echo "| scene | fixed (golden) | reference | fixed vs reference | float vs reference | fixed vs float | without polygons: fixed vs reference, fixed vs float |"
   echo "|---|---|---|---|---|---|---|"
-  for name in brain_probe brain_probe_translucent sphere_box; do
+  for name in brain_probe brain_probe_translucent sphere_box perspective_brain_probe perspective_sphere_box; do
     scene=$here/scenes/$name.json
     # The volume alone: the scene without its polygons (a relative volume
     # path made absolute, as the scene moves).

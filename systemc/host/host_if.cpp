@@ -335,10 +335,25 @@ HostInterface::Outcome HostInterface::start_frame() {
     if (r.dim[i] != vol[r.perm[i]]) return fail(ErrorCode::ViewMismatch);
   // The pixel memory holds BASE_MAX x BASE_MAX pixels.
   const int f = r.p.dda_frac_bits;
-  const __int128 w =
-      r.dim[0] + last_offset(r.x_start, r.x_step, r.sample_slices(), f) + r.margin_lo[0] + r.margin_hi[0];
-  const __int128 h =
-      r.dim[1] + last_offset(r.y_start, r.y_step, r.sample_slices(), f) + r.margin_lo[1] + r.margin_hi[1];
+  // Perspective: rays one voxel apart on the first slice and at most the box
+  // filter's 3 on the last (golden/units/dda_perspective.hpp), or nothing
+  // below can divide by the spacing.
+  if (r.perspective) {
+    const int64_t one = int64_t{1} << f;
+    if (r.scale_start != one)
+      return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of("SCALE_START")};
+    if (r.scale_step < 0 || __int128{r.scale_step} * (r.sample_slices() - 1) > 2 * one)
+      return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of("SCALE_STEP")};
+  }
+  // Parallel: the volume's columns and the rays' last offset; perspective:
+  // every ray that samples a slice (Registers::rays_entering).
+  auto extent = [&](int axis, int64_t start, int64_t step) -> __int128 {
+    const __int128 margins = r.margin_lo[static_cast<size_t>(axis)] + r.margin_hi[static_cast<size_t>(axis)];
+    if (!r.perspective) return r.dim[static_cast<size_t>(axis)] + last_offset(start, step, r.sample_slices(), f) + margins;
+    const golden::RayRange rays = r.rays_entering(axis);
+    return __int128{rays.hi} - rays.lo + margins;
+  };
+  const __int128 w = extent(0, r.x_start, r.x_step), h = extent(1, r.y_start, r.y_step);
   const int base_max = 2 * config_.hw.max_dim;
   if (w < 1 || w > base_max || h < 1 || h > base_max) return fail(ErrorCode::BasePlaneTooLarge);
   if (r.cut_enabled && r.cut.falloff < 0) return fail(ErrorCode::CutFalloffNegative);

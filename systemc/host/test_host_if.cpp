@@ -1172,6 +1172,22 @@ std::vector<ErrorCase> error_cases() {
                     ASSERT_EQ(write(e.host, rm::kMode, {rm::kModeCut}), tlm::TLM_OK_RESPONSE);
                     ASSERT_EQ(write(e.host, rm::kCutFalloffLo, {0xFFFF'FFFF, 0xFFFF'FFFF}), tlm::TLM_OK_RESPONSE); },
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::CutFalloffNegative, rm::kCtrl},
+      // Perspective's spacing is divided by (the rays' positions and the box
+      // filter): refused before anything divides by zero or past the box.
+      {"START in perspective with SCALE_START not one",
+       [](Env& e) { set_volume_and_view(e, {10, 10, 10});
+                    ASSERT_EQ(write(e.host, rm::kMode, {rm::kModePerspective}), tlm::TLM_OK_RESPONSE); },
+       TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::FieldRange, rm::address_of("SCALE_START")},
+      {"START in perspective with the last slice's rays past 3 voxels apart",
+       [](Env& e) { set_volume_and_view(e, {10, 10, 10});
+                    const uint64_t one = uint64_t{1} << golden::Precision{}.dda_frac_bits;
+                    const uint64_t step = (2 * one) / 9 + 1;  // 10 slices: 1 + 9 step > 3
+                    ASSERT_EQ(write(e.host, rm::kMode, {rm::kModePerspective}), tlm::TLM_OK_RESPONSE);
+                    ASSERT_EQ(write(e.host, rm::address_of("SCALE_START"),
+                                    {static_cast<uint32_t>(one), static_cast<uint32_t>(one >> 32),
+                                     static_cast<uint32_t>(step), static_cast<uint32_t>(step >> 32)}),
+                              tlm::TLM_OK_RESPONSE); },
+       TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::FieldRange, rm::address_of("SCALE_STEP")},
       {"START refused by the backend", [](Env& e) { set_volume_and_view(e, {10, 10, 10}); e.backend.refuse = true; },
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::BackendFailure, rm::kCtrl},
       {"START while busy", busy, TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::Busy, rm::kCtrl},

@@ -228,19 +228,8 @@ TEST(PerspectiveRender, FixedFloatAndReferenceDrawThingsInTheSamePlace) {
   const auto s = test::setup(R"({"volume": {"synthetic": "sphere", "size": [64, 48, 80], "radius": 10,
       "center": [12, 36, 60]}, "view": {"rotate": [30, -40, 10], "projection": "perspective", "fov": 60},
       "output": {"width": 256, "height": 200}})");
-  auto centroid = [](const golden::ImageF& img) {
-    double sx = 0, sy = 0, sa = 0;
-    for (int y = 0; y < img.height; ++y)
-      for (int x = 0; x < img.width; ++x) {
-        const double a = img.pixel(x, y)[3];
-        sx += a * x;
-        sy += a * y;
-        sa += a;
-      }
-    return std::array<double, 3>{sx / sa, sy / sa, sa};
-  };
-  const auto fixed = centroid(test::final_fixed(s)), flt = centroid(test::final_float(s)),
-             ref = centroid(test::final_reference(s));
+  const auto fixed = test::centroid(test::final_fixed(s)), flt = test::centroid(test::final_float(s)),
+             ref = test::centroid(test::final_reference(s));
   EXPECT_GT(ref[2], 100);
   for (const auto& c : {fixed, flt}) {
     EXPECT_NEAR(c[0], ref[0], 0.5);

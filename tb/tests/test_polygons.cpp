@@ -631,19 +631,6 @@ struct CountingProbe : golden::SampleProbe {
   uint64_t seen = 0;
   void sample(int, int, const golden::SliceControl&, uint32_t, const golden::Gradient&) override { ++seen; }
 };
-std::string sphere_with_polygons(const std::string& view) {
-  // A shaded sphere, a translucent box around it crossing the volume's
-  // faces, an opaque needle through it, a translucent disc in front.
-  return R"({"volume": {"synthetic": "sphere", "size": [24, 24, 24]}, "view": )" + view + R"(,
-      "output": {"width": 64, "height": 64}, "supersampling": 2,
-      "polygons": [
-        {"shape": "box", "size": [22, 22, 22], "transform": {"translate": [11.5, 11.5, 11.5], "rotate": [10, 20, 0]},
-         "color": [0.2, 0.5, 1], "opacity": 0.3},
-        {"shape": "needle", "radius": 1.5, "length": 40, "transform": {"translate": [-6, 10, 8], "rotate": [0, 80, 10]},
-         "color": [0.9, 0.9, 0.9]},
-        {"shape": "sphere", "radius": 5, "segments": 12, "rings": 6, "transform": {"translate": [12, 12, -4]},
-         "color": [1, 0.3, 0.2], "opacity": 0.5, "lit": false}]})";
-}
 }  // namespace
 
 // Each slab's triangle count (the triangle-rate term of Cube-5's connection
@@ -654,7 +641,7 @@ std::string sphere_with_polygons(const std::string& view) {
 TEST(Polygons, SlabTriangleCountsAreEachTrianglesSlabs) {
   for (const std::string& view : {std::string(R"({"direction": [0.4, -0.3, 1]})"),
                                   std::string(R"({"direction": [-1, 0.2, 0.1], "up": [0, 0, 1]})")}) {
-    Hybrid h = hybrid(sphere_with_polygons(view));
+    Hybrid h = hybrid(test::sphere_with_polygons(view));
     std::vector<golden::Mesh> translucent;
     for (const golden::Mesh& m : h.meshes)
       if (m.opacity < 1) translucent.push_back(m);
@@ -681,7 +668,7 @@ TEST(Polygons, SlabTriangleCountsAreEachTrianglesSlabs) {
 TEST(Polygons, SkippingAndThreadsStayExact) {
   for (const std::string& view : {std::string(R"({"direction": [0.4, -0.3, 1]})"),
                                   std::string(R"({"direction": [-1, 0.2, 0.1], "up": [0, 0, 1]})")}) {
-    const auto h = hybrid(sphere_with_polygons(view));
+    const auto h = hybrid(test::sphere_with_polygons(view));
     EXPECT_GT(h.frame.counts.opaque, 0u);
     EXPECT_GT(h.frame.counts.in_slabs, 0u);
     EXPECT_GT(h.frame.counts.in_front + h.frame.counts.behind, 0u);

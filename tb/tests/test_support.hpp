@@ -1,6 +1,7 @@
 // Small helpers shared by the golden-model tests.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -58,6 +59,35 @@ inline golden::ImageF final_reference(const Setup& s) {
   golden::ReferenceOptions opt;
   opt.meshes = &s.meshes;
   return golden::render_reference(s.volume, s.scene, s.host.view, opt);
+}
+
+// A shaded sphere, a translucent box around it crossing the volume's
+// faces, an opaque needle through it, a translucent ball in front: the
+// hybrid scene of the polygon tests, seen by `view`.
+inline std::string sphere_with_polygons(const std::string& view) {
+  return R"({"volume": {"synthetic": "sphere", "size": [24, 24, 24]}, "view": )" + view + R"(,
+      "output": {"width": 64, "height": 64}, "supersampling": 2,
+      "polygons": [
+        {"shape": "box", "size": [22, 22, 22], "transform": {"translate": [11.5, 11.5, 11.5], "rotate": [10, 20, 0]},
+         "color": [0.2, 0.5, 1], "opacity": 0.3},
+        {"shape": "needle", "radius": 1.5, "length": 40, "transform": {"translate": [-6, 10, 8], "rotate": [0, 80, 10]},
+         "color": [0.9, 0.9, 0.9]},
+        {"shape": "sphere", "radius": 5, "segments": 12, "rings": 6, "transform": {"translate": [12, 12, -4]},
+         "color": [1, 0.3, 0.2], "opacity": 0.5, "lit": false}]})";
+}
+
+// An image's alpha-weighted centroid (x, y) and its total alpha: where the
+// renderers draw things, compared across them.
+inline std::array<double, 3> centroid(const golden::ImageF& img) {
+  double sx = 0, sy = 0, sa = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      const double a = img.pixel(x, y)[3];
+      sx += a * x;
+      sy += a * y;
+      sa += a;
+    }
+  return {sx / sa, sy / sa, sa};
 }
 
 using tb::ImageError;

@@ -76,6 +76,38 @@ TEST(SystemPerspective, ThroughTheHostInterfaceTlm) {
                sysc::render_through_host(par.host.regs, par.volume, tlm_config(4), {}).plane);
 }
 
+// Cube-5's polygons in perspective: the loosely timed frame composites
+// the golden polygon frame as render_fixed() does, directly at p = 1, 4, 5
+// and 8 (slab lines laid out for that p) and through the host interface
+// (POLY_WIDTH x POLY_HEIGHT: the perspective base plane with its margins).
+TEST(SystemPerspective, PolygonsInPerspectiveAtTlm) {
+  const std::string polygons = R"(, "polygons": [
+      {"shape": "box", "size": [18, 14, 10], "transform": {"translate": [10, 8, 6], "rotate": [10, 20, 0]},
+       "color": [0.2, 0.5, 1], "opacity": 0.3},
+      {"shape": "needle", "radius": 1, "length": 40, "transform": {"translate": [10, 8, 6], "rotate": [0, 80, 10]}},
+      {"shape": "sphere", "radius": 3, "segments": 12, "rings": 6, "transform": {"translate": [-6, 8, 6]},
+       "color": [1, 0.3, 0.2], "opacity": 0.5}]})";
+  for (const char* eye : {kEyes[0], kEyes[3]}) {
+    std::string json = scene(eye);
+    json.insert(json.rfind('}'), polygons.substr(0, polygons.size() - 1));
+    test::Setup s = setup(json);
+    ASSERT_TRUE(s.host.regs.perspective);
+    ASSERT_FALSE(s.meshes.empty());
+    for (int p : {1, 4, 5, 8}) {
+      SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p));
+      s.scene.pipelines = p;
+      const golden::PolygonFrame frame = golden::rasterise_polygons(s.scene, s.meshes, s.host);
+      EXPECT_GT(frame.counts.in_slabs, 0u);
+      golden::FixedOptions opt;
+      opt.polygons = &frame;
+      const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, opt);
+      expect_plane(want, sysc::run_frame(s.host.regs, s.volume, tlm_config(p), {}, &frame).plane);
+      if (p == 4 && sysc::host_interface_available(4))
+        expect_plane(want, sysc::render_through_host(s.host.regs, s.volume, tlm_config(4), {}, nullptr, &frame).plane);
+    }
+  }
+}
+
 TEST(SystemPerspective, ClockedAndRtlLevelsRefusePerspective) {
   const test::Setup s = setup(scene(kEyes[0]));
   sysc::SystemConfig clocked = tlm_config(4);
