@@ -59,8 +59,16 @@ Registers block_registers(const Registers& whole, const Block& b, const std::str
     const int64_t pos = dda_position(start, step, kb);
     return pos - ((pos >> p.dda_frac_bits) << p.dda_frac_bits);
   };
-  r.x_start = restart(whole.x_start, whole.x_step);
-  r.y_start = restart(whole.y_start, whole.y_step);
+  if (whole.perspective) {
+    // The volume's rays, indices kept: ray 0 and the spacing at slice kb,
+    // positions from the block's origin.
+    r.x_start = dda_position(whole.x_start, whole.x_step, kb) - (int64_t{b.store_lo[0]} << p.dda_frac_bits);
+    r.y_start = dda_position(whole.y_start, whole.y_step, kb) - (int64_t{b.store_lo[1]} << p.dda_frac_bits);
+    r.scale_start = whole.ray_spacing(kb);
+  } else {
+    r.x_start = restart(whole.x_start, whole.x_step);
+    r.y_start = restart(whole.y_start, whole.y_step);
+  }
   if (whole.crop_enabled)
     for (int i = 0; i < 3; ++i) r.crop.slab[i] = shift_slab(whole.crop.slab[i], b.store_lo[i]);
   if (whole.cut_enabled) {
@@ -96,8 +104,11 @@ BlockPlan plan_blocks(const Registers& whole, const std::array<int, 3>& object_d
   BlockPlan plan;
   plan.counts = counts;
   plan.whole = whole;
-  // What the core's samples read beyond the core (golden/blocks.hpp).
-  const int before = whole.gradient ? 1 : 0, after = whole.gradient ? 2 : 1;
+  // What the core's samples read beyond the core (golden/blocks.hpp), along
+  // x and y (z is the parallel one's in perspective too).
+  const int z_before = whole.gradient ? 1 : 0, z_after = whole.gradient ? 2 : 1;
+  const int before = !whole.perspective ? z_before : whole.gradient ? 4 : 1;
+  const int after = !whole.perspective ? z_after : whole.gradient ? 5 : 2;
   std::array<int, 3> pcount{};
   for (int i = 0; i < 3; ++i) pcount[i] = counts[static_cast<size_t>(whole.perm[i])];
   const int K = whole.sample_slices();
@@ -114,22 +125,50 @@ BlockPlan plan_blocks(const Registers& whole, const std::array<int, 3>& object_d
           const auto o = piece(n, c, flip ? c - 1 - b.cell[i] : b.cell[i]);
           b.core_lo[i] = flip ? n - o[1] : o[0];
           b.core_hi[i] = flip ? n - o[0] : o[1];
-          b.store_lo[i] = std::max(b.core_lo[i] - before, 0);
-          b.store_hi[i] = std::min(b.core_hi[i] + after, n);
+          b.store_lo[i] = std::max(b.core_lo[i] - (i == 2 ? z_before : before), 0);
+          b.store_hi[i] = std::min(b.core_hi[i] + (i == 2 ? z_after : after), n);
           b.object_lo[a] = flip ? n - b.store_hi[i] : b.store_lo[i];
           b.object_dim[a] = b.store_hi[i] - b.store_lo[i];
         }
         b.regs = block_registers(whole, b, what);
-        const int k_end = b.store_hi[2] * whole.supersampling - 1;
-        b.u0 = b.store_lo[0] + ix_last - whole.x_offset(k_end).integer;
-        b.v0 = b.store_lo[1] + iy_last - whole.y_offset(k_end).integer;
+        if (whole.perspective) {  // the same ray indices: origins apart by the rays before each's first
+          b.u0 = whole.base_origin_x() - b.regs.base_origin_x();
+          b.v0 = whole.base_origin_y() - b.regs.base_origin_y();
+        } else {
+          const int k_end = b.store_hi[2] * whole.supersampling - 1;
+          b.u0 = b.store_lo[0] + ix_last - whole.x_offset(k_end).integer;
+          b.v0 = b.store_lo[1] + iy_last - whole.y_offset(k_end).integer;
+        }
         if (b.u0 < 0 || b.v0 < 0 || b.u0 + b.base_width() > whole.base_width() ||
             b.v0 + b.base_height() > whole.base_height())
           throw std::logic_error("plan_blocks: block " + std::to_string(b.index) +
                                  "'s base plane leaves the volume's");
         plan.blocks.push_back(std::move(b));
       }
+  for (int q = 0; q < 4; ++q) {
+    // Lexicographic by (z, ±y, ±x): front to back for a ray monotonic in
+    // each coordinate, x and y in the quadrant's directions.
+    const int sx = q & 1 ? -1 : 1, sy = q & 2 ? -1 : 1;
+    auto key = [&](int i) {
+      const std::array<int, 3>& c = plan.blocks[static_cast<size_t>(i)].cell;
+      return std::array<int, 3>{c[2], sy * c[1], sx * c[0]};
+    };
+    std::vector<int>& order = plan.order[static_cast<size_t>(q)];
+    for (int i = 0; i < static_cast<int>(plan.blocks.size()); ++i) order.push_back(i);
+    if (whole.perspective) std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  }
   return plan;
+}
+
+const std::vector<int>& BlockPlan::order_at(int u, int v) const {
+  if (!whole.perspective) return order[0];
+  // Ray (u - origin)'s step per slice along x: X_STEP + ray·SCALE_STEP.
+  const auto backwards = [&](int pixel, int origin, int64_t step) {
+    return static_cast<__int128>(step) + static_cast<__int128>(pixel - origin) * whole.scale_step < 0;
+  };
+  const int q = (backwards(u, whole.base_origin_x(), whole.x_step) ? 1 : 0) |
+                (backwards(v, whole.base_origin_y(), whole.y_step) ? 2 : 0);
+  return order[static_cast<size_t>(q)];
 }
 
 Volume block_volume(const Volume& vol, const Block& b) {
@@ -173,10 +212,12 @@ BasePlane compose_blocks(const BlockPlan& plan, const std::vector<const BasePlan
   std::vector<RayAcc> px(n);
   for (int v = 0; v < out.height; ++v)
     for (int u = 0; u < out.width; ++u) {
+      const std::vector<int>& order = plan.order_at(u, v);
       for (size_t i = 0; i < n; ++i) {
-        const Block& b = plan.blocks[i];
+        const size_t k = static_cast<size_t>(order[i]);
+        const Block& b = plan.blocks[k];
         const int bu = u - b.u0, bv = v - b.v0;
-        const BasePlane& part = *partials[i];
+        const BasePlane& part = *partials[k];
         px[i] = bu >= 0 && bv >= 0 && bu < part.width && bv < part.height
                     ? part.acc[static_cast<size_t>(bv) * part.width + bu]
                     : RayAcc{};

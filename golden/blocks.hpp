@@ -31,6 +31,18 @@
 //   coordinates, so the blocks sorted by permuted block coordinate z, then
 //   y, then x, are front to back for every ray (the order bela's object
 //   space processors hand over their images, "most parallel" slices first).
+// - Perspective (Cube-4 §3): the same, on the volume's rays from the eye.
+//   A block's registers keep the volume's ray indices (ray 0's position and
+//   the spacing moved to the block's first slice and origin, so SCALE_START
+//   is that slice's spacing, not one), and its border is wider laterally:
+//   a core sample's box filter reads one voxel before and two after its
+//   cell, and its gradient's neighbouring rays, up to 3 voxels away, as far
+//   again: 4 before and 5 after. Rays still advance towards +z, but towards
+//   -x (-y) on the eye's one side, so the order is per ray: by z, then y
+//   ascending or descending as the ray moves in y, then x likewise; the four
+//   orders of a frame are fixed (BlockPlan::order), and a ray's quadrant
+//   follows from its slope X_STEP + u·SCALE_STEP (which the composition
+//   network's leaf routing selects per pixel).
 // - Composition: per base-plane pixel, the blocks' ray accumulators
 //   (RayAcc, the accumulator domain, with the empty ray where a block has no
 //   such pixel) in visibility order through compose_tree() of
@@ -66,7 +78,12 @@ struct Block {
 struct BlockPlan {
   std::array<int, 3> counts{1, 1, 1};  // blocks along object x, y, z
   Registers whole;                     // the one-pass registers the blocks derive from
-  std::vector<Block> blocks;           // visibility order
+  std::vector<Block> blocks;           // visibility order (parallel projection; perspective: rays moving +x, +y)
+  // Front-to-back block indices for rays moving towards -x (bit 0) and -y
+  // (bit 1); order[0] is 0, 1, 2, ...; all four are that in parallel projection.
+  std::array<std::vector<int>, 4> order;
+  // The order the ray of the volume's base-plane pixel (u, v) crosses the blocks in.
+  const std::vector<int>& order_at(int u, int v) const;
 };
 
 // Smallest core along an axis: a thinner block would store more border than

@@ -1017,9 +1017,6 @@ Scene default_scene() {
 // What perspective does not render yet (docs/perspective.md, "Not yet").
 void check_perspective(const Scene& s) {
   if (!s.view.perspective()) return;
-  if (s.blocks != std::array<int, 3>{1, 1, 1})
-    fail_value(s.file, "blocks", show_array(s.blocks),
-               "cannot be rendered with \"view.projection\": \"perspective\" yet (one block only)");
   if (s.z_gradient != ZGradient::Abc)
     fail_value(s.file, "z_gradient", "\"voxel_differences\"",
                "is not built for \"view.projection\": \"perspective\" yet (its slices are scaled; use \"abc\")");

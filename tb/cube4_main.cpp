@@ -419,12 +419,10 @@ int run_render(const RenderArgs& args) {
   const bool blocked = partitioned(counts) && (system || a.model == "fixed");
   const std::string what_blocks = blocks_what(a, l.scene);
   std::optional<golden::BlockPlan> header_plan;
-  if (l.scene.view.perspective() && ((system && parse_levels(a.model) != parse_levels("tlm")) || a.model == "splat" ||
-                                     blocked))
+  if (l.scene.view.perspective() && ((system && parse_levels(a.model) != parse_levels("tlm")) || a.model == "splat"))
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
                      ": \"view.projection\": \"perspective\" renders with --model fixed, float, reference or tlm "
-                     "so far " + (blocked ? std::string("and in one block") : "(not " + a.model + ")") +
-                     "; the RTL follows (docs/perspective.md)");
+                     "so far (not " + a.model + "); the RTL follows (docs/perspective.md)");
   if (l.scene.z_gradient != golden::ZGradient::Abc && system && parse_levels(a.model) != parse_levels("tlm"))
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
                      ": \"z_gradient\": \"voxel_differences\" renders at --model tlm (loosely timed), fixed or "

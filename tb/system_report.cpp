@@ -77,7 +77,10 @@ nlohmann::json describe_blocks(const golden::BlockPlan& plan) {
                       {"base_plane_origin", {b.u0, b.v0}}});
   return {{"counts", plan.counts},
           {"machines", plan.blocks.size()},
-          {"order", "front to back: permuted block z, then y, then x"},
+          {"order", plan.whole.perspective
+                        ? "front to back per ray: permuted block z, then y and x each ascending or descending as "
+                          "the ray moves (four orders, by the ray's quadrant about the eye)"
+                        : "front to back: permuted block z, then y, then x"},
           {"per_block", blocks}};
 }
 

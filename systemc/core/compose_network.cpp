@@ -128,12 +128,17 @@ struct NetworkRun {
     pixels = static_cast<uint64_t>(plane.width) * plane.height;
   }
 
-  // Block i's partial pixel at pixel index `at` of the volume's base plane.
+  // Leaf i's pixel at pixel index `at` of the volume's base plane: the
+  // partial pixel there of the i-th block in the ray's visibility order (in
+  // perspective the leaves' routing from the machines changes with the ray's
+  // quadrant, BlockPlan::order_at(); in parallel projection leaf i is block i).
   golden::RayAcc leaf(int i, uint64_t at) const {
-    const golden::Block& b = plan.blocks[static_cast<size_t>(i)];
-    const golden::BasePlane& part = *partials[static_cast<size_t>(i)];
-    const int u = static_cast<int>(at % static_cast<uint64_t>(plane.width)) - b.u0;
-    const int v = static_cast<int>(at / static_cast<uint64_t>(plane.width)) - b.v0;
+    const int pu = static_cast<int>(at % static_cast<uint64_t>(plane.width));
+    const int pv = static_cast<int>(at / static_cast<uint64_t>(plane.width));
+    const size_t k = static_cast<size_t>(plan.order_at(pu, pv)[static_cast<size_t>(i)]);
+    const golden::Block& b = plan.blocks[k];
+    const golden::BasePlane& part = *partials[k];
+    const int u = pu - b.u0, v = pv - b.v0;
     if (u < 0 || v < 0 || u >= part.width || v >= part.height) return {};
     return part.acc[static_cast<size_t>(v) * part.width + u];
   }

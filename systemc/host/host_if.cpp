@@ -335,14 +335,15 @@ HostInterface::Outcome HostInterface::start_frame() {
     if (r.dim[i] != vol[r.perm[i]]) return fail(ErrorCode::ViewMismatch);
   // The pixel memory holds BASE_MAX x BASE_MAX pixels.
   const int f = r.p.dda_frac_bits;
-  // Perspective: rays one voxel apart on the first slice and at most the box
-  // filter's 3 on the last (golden/units/dda_perspective.hpp), or nothing
-  // below can divide by the spacing.
+  // Perspective: rays at least one voxel apart on the first slice (one for
+  // a whole volume, more for a block starting deeper: golden/blocks.hpp) and
+  // at most the box filter's 3 on the last (golden/units/dda_perspective.hpp),
+  // or nothing below can divide by the spacing.
   if (r.perspective) {
     const int64_t one = int64_t{1} << f;
-    if (r.scale_start != one)
+    if (r.scale_start < one || r.scale_start > 3 * one)
       return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of("SCALE_START")};
-    if (r.scale_step < 0 || __int128{r.scale_step} * (r.sample_slices() - 1) > 2 * one)
+    if (r.scale_step < 0 || r.scale_start + __int128{r.scale_step} * (r.sample_slices() - 1) > 3 * one)
       return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of("SCALE_STEP")};
   }
   // Parallel: the volume's columns and the rays' last offset; perspective:

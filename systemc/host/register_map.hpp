@@ -300,10 +300,12 @@ inline constexpr Register kListed[] = {
     // Perspective: the rays' spacing per sample slice (golden Registers::ray_spacing()).
     {"SCALE_START", 0x150, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width,
      CUBE4_REG_FIELD(scale_start), "cube4_persp_slice.scale_start_i (not in the system yet)",
-     "perspective: the rays' spacing on the first sample slice, `dda_frac_bits` fraction (one)"},
+     "perspective: the rays' spacing on the first sample slice, `dda_frac_bits` fraction (one for a whole volume, "
+     "that slice's spacing for a block: golden/blocks.hpp); START refuses it below one or above three"},
     {"SCALE_STEP", 0x158, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width,
      CUBE4_REG_FIELD(scale_step), "cube4_persp_slice.scale_step_i (not in the system yet)",
-     "perspective: the spacing's growth per sample slice"},
+     "perspective: the spacing's growth per sample slice; START refuses it negative or taking the last slice's "
+     "spacing above three (the box filter's reach)"},
 
     // ---- Cropping.
     {"CROP_X_LO", 0x180, Block::Cropping, Access::RW, 1, bits(golden::kPositionBits), Sign::Unsigned, Rule::Width,

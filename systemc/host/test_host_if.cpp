@@ -1174,7 +1174,7 @@ std::vector<ErrorCase> error_cases() {
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::CutFalloffNegative, rm::kCtrl},
       // Perspective's spacing is divided by (the rays' positions and the box
       // filter): refused before anything divides by zero or past the box.
-      {"START in perspective with SCALE_START not one",
+      {"START in perspective with SCALE_START below one",
        [](Env& e) { set_volume_and_view(e, {10, 10, 10});
                     ASSERT_EQ(write(e.host, rm::kMode, {rm::kModePerspective}), tlm::TLM_OK_RESPONSE); },
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::FieldRange, rm::address_of("SCALE_START")},

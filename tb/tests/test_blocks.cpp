@@ -244,3 +244,104 @@ TEST(ComposeNetwork, PartialImagesThatDoNotFitThePlanAreRefused) {
   EXPECT_THROW(sysc::run_network(plan, {&one}, {}), std::invalid_argument);
   EXPECT_THROW(sysc::run_network(plan, {&one, &pixels_only}, {}), std::invalid_argument);
 }
+
+// ---- perspective (golden/blocks.hpp, "Perspective") ----
+
+namespace {
+
+// Eyes in front of each face of the 23 x 19 x 17 volumes, a little off its
+// middle. The view's flips put the eye on the low side of the middle (most
+// rays move towards +x and +y); the rays between the eye and a block
+// boundary below it move the other way and cross it: every quadrant's block
+// order runs.
+const char* const kEyes[6] = {"[13, 11, -22]", "[13, 11, 40]", "[-26, 11, 10]", "[50, 11, 10]", "[13, -24, 10]", "[13, 44, 10]"};
+// As near as the box filter allows (the last slice's rays almost 3 voxels
+// apart): the widest reach of a core sample's reads.
+const char* const kNearEyes[3] = {"[13, 11, -8.6]", "[-11.6, 11, 10]", "[13, 28, 10]"};
+std::string eye_view(const char* eye) {
+  return std::string(R"("view": {"projection": "perspective", "fov": 50, "eye": )") + eye + R"(, "up": [1, 1, 1]})";
+}
+
+}  // namespace
+
+TEST(BlocksPerspective, OneBlockIsTheOnePassRender) {
+  const auto s = test::setup(sphere_scene(eye_view(kEyes[0]), ""));
+  ASSERT_TRUE(s.host.regs.perspective);
+  const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, {1, 1, 1}, "--blocks");
+  EXPECT_EQ(plan.blocks[0].regs.scale_start, s.host.regs.scale_start);
+  EXPECT_EQ(plan.blocks[0].u0, 0);
+  EXPECT_EQ(partitioned(s, {1, 1, 1}).rgba, golden::render_fixed(s.volume, s.host.regs).rgba);
+}
+
+// The blocks sample the volume's rays at the volume's positions (a block
+// deeper in starts at a wider spacing), read every voxel their core's
+// samples and gradients read (the wider lateral border), and are merged in
+// each ray's own order: MIP and MinIP equal the one-pass image exactly.
+TEST(BlocksPerspective, MipAndMinIpEqualOnePassFromEveryFace) {
+  for (const char* blend : {"mip", "minip"})
+    for (const char* shading : {R"(, "shading": false)", ""})
+      for (const char* eye : {kEyes[0], kEyes[1], kEyes[2], kEyes[3], kEyes[4], kEyes[5], kNearEyes[0], kNearEyes[1],
+                              kNearEyes[2]}) {
+        const auto s = test::setup(noise_scene(eye_view(eye), std::string(R"(, "blend": ")") + blend + "\"" + shading));
+        ASSERT_TRUE(s.host.regs.perspective);
+        const golden::BasePlane one = golden::render_fixed(s.volume, s.host.regs);
+        for (const std::array<int, 3>& counts : {std::array<int, 3>{2, 2, 2}, {3, 1, 2}, {1, 4, 1}}) {
+          const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, counts, "--blocks");
+          for (const golden::Block& b : plan.blocks) ASSERT_GE(b.regs.scale_start, s.host.regs.scale_start);
+          ASSERT_EQ(golden::render_blocks_fixed(s.volume, plan, {}).rgba, one.rgba)
+              << blend << shading << " eye " << eye << " blocks " << counts[0] << "x" << counts[1] << "x" << counts[2];
+        }
+      }
+}
+
+TEST(BlocksPerspective, CompositeStaysWithinTheDerivedBoundOfOnePass) {
+  for (const char* extra : {"", R"(, "supersampling": 2, "cut_plane": {"normal": [1, -1, 2], "dmin": 4, "dmax": 14})"})
+    for (const char* eye : kEyes) {
+      const auto s = test::setup(sphere_scene(eye_view(eye), extra));
+      const golden::BasePlane one = golden::render_fixed(s.volume, s.host.regs);
+      for (const std::array<int, 3>& counts : {std::array<int, 3>{2, 2, 2}, {4, 1, 3}}) {
+        const int bound = partition_bound(s.host.regs.p, s.host.regs.sample_slices(), counts[0] * counts[1] * counts[2]);
+        EXPECT_LE(max_difference(partitioned(s, counts), one), bound) << extra << " eye " << eye;
+      }
+    }
+}
+
+// One order for every ray, the parallel projection's, merges the blocks of
+// the rays moving towards -x or -y back to front: far from the one pass.
+TEST(BlocksPerspective, EachRayNeedsItsOwnOrder) {
+  const auto s = test::setup(noise_scene(eye_view(kEyes[0]), R"(, "shading": false)"));
+  const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, {4, 4, 1}, "--blocks");
+  ASSERT_NE(plan.order[1], plan.order[0]);
+  ASSERT_NE(plan.order[2], plan.order[0]);
+  golden::BlockPlan one_order = plan;
+  one_order.order.fill(plan.order[0]);
+  std::vector<golden::BasePlane> parts;
+  for (const golden::Block& b : plan.blocks)
+    parts.push_back(golden::render_block_fixed(golden::block_volume(s.volume, b), b, {}));
+  std::vector<const golden::BasePlane*> ptrs;
+  for (const auto& p : parts) ptrs.push_back(&p);
+  const golden::BasePlane one = golden::render_fixed(s.volume, s.host.regs);
+  EXPECT_LE(max_difference(golden::compose_blocks(plan, ptrs), one), partition_bound(s.host.regs.p, 17, 16));
+  EXPECT_GT(max_difference(golden::compose_blocks(one_order, ptrs), one), 1000);
+}
+
+// The network's leaves take the blocks in each pixel's order: clocked TLM
+// equals golden for a perspective plan too.
+TEST(BlocksPerspective, ClockedNetworkRoutesEachPixelsOrder) {
+  const auto s = test::setup(noise_scene(eye_view(kEyes[3]), ""));
+  for (const std::array<int, 3>& counts : {std::array<int, 3>{2, 2, 1}, {3, 2, 1}}) {
+    const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, counts, "test");
+    std::vector<golden::BasePlane> parts;
+    for (const golden::Block& b : plan.blocks)
+      parts.push_back(golden::render_block_fixed(golden::block_volume(s.volume, b), b, {}));
+    std::vector<const golden::BasePlane*> ptrs;
+    for (const auto& p : parts) ptrs.push_back(&p);
+    sysc::NetworkConfig net;
+    net.cycle_level = true;
+    net.kernel = sysc::Kernel::PlainLoop;
+    net.check = true;
+    const sysc::NetworkResult r = sysc::run_network(plan, ptrs, net);
+    EXPECT_FALSE(r.mismatch) << *r.mismatch;
+    EXPECT_EQ(r.plane.rgba, golden::compose_blocks(plan, ptrs).rgba);
+  }
+}

@@ -12,6 +12,7 @@
 #include "systemc/core/machine.hpp"
 #include "systemc/core/partitioned.hpp"
 #include "tb/tests/system_support.hpp"
+#include "tb/tests/test_support.hpp"
 
 using namespace cube4;
 using test::Case;
@@ -148,4 +149,33 @@ TEST(SystemBlocks, VolumeBeyondTheRtlLimitRendersAsBlocks) {
   if (!sysc::rtl_available(4)) GTEST_SKIP() << "no RTL build";
   EXPECT_THROW(sysc::check_system_limits(regs, cfg), std::invalid_argument);
   run_partitioned(c, {2, 1, 1}, 4, kRtl, Level::Rtl);
+}
+
+// Perspective (golden/blocks.hpp, "Perspective"): loosely timed machines,
+// each programmed with its block's registers (SCALE_START the spacing of
+// its first slice) through the host interface, and the network's leaves
+// routed per pixel by the ray's quadrant, clocked at TLM and at RTL.
+TEST(SystemBlocks, PerspectiveBlocksWithTheNetworkClockedAndAtRtl) {
+  if (!sysc::host_interface_available(4)) GTEST_SKIP() << "the host interface of this process is built for another p";
+  const test::Setup s = test::setup(R"({"volume": {"synthetic": "noise", "size": [19, 17, 16], "seed": 5},
+      "shading": true, "output": {"width": 48, "height": 48},
+      "view": {"projection": "perspective", "fov": 50, "eye": [11, 10, -9], "up": [0, 1, 0]}})");
+  ASSERT_TRUE(s.host.regs.perspective);
+  const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, {3, 2, 2}, "test");
+  const golden::BasePlane want = golden::render_blocks_fixed(s.volume, plan, golden::FixedOptions{});
+  sysc::SystemConfig cfg;
+  cfg.p = 4;
+  cfg.levels = kTlm;
+  cfg.check = true;
+  for (Level net_level : {Level::Tlm, Level::Rtl}) {
+    if (net_level == Level::Rtl && !sysc::rtl_available(4)) continue;
+    SCOPED_TRACE(net_level == Level::Rtl ? "network at RTL" : "network at clocked TLM");
+    sysc::NetworkConfig net;
+    net.level = net_level;
+    net.cycle_level = true;
+    net.check = true;
+    const sysc::PartitionedResult res = sysc::render_partitioned(plan, s.volume, cfg, net);
+    EXPECT_FALSE(res.mismatch) << *res.mismatch;
+    EXPECT_EQ(res.network.plane.rgba, want.rgba) << "the composed base plane differs from golden";
+  }
 }
