@@ -63,6 +63,18 @@ int partition_bound(const golden::Precision& p, int samples, int blocks) {
   return static_cast<int>(std::ceil(acc / std::ldexp(1.0, p.acc_guard_bits))) + 1;
 }
 
+// Every block's partial image (golden), and pointers to them in plan order.
+struct Partials {
+  std::vector<golden::BasePlane> planes;
+  std::vector<const golden::BasePlane*> ptrs;
+};
+Partials render_partials(const golden::Volume& vol, const golden::BlockPlan& plan) {
+  Partials p;
+  for (const golden::Block& b : plan.blocks) p.planes.push_back(golden::render_block_fixed(golden::block_volume(vol, b), b, {}));
+  for (const auto& x : p.planes) p.ptrs.push_back(&x);
+  return p;
+}
+
 }  // namespace
 
 TEST(Blocks, OneBlockIsTheOnePassRender) {
@@ -175,11 +187,8 @@ TEST(Blocks, ReversedOrderIsFarFromOnePass) {
   const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, {1, 1, 2}, "--blocks");
   golden::BlockPlan reversed = plan;
   std::reverse(reversed.blocks.begin(), reversed.blocks.end());
-  std::vector<golden::BasePlane> parts;
-  for (const golden::Block& b : reversed.blocks)
-    parts.push_back(golden::render_block_fixed(golden::block_volume(s.volume, b), b, {}));
-  std::vector<const golden::BasePlane*> ptrs;
-  for (const auto& p : parts) ptrs.push_back(&p);
+  const Partials parts = render_partials(s.volume, reversed);
+  const std::vector<const golden::BasePlane*>& ptrs = parts.ptrs;
   const golden::BasePlane one = golden::render_fixed(s.volume, s.host.regs);
   EXPECT_LE(max_difference(golden::compose_blocks(plan, {ptrs.rbegin(), ptrs.rend()}), one),
             partition_bound(s.host.regs.p, s.host.regs.sample_slices(), 2));
@@ -213,11 +222,8 @@ TEST(ComposeNetwork, ClockedTlmEqualsGoldenForEveryTreeShape) {
   for (sysc::Kernel kernel : {sysc::Kernel::PlainLoop, sysc::Kernel::SystemC})
     for (const auto& counts : shapes) {
       const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, counts, "test");
-      std::vector<golden::BasePlane> parts;
-      for (const golden::Block& b : plan.blocks)
-        parts.push_back(golden::render_block_fixed(golden::block_volume(s.volume, b), b, {}));
-      std::vector<const golden::BasePlane*> ptrs;
-      for (const auto& p : parts) ptrs.push_back(&p);
+      const Partials parts = render_partials(s.volume, plan);
+      const std::vector<const golden::BasePlane*>& ptrs = parts.ptrs;
       sysc::NetworkConfig net;
       net.cycle_level = true;
       net.kernel = kernel;
@@ -315,11 +321,8 @@ TEST(BlocksPerspective, EachRayNeedsItsOwnOrder) {
   ASSERT_NE(plan.order[2], plan.order[0]);
   golden::BlockPlan one_order = plan;
   one_order.order.fill(plan.order[0]);
-  std::vector<golden::BasePlane> parts;
-  for (const golden::Block& b : plan.blocks)
-    parts.push_back(golden::render_block_fixed(golden::block_volume(s.volume, b), b, {}));
-  std::vector<const golden::BasePlane*> ptrs;
-  for (const auto& p : parts) ptrs.push_back(&p);
+  const Partials parts = render_partials(s.volume, plan);
+  const std::vector<const golden::BasePlane*>& ptrs = parts.ptrs;
   const golden::BasePlane one = golden::render_fixed(s.volume, s.host.regs);
   EXPECT_LE(max_difference(golden::compose_blocks(plan, ptrs), one), partition_bound(s.host.regs.p, 17, 16));
   EXPECT_GT(max_difference(golden::compose_blocks(one_order, ptrs), one), 1000);
@@ -331,11 +334,8 @@ TEST(BlocksPerspective, ClockedNetworkRoutesEachPixelsOrder) {
   const auto s = test::setup(noise_scene(eye_view(kEyes[3]), ""));
   for (const std::array<int, 3>& counts : {std::array<int, 3>{2, 2, 1}, {3, 2, 1}}) {
     const golden::BlockPlan plan = golden::plan_blocks(s.host.regs, s.volume.dim, counts, "test");
-    std::vector<golden::BasePlane> parts;
-    for (const golden::Block& b : plan.blocks)
-      parts.push_back(golden::render_block_fixed(golden::block_volume(s.volume, b), b, {}));
-    std::vector<const golden::BasePlane*> ptrs;
-    for (const auto& p : parts) ptrs.push_back(&p);
+    const Partials parts = render_partials(s.volume, plan);
+    const std::vector<const golden::BasePlane*>& ptrs = parts.ptrs;
     sysc::NetworkConfig net;
     net.cycle_level = true;
     net.kernel = sysc::Kernel::PlainLoop;
