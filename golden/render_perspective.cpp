@@ -4,20 +4,24 @@
 // (a rectangle of ray indices, perspective_slice()) are sampled by the box
 // filter, their gradients taken from the neighbouring rays and the samples
 // realigned straight behind and ahead, then shaded and composited with the
-// parallel pipeline's unit functions. One thread: the algorithm, not speed.
+// parallel pipeline's unit functions, on a team of threads each taking
+// every T-th row of rays.
 // With polygons (golden/polygon_frame.hpp) a ray starts as its front pixel,
 // each sample passes the Z test and the slice's slab pixel of the ray (its
 // rank among the slice's rays, golden/polygons.hpp) follows it, and the
 // back pixel goes behind the ray when the frame ends: the parallel
 // compositor's steps (SliceCompositor) on the perspective rays.
 #include <algorithm>
+#include <exception>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "golden/perspective.hpp"
 #include "golden/permuted_volume.hpp"
 #include "golden/slice_steps.hpp"
+#include "golden/team_barrier.hpp"
 
 namespace cube4::golden {
 namespace {
@@ -54,61 +58,81 @@ class Traversal {
     const bool may_skip = r_.blend == BlendMode::Composite && opt_.probe == nullptr;
     // Rays stop as in the parallel renderer (RayStop): at a settled pixel,
     // or at full α when the accumulators are asked for.
-    const RayStopRule stop(!may_skip ? RayStop::never : opt_.accumulators ? RayStop::full_alpha : RayStop::settled_pixel,
-                           r_.blend, r_.p);
-    std::vector<uint8_t> stopped(rays_.size(), 0);
-    const PolygonFrame* poly = opt_.polygons;
-    if (poly) start_polygons(*poly, stop, stopped);
-    sample_slice(0, current_, tag_);
-    if (r_.gradient) sample_slice(1, ahead_, next_tag_);
-    uint64_t count = 0;
-    for (int k = 0; k < K_; ++k) {
-      const PerspectiveSlice& s = current_.slice;
-      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
-        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
-          ++count;
-          const size_t i = current_.index(u, v);
-          if (stopped[i] || (poly && !sample_before_z(k, poly->z[i]))) continue;
-          RayAcc& ray = rays_[i];
-          const uint32_t centre = current_.at(u, v), tag = tagged_ ? tag_.at(u, v) : 0;
-          if (may_skip && classify(r_.classification, tag, centre, r_.p).a == 0) continue;
-          const Gradient g = r_.gradient ? gradient(u, v) : Gradient{};
-          const SamplePlace place = sample_place(r_, s, u, v);
-          SliceControl c;
-          c.k = k;
-          c.z_voxel = s.z_voxel;
-          c.wz = s.wz;
-          c.wx = place.wx;
-          c.wy = place.wy;
-          const ShadedSample out = crop_and_cut(r_, c, place.x, place.y,
-                                                shade_classified(r_, centre, tag, g, faces_.get()));
-          if (opt_.probe) {
-            if (tagged_) opt_.probe->tagged(place.x, place.y, c, tag);
-            opt_.probe->sample(place.x, place.y, c, centre, g);
-            opt_.probe->shaded(place.x, place.y, c, out);
-          }
-          ray = blend(r_.blend, ray, out, r_.p);
-          if (stop.active() && stop.can_stop(ray)) stopped[i] = 1;
-        }
-      if (poly) composite_slab(poly->slabs[static_cast<size_t>(k)], s, stop, stopped);
-      if (r_.gradient) {
-        std::swap(behind_, current_);
-        std::swap(current_, ahead_);
-        std::swap(tag_, next_tag_);
-        sample_slice(k + 2, ahead_, next_tag_);
-      } else if (k + 1 < K_) {
-        sample_slice(k + 1, current_, tag_);
-      }
-      if (opt_.progress) opt_.progress(static_cast<double>(k + 1) / K_);
+    stop_ = RayStopRule(!may_skip ? RayStop::never : opt_.accumulators ? RayStop::full_alpha : RayStop::settled_pixel,
+                        r_.blend, r_.p);
+    may_skip_ = may_skip;
+    stopped_.assign(rays_.size(), 0);
+    poly_ = opt_.polygons;
+    if (poly_) start_polygons(*poly_);
+    prepare_slice(0, current_, tag_);
+    sample_rows(current_, tag_, 0, 1);
+    if (r_.gradient) {
+      prepare_slice(1, ahead_, next_tag_);
+      sample_rows(ahead_, next_tag_, 0, 1);
     }
+    // A team of threads, each taking every T-th row of rays (a ray's work
+    // is its own: the image is the same for any T). Per slice: shade and
+    // composite the rows' samples and slab pixels; then, once all have
+    // (the barrier's completion, on one thread), move the planes on and
+    // load the next slice's voxels; then sample the rows of the next slice.
+    const int T = opt_.probe ? 1 : std::max(1, opt_.threads > 0 ? opt_.threads : default_threads());
+    std::vector<uint64_t> counts(static_cast<size_t>(T), 0);
+    std::vector<std::exception_ptr> failed(static_cast<size_t>(T));
+    int k = 0;
+    auto advance = [&] {
+      try {
+        if (r_.gradient) {
+          std::swap(behind_, current_);
+          std::swap(current_, ahead_);
+          std::swap(tag_, next_tag_);
+          prepare_slice(k + 2, ahead_, next_tag_);
+        } else {
+          prepare_slice(k + 1, current_, tag_);
+        }
+      } catch (...) {
+        failed[0] = std::current_exception();
+      }
+    };
+    TeamBarrier after_shading(T, advance);
+    TeamBarrier after_sampling(T);
+    auto team = [&](int t) {
+      for (int slice = 0; slice < K_; ++slice) {
+        try {
+          counts[static_cast<size_t>(t)] += shade_rows(slice, t, T);
+        } catch (...) {
+          failed[static_cast<size_t>(t)] = std::current_exception();
+        }
+        after_shading.arrive_and_wait();
+        try {
+          if (r_.gradient) sample_rows(ahead_, next_tag_, t, T);
+          else sample_rows(current_, tag_, t, T);
+        } catch (...) {
+          failed[static_cast<size_t>(t)] = std::current_exception();
+        }
+        after_sampling.arrive_and_wait();
+        if (t == 0) {
+          ++k;
+          if (opt_.progress) opt_.progress(static_cast<double>(slice + 1) / K_);
+        }
+        // k moves on before the next completion reads it: every thread
+        // passes the next barrier only after thread 0 has.
+      }
+    };
+    std::vector<std::thread> workers;
+    for (int t = 1; t < T; ++t) workers.emplace_back(team, t);
+    team(0);
+    for (std::thread& w : workers) w.join();
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
     for (int y = 0; y < bp_.height; ++y)
       for (int x = 0; x < bp_.width; ++x) {
         const size_t i = static_cast<size_t>(y) * bp_.width + x;
-        write_pixel(bp_, x, y, poly ? leave_with_polygons(rays_[i], poly->back[i], r_.p) : pixel_of(rays_[i], r_.p));
+        write_pixel(bp_, x, y, poly_ ? leave_with_polygons(rays_[i], poly_->back[i], r_.p) : pixel_of(rays_[i], r_.p));
         if (!bp_.acc.empty()) bp_.acc[i] = rays_[i];
       }
     if (opt_.stats) {
-      opt_.stats->samples = count;
+      opt_.stats->samples = 0;
+      for (uint64_t c : counts) opt_.stats->samples += c;
       opt_.stats->slices = K_;
     }
   }
@@ -116,30 +140,64 @@ class Traversal {
  private:
   RayPlane plane() const { return RayPlane(bp_.width, bp_.height, ox_, oy_); }
 
-  void start_polygons(const PolygonFrame& poly, const RayStopRule& stop, std::vector<uint8_t>& stopped) {
+  // Slice k's samples of rows lo_y + t, lo_y + t + T, ...: shaded and
+  // composited, then the slab pixels behind them. Returns the samples seen.
+  uint64_t shade_rows(int k, int t, int T) {
+    const PerspectiveSlice& s = current_.slice;
+    uint64_t count = 0;
+    for (int64_t v = s.rays_y.lo + t; v < s.rays_y.hi; v += T) {
+      for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+        ++count;
+        const size_t i = current_.index(u, v);
+        if (stopped_[i] || (poly_ && !sample_before_z(k, poly_->z[i]))) continue;
+        RayAcc& ray = rays_[i];
+        const uint32_t centre = current_.at(u, v), tag = tagged_ ? tag_.at(u, v) : 0;
+        if (may_skip_ && classify(r_.classification, tag, centre, r_.p).a == 0) continue;
+        const Gradient g = r_.gradient ? gradient(u, v) : Gradient{};
+        const SamplePlace place = sample_place(r_, s, u, v);
+        SliceControl c;
+        c.k = k;
+        c.z_voxel = s.z_voxel;
+        c.wz = s.wz;
+        c.wx = place.wx;
+        c.wy = place.wy;
+        const ShadedSample out = crop_and_cut(r_, c, place.x, place.y,
+                                              shade_classified(r_, centre, tag, g, faces_.get()));
+        if (opt_.probe) {
+          if (tagged_) opt_.probe->tagged(place.x, place.y, c, tag);
+          opt_.probe->sample(place.x, place.y, c, centre, g);
+          opt_.probe->shaded(place.x, place.y, c, out);
+        }
+        ray = blend(r_.blend, ray, out, r_.p);
+        if (stop_.active() && stop_.can_stop(ray)) stopped_[i] = 1;
+      }
+      if (poly_) composite_slab(poly_->slabs[static_cast<size_t>(k)], s, static_cast<int>(v - s.rays_y.lo));
+    }
+    return count;
+  }
+
+  void start_polygons(const PolygonFrame& poly) {
     if (poly.width != bp_.width || poly.height != bp_.height || poly.front.size() != rays_.size() ||
         poly.back.size() != rays_.size() || poly.z.size() != rays_.size() ||
         poly.slabs.size() != static_cast<size_t>(K_) || r_.blend != BlendMode::Composite)
       throw std::logic_error("render_perspective: the polygon frame does not fit the registers' base plane and blend");
     for (size_t i = 0; i < rays_.size(); ++i) {
       rays_[i] = pixel_to_acc(poly.front[i], r_.p);
-      if (stop.active() && stop.can_stop(rays_[i])) stopped[i] = 1;
+      if (stop_.active() && stop_.can_stop(rays_[i])) stopped_[i] = 1;
     }
   }
 
-  // Slice s.k's slab behind its samples: slab pixel (x, y) is the slice's
-  // ray (rays_x.lo + x, rays_y.lo + y). Not on a stopped ray, whose pixel it
-  // cannot change (RayStopRule).
-  void composite_slab(const SlabImage& slab, const PerspectiveSlice& s, const RayStopRule& stop,
-                      std::vector<uint8_t>& stopped) {
+  // Line y of slice s.k's slab behind its samples: slab pixel (x, y) is the
+  // slice's ray (rays_x.lo + x, rays_y.lo + y). Not on a stopped ray, whose
+  // pixel it cannot change (RayStopRule).
+  void composite_slab(const SlabImage& slab, const PerspectiveSlice& s, int y) {
     if (slab.empty()) return;
-    for (int y = 0; y < s.rays_y.hi - s.rays_y.lo; ++y)
-      slab.for_each_pixel(y, [&](int x, const Pixel& px) {
-        const size_t i = current_.index(s.rays_x.lo + x, s.rays_y.lo + y);
-        if (stopped[i]) return;
-        rays_[i] = ray_over_pixel(rays_[i], px, r_.p);
-        if (stop.active() && stop.can_stop(rays_[i])) stopped[i] = 1;
-      });
+    slab.for_each_pixel(y, [&](int x, const Pixel& px) {
+      const size_t i = current_.index(s.rays_x.lo + x, s.rays_y.lo + y);
+      if (stopped_[i]) return;
+      rays_[i] = ray_over_pixel(rays_[i], px, r_.p);
+      if (stop_.active() && stop_.can_stop(rays_[i])) stopped_[i] = 1;
+    });
   }
 
   Gradient gradient(int64_t u, int64_t v) const {
@@ -152,8 +210,8 @@ class Traversal {
                                 s.lateral_reciprocal, r_.p);
   }
 
-  // Slice k's samples (and tags) of every ray that has one.
-  void sample_slice(int k, RayPlane& out, RayPlane& tags) {
+  // Slice k's constants into the planes, and its voxel slices loaded.
+  void prepare_slice(int k, RayPlane& out, RayPlane& tags) {
     out.valid = tags.valid = k >= 0 && k < K_;
     if (!out.valid) return;
     out.slice = tags.slice = perspective_slice(r_, k);
@@ -163,10 +221,17 @@ class Traversal {
       load_voxel_slice(pv_, s.z_voxel + 1, hi_);
       loaded_z_ = s.z_voxel;
     }
+  }
+
+  // The samples (and tags) of the prepared slice's rays in rows lo_y + t,
+  // lo_y + t + T, ...
+  void sample_rows(RayPlane& out, RayPlane& tags, int t, int T) {
+    if (!out.valid) return;
+    const PerspectiveSlice& s = out.slice;
     auto voxel = [&](int x, int y, int dz) { return (dz == 0 ? lo_ : hi_).at(x, y); };
     const int F = r_.p.dda_frac_bits;
     const int dz_tag = upper_corner(s.wz, r_.p.weight_bits);
-    for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+    for (int64_t v = s.rays_y.lo + t; v < s.rays_y.hi; v += T)
       for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
         out.v[out.index(u, v)] = perspective_sample(r_, s, u, v, voxel);
         if (tagged_)
@@ -188,6 +253,10 @@ class Traversal {
   RayPlane behind_, current_, ahead_, tag_, next_tag_;
   std::unique_ptr<FacePositionTable> faces_;
   int loaded_z_ = -1;
+  RayStopRule stop_{RayStop::never, BlendMode::Composite, Precision{}};
+  bool may_skip_ = false;
+  std::vector<uint8_t> stopped_;
+  const PolygonFrame* poly_ = nullptr;
 };
 
 }  // namespace

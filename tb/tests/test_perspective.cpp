@@ -3,6 +3,8 @@
 // lateral scale, the camera's checks, and the renderers against each other.
 #include <gtest/gtest.h>
 
+#include <thread>
+
 #include <cmath>
 #include <random>
 #include <string>
@@ -335,6 +337,45 @@ struct SeeEverySample : golden::SampleProbe {
   void sample(int, int, const golden::SliceControl&, uint32_t, const golden::Gradient&) override {}
 };
 }  // namespace
+
+// Threads take rows of rays; a ray's work is its own, so any number of them
+// gives the same base plane, accumulators and sample count: with stopping,
+// tags, supersampling and MIP.
+TEST(PerspectiveRender, ThreadsGiveTheSameFrame) {
+  const std::string tags = R"(, "precision": {"tag_bits": 1}, "tags": {"label": [{"tag": 1, "box": {"min": [0, 0, 0],
+      "max": [14, 25, 21]}}], "classes": [{"tag": 1, "color": [[0, 1, 0, 0], [1, 1, 0, 0]]}]})";
+  for (const std::string& extra : {std::string(), std::string(R"(, "supersampling": 2)"), std::string(R"(, "blend": "mip")"),
+                                   tags}) {
+    const auto s = test::setup(sphere(R"({"rotate": [20, 30, 0], "projection": "perspective", "fov": 45})",
+                                      R"(, "output": {"width": 64, "height": 64})" + extra, "[30, 26, 22]"));
+    golden::RenderStats one_stats;
+    golden::FixedOptions one;
+    one.accumulators = true;
+    one.stats = &one_stats;
+    const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, one);
+    EXPECT_GT(alpha_sum(want), 0) << extra;
+    for (int threads : {2, 3, 7}) {
+      golden::RenderStats stats;
+      golden::FixedOptions o = one;
+      o.threads = threads;
+      o.stats = &stats;
+      int progress_calls = 0;
+      double last = 0;
+      const std::thread::id caller = std::this_thread::get_id();
+      o.progress = [&](double f) {
+        ++progress_calls;
+        last = f;
+        EXPECT_EQ(std::this_thread::get_id(), caller) << "progress from the calling thread";
+      };
+      const golden::BasePlane got = golden::render_fixed(s.volume, s.host.regs, o);
+      EXPECT_EQ(got.rgba, want.rgba) << extra << ", " << threads << " threads";
+      EXPECT_EQ(got.acc, want.acc) << extra << ", " << threads << " threads";
+      EXPECT_EQ(stats.samples, one_stats.samples);
+      EXPECT_EQ(progress_calls, s.host.regs.sample_slices());
+      EXPECT_EQ(last, 1.0);
+    }
+  }
+}
 
 TEST(PerspectiveRender, StoppingRaysIsExact) {
   // A probe makes the renderer shade every sample of every ray; without one
