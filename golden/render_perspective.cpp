@@ -64,11 +64,12 @@ class Traversal {
     stopped_.assign(rays_.size(), 0);
     poly_ = opt_.polygons;
     if (poly_) start_polygons(*poly_);
-    prepare_slice(0, current_, tag_);
-    sample_rows(current_, tag_, 0, 1);
-    if (r_.gradient) {
-      prepare_slice(1, ahead_, next_tag_);
-      sample_rows(ahead_, next_tag_, 0, 1);
+    for (int first = 0; first < (r_.gradient ? 2 : 1); ++first) {
+      RayPlane& out = first == 0 ? current_ : ahead_;
+      RayPlane& tags = first == 0 ? tag_ : next_tag_;
+      const int z = prepare_slice(first, out, tags);
+      if (z >= 0) load_rows(z, 0, 1);
+      sample_rows(out, tags, 0, 1);
     }
     // A team of threads, each taking every T-th row of rays (a ray's work
     // is its own: the image is the same for any T). Per slice: shade and
@@ -79,36 +80,41 @@ class Traversal {
     std::vector<uint64_t> counts(static_cast<size_t>(T), 0);
     std::vector<std::exception_ptr> failed(static_cast<size_t>(T));
     int k = 0;
+    int load_z = -1;  // the voxel slices the next slice needs loaded, or -1
     auto advance = [&] {
       try {
         if (r_.gradient) {
           std::swap(behind_, current_);
           std::swap(current_, ahead_);
           std::swap(tag_, next_tag_);
-          prepare_slice(k + 2, ahead_, next_tag_);
+          load_z = prepare_slice(k + 2, ahead_, next_tag_);
         } else {
-          prepare_slice(k + 1, current_, tag_);
+          load_z = prepare_slice(k + 1, current_, tag_);
         }
       } catch (...) {
         failed[0] = std::current_exception();
       }
     };
-    TeamBarrier after_shading(T, advance);
-    TeamBarrier after_sampling(T);
+    TeamBarrier after_shading(T, advance), after_loading(T), after_sampling(T);
     auto team = [&](int t) {
-      for (int slice = 0; slice < K_; ++slice) {
+      auto guarded = [&](auto&& work) {
         try {
-          counts[static_cast<size_t>(t)] += shade_rows(slice, t, T);
+          work();
         } catch (...) {
           failed[static_cast<size_t>(t)] = std::current_exception();
         }
+      };
+      for (int slice = 0; slice < K_; ++slice) {
+        guarded([&] { counts[static_cast<size_t>(t)] += shade_rows(slice, t, T); });
         after_shading.arrive_and_wait();
-        try {
+        if (load_z >= 0) {
+          guarded([&] { load_rows(load_z, t, T); });
+          after_loading.arrive_and_wait();
+        }
+        guarded([&] {
           if (r_.gradient) sample_rows(ahead_, next_tag_, t, T);
           else sample_rows(current_, tag_, t, T);
-        } catch (...) {
-          failed[static_cast<size_t>(t)] = std::current_exception();
-        }
+        });
         after_sampling.arrive_and_wait();
         if (t == 0) {
           ++k;
@@ -210,16 +216,24 @@ class Traversal {
                                 s.lateral_reciprocal, r_.p);
   }
 
-  // Slice k's constants into the planes, and its voxel slices loaded.
-  void prepare_slice(int k, RayPlane& out, RayPlane& tags) {
+  // Slice k's constants into the planes. Returns the voxel slice z whose
+  // voxel slices z and z + 1 the samples need loaded first (load_rows), or
+  // -1 when they are loaded already or the slice has no samples.
+  int prepare_slice(int k, RayPlane& out, RayPlane& tags) {
     out.valid = tags.valid = k >= 0 && k < K_;
-    if (!out.valid) return;
+    if (!out.valid) return -1;
     out.slice = tags.slice = perspective_slice(r_, k);
-    const PerspectiveSlice& s = out.slice;
-    if (s.z_voxel != loaded_z_) {
-      load_voxel_slice(pv_, s.z_voxel, lo_);
-      load_voxel_slice(pv_, s.z_voxel + 1, hi_);
-      loaded_z_ = s.z_voxel;
+    if (out.slice.z_voxel == loaded_z_) return -1;
+    loaded_z_ = out.slice.z_voxel;
+    return loaded_z_;
+  }
+
+  // Beams t, t + T, ... of voxel slices z and z + 1 (a beam per pipeline:
+  // the permuted reads are strided, the costliest loads of the frame).
+  void load_rows(int z, int t, int T) {
+    for (int y = t; y < r_.dim[1]; y += T) {
+      pv_.load_beam(y, z, lo_.row(y));
+      pv_.load_beam(y, z + 1, hi_.row(y));
     }
   }
 
