@@ -18,7 +18,6 @@
 #include <thread>
 #include <vector>
 
-#include "golden/empty_space.hpp"
 #include "golden/perspective.hpp"
 #include "golden/permuted_volume.hpp"
 #include "golden/slice_steps.hpp"
@@ -50,7 +49,7 @@ constexpr int kBoxPad = 3;
 class Traversal {
  public:
   Traversal(const Volume& vol, const Registers& r, const FixedOptions& opt, BasePlane& bp)
-      : r_(r), opt_(opt), bp_(bp), vol_(vol), pv_(vol, r.perm, r.flip), K_(r.sample_slices()), tagged_(r.p.tag_bits > 0),
+      : r_(r), opt_(opt), bp_(bp), pv_(vol, r.perm, r.flip), K_(r.sample_slices()), tagged_(r.p.tag_bits > 0),
         ox_(r.base_origin_x()), oy_(r.base_origin_y()), rays_(static_cast<size_t>(bp.width) * bp.height),
         lo_(r.dim[0], r.dim[1], kBoxPad), hi_(lo_), behind_(plane()), current_(plane()), ahead_(plane()),
         tag_(plane()), next_tag_(plane()), faces_(make_face_table(r)) {}
@@ -62,7 +61,6 @@ class Traversal {
     stop_ = RayStopRule(!may_skip ? RayStop::never : opt_.accumulators ? RayStop::full_alpha : RayStop::settled_pixel,
                         r_.blend, r_.p);
     may_skip_ = may_skip;
-    if (may_skip && opt_.skip_empty) start_skipping();
     stopped_.assign(rays_.size(), 0);
     poly_ = opt_.polygons;
     if (poly_) start_polygons(*poly_);
@@ -227,72 +225,7 @@ class Traversal {
     out.slice = tags.slice = perspective_slice(r_, k);
     if (out.slice.z_voxel == loaded_z_) return -1;
     loaded_z_ = out.slice.z_voxel;
-    if (skipping_) build_near(loaded_z_);
     return loaded_z_;
-  }
-
-  // Empty-space skipping (golden/empty_space.hpp's argument, for the box
-  // filter). A box-filtered sample is a weighted mean of the voxels its box
-  // covers, so it is below the first value of non-zero α, and changes no
-  // ray, when all of them are. A sample at x (cell X = floor(x)) covers cells
-  // X - 1 .. X + 2 (a box at most 3 wide); the samples that read it (its
-  // gradient neighbours in its slice, the realigned neighbours in the slices
-  // before and after, all at most 3 voxels away) cover X - 4 .. X + 5, in
-  // voxel slices z - 1 .. z + 2. So a sample is computed only where a block
-  // of voxels that might be visible meets that window; elsewhere it is 0,
-  // which no ray composites and no computed sample reads.
-  void start_skipping() {
-    int32_t first_visible = 0;
-    while (first_visible < static_cast<int32_t>(r_.class_values()) && !r_.value_visible(first_visible)) ++first_visible;
-    if (first_visible == 0) return;  // the zero around the volume is visible: nothing to skip
-    const BlockRanges own = opt_.ranges ? BlockRanges{} : block_ranges(vol_);
-    const BlockRanges& b = opt_.ranges ? *opt_.ranges : own;
-    block_visible_.resize(b.hi.size());
-    for (size_t i = 0; i < b.hi.size(); ++i) block_visible_[i] = b.hi[i] >= first_visible;
-    // Object block index of a permuted voxel, one table per permuted axis.
-    const std::array<size_t, 3> stride{1, static_cast<size_t>(b.blocks[0]),
-                                       static_cast<size_t>(b.blocks[0]) * static_cast<size_t>(b.blocks[1])};
-    for (int i = 0; i < 3; ++i) {
-      const int n = r_.dim[static_cast<size_t>(i)], a = r_.perm[static_cast<size_t>(i)];
-      auto& t = block_of_[static_cast<size_t>(i)];
-      t.resize(static_cast<size_t>(n));
-      for (int p = 0; p < n; ++p) {
-        const int o = r_.flip[static_cast<size_t>(i)] ? n - 1 - p : p;
-        t[static_cast<size_t>(p)] = static_cast<size_t>(o / BlockRanges::kBlock) * stride[static_cast<size_t>(a)];
-      }
-    }
-    near_.assign(static_cast<size_t>(r_.dim[0]) * r_.dim[1], 0);
-    skipping_ = true;
-  }
-
-  // near_(X, Y): whether a sample in cell (X, Y) of voxel slice z's samples
-  // must be computed (start_skipping()).
-  void build_near(int z) {
-    const int nx = r_.dim[0], ny = r_.dim[1], nz = r_.dim[2];
-    constexpr int kBefore = 4, kAfter = 5;
-    std::vector<int32_t> col(static_cast<size_t>(nx) * ny, 0), prefix(static_cast<size_t>(std::max(nx, ny)) + 1);
-    for (int y = 0; y < ny; ++y)
-      for (int x = 0; x < nx; ++x) {
-        bool any = false;
-        for (int zz = std::max(z - 1, 0); zz <= std::min(z + 2, nz - 1) && !any; ++zz)
-          any = block_visible_[block_of_[0][static_cast<size_t>(x)] + block_of_[1][static_cast<size_t>(y)] +
-                               block_of_[2][static_cast<size_t>(zz)]] != 0;
-        col[static_cast<size_t>(y) * nx + x] = any;
-      }
-    // Dilated over [X - 4, X + 5] along x, then along y, by prefix sums.
-    std::vector<int32_t> along_x(col.size());
-    for (int y = 0; y < ny; ++y) {
-      for (int x = 0; x < nx; ++x) prefix[static_cast<size_t>(x) + 1] = prefix[static_cast<size_t>(x)] + col[static_cast<size_t>(y) * nx + x];
-      for (int x = 0; x < nx; ++x)
-        along_x[static_cast<size_t>(y) * nx + x] =
-            prefix[static_cast<size_t>(std::min(x + kAfter + 1, nx))] - prefix[static_cast<size_t>(std::max(x - kBefore, 0))];
-    }
-    for (int x = 0; x < nx; ++x) {
-      for (int y = 0; y < ny; ++y) prefix[static_cast<size_t>(y) + 1] = prefix[static_cast<size_t>(y)] + (along_x[static_cast<size_t>(y) * nx + x] > 0);
-      for (int y = 0; y < ny; ++y)
-        near_[static_cast<size_t>(y) * nx + x] =
-            prefix[static_cast<size_t>(std::min(y + kAfter + 1, ny))] - prefix[static_cast<size_t>(std::max(y - kBefore, 0))] > 0;
-    }
   }
 
   // Beams t, t + T, ... of voxel slices z and z + 1 (a beam per pipeline:
@@ -312,16 +245,8 @@ class Traversal {
     auto voxel = [&](int x, int y, int dz) { return (dz == 0 ? lo_ : hi_).at(x, y); };
     const int F = r_.p.dda_frac_bits;
     const int dz_tag = upper_corner(s.wz, r_.p.weight_bits);
-    const int nx = r_.dim[0];
     for (int64_t v = s.rays_y.lo + t; v < s.rays_y.hi; v += T)
       for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
-        if (skipping_) {
-          const SamplePlace place = sample_place(r_, s, u, v);
-          if (!near_[static_cast<size_t>(place.y) * nx + place.x]) {
-            out.v[out.index(u, v)] = 0;
-            continue;
-          }
-        }
         out.v[out.index(u, v)] = perspective_sample(r_, s, u, v, voxel);
         if (tagged_)
           tags.v[tags.index(u, v)] = pv_.tag_at(nearest_voxel(ray_position(s.ray0_x, s.spacing, u), F),
@@ -333,7 +258,6 @@ class Traversal {
   const Registers& r_;
   const FixedOptions& opt_;
   BasePlane& bp_;
-  const Volume& vol_;
   PermutedVolume pv_;
   int K_;
   bool tagged_;
@@ -343,11 +267,6 @@ class Traversal {
   RayPlane behind_, current_, ahead_, tag_, next_tag_;
   std::unique_ptr<FacePositionTable> faces_;
   int loaded_z_ = -1;
-  // Empty-space skipping (start_skipping()).
-  bool skipping_ = false;
-  std::vector<uint8_t> block_visible_;         // per object block: might hold a visible value
-  std::array<std::vector<size_t>, 3> block_of_;  // per permuted axis and voxel: its share of the block index
-  std::vector<uint8_t> near_;                  // per cell of the loaded voxel slice: sample computed
   RayStopRule stop_{RayStop::never, BlendMode::Composite, Precision{}};
   bool may_skip_ = false;
   std::vector<uint8_t> stopped_;

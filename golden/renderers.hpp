@@ -89,8 +89,7 @@ struct FixedOptions {
 BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);
 // Registers with `perspective` set: Cube-4's perspective (golden/perspective.hpp);
 // render_fixed() calls it for them. `threads` take rows of rays (the same
-// frame for any number); empty space skipped by blocks (`skip_empty`,
-// `ranges`) as in parallel projection, with the box filter's wider reach.
+// frame for any number); no empty-space skipping beyond the per-sample one.
 BasePlane render_perspective(const Volume& vol, const Registers& regs, const FixedOptions& options);
 BasePlane render_fixed(const Volume& vol, const Registers& regs, RenderStats* stats = nullptr,
                        const Progress& progress = {}, SampleProbe* probe = nullptr);

@@ -416,33 +416,6 @@ TEST(PerspectiveRender, ThreadsGiveTheSameFrame) {
   }
 }
 
-// Empty-space skipping leaves every sample that changes a ray, and every
-// sample their gradients read, as it was: the same accumulators with and
-// without it, for eyes as near as the box filter allows (the widest boxes
-// and neighbours) in front of each face, with supersampling, where a
-// Gaussian blob's tails put invisible but non-zero values beside visible
-// ones across block boundaries (a window of the sample's own box alone,
-// cells X - 1 .. X + 2 without the neighbours' reach, fails here).
-TEST(PerspectiveRender, EmptySpaceSkippingIsExact) {
-  const char* const eyes[] = {"[20, 17, -17.9]", "[20, 17, 52.9]", "[-19.9, 17, 18]", "[58.9, 17, 18]", "[20, -16.9, 18]",
-                              "[20, 49.9, 18]"};
-  for (const char* S : {"1", "2"})
-    for (const char* eye : eyes) {
-      const auto s = test::setup(std::string(R"({"volume": {"synthetic": "field", "field": "gaussian",
-          "size": [40, 34, 36]}, "output": {"width": 64, "height": 64}, "supersampling": )") + S + R"(,
-          "shading": true, "transfer": {"opacity": [[0, 0], [0.5, 0], [0.52, 0.3], [1, 0.3]]},
-          "view": {"projection": "perspective", "fov": 50, "eye": )" + eye + R"(, "up": [1, 1, 1]}})");
-      golden::FixedOptions skipping, every;
-      skipping.accumulators = every.accumulators = true;
-      every.skip_empty = false;
-      golden::RenderStats stats;
-      skipping.stats = &stats;
-      const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, every);
-      EXPECT_GT(alpha_sum(want), 0) << eye;
-      EXPECT_EQ(golden::render_fixed(s.volume, s.host.regs, skipping).acc, want.acc) << "S " << S << ", eye " << eye;
-    }
-}
-
 TEST(PerspectiveRender, StoppingRaysIsExact) {
   // A probe makes the renderer shade every sample of every ray; without one
   // it stops rays at a settled pixel, or at full α when it is asked for the
