@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 #include <string>
 #include <thread>
+
+#include <nlohmann/json.hpp>
 
 #include "golden/errors.hpp"
 #include "golden/perspective.hpp"
@@ -325,6 +328,46 @@ TEST_F(PerspectiveCli, RendersAtTheGoldenLevelsAndRefusesTheOthersSayingWhy) {
               std::string::npos)
         << r.err;
     EXPECT_FALSE(test::fs::exists(path("no.png")));
+  }
+}
+
+// Polygons and blocks in perspective through the command line: the TLM
+// frame checked against golden (--check, through the host interface and
+// POLY_* windows), the same base plane as --model fixed, and the report's
+// fragment counts; blocks at fixed and tlm alike.
+TEST_F(PerspectiveCli, PolygonsAndBlocksRenderAtFixedAndTlmAlike) {
+  const std::string scene = write("h.json", test::sphere_with_polygons(R"({"direction": [0.4, -0.3, 1], "projection": "perspective", "fov": 40})"));
+  std::string hash;
+  for (const std::string& args : {std::string("--model fixed"), std::string("--model tlm --check --pipes 5"),
+                                  std::string("--model fixed --blocks 2x2x1"), std::string("--model tlm --check --blocks 2x2x1")}) {
+    const bool blocks = args.find("--blocks") != std::string::npos;
+    if (blocks) {
+      // Polygons are not cut into blocks yet (as in parallel projection): refused, no image.
+      const test::CliResult refused = run("render " + scene + " -q " + args + " -o " + path("no.png"));
+      EXPECT_EQ(refused.code, 2) << args;
+      EXPECT_FALSE(test::fs::exists(path("no.png"))) << args;
+      continue;
+    }
+    const test::CliResult r = run("render " + scene + " -q " + args + " -o " + path("o.png") + " --report " + path("r.json"));
+    ASSERT_EQ(r.code, 0) << args << ": " << r.err;
+    const auto report = nlohmann::json::parse(std::ifstream(path("r.json")));
+    EXPECT_GT(report["polygon_fragments"]["in_slabs"].get<uint64_t>(), 0u) << args;
+    const std::string h = report["baseplane_hash_fnv1a64"].get<std::string>();
+    if (hash.empty()) hash = h;
+    EXPECT_EQ(h, hash) << args << ": the base plane differs from --model fixed";
+  }
+  const std::string plain = write("b.json", sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "fov": 40})",
+                                                   R"(, "output": {"width": 64, "height": 64})", "[24,24,24]"));
+  std::string blocks_hash;
+  for (const char* model : {"fixed", "tlm --check"}) {
+    const test::CliResult r = run("render " + plain + " -q --blocks 2x2x2 --model " + model + " -o " + path("b.png") +
+                                  " --report " + path("rb.json"));
+    ASSERT_EQ(r.code, 0) << model << ": " << r.err;
+    const auto report = nlohmann::json::parse(std::ifstream(path("rb.json")));
+    EXPECT_EQ(report["blocks"]["machines"].get<int>(), 8) << model;
+    const std::string h = report["baseplane_hash_fnv1a64"].get<std::string>();
+    if (blocks_hash.empty()) blocks_hash = h;
+    EXPECT_EQ(h, blocks_hash) << model;
   }
 }
 
