@@ -57,21 +57,39 @@ inline bool samples(const PerspectiveSlice& s, int64_t u, int64_t v) {
   return u >= s.rays_x.lo && u < s.rays_x.hi && v >= s.rays_y.lo && v < s.rays_y.hi;
 }
 
-// The sample of ray (u, v): box filters of the two voxel slices, then the z
-// lerp. `voxel(x, y, dz)` reads voxel slice z_voxel + dz (0 outside).
-template <class Voxel>
-uint32_t perspective_sample(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v, Voxel&& voxel) {
+// Ray (u, v)'s value of a field given on the voxels: box filters of the two
+// voxel slices, then the z lerp. `voxel(x, y, dz)` reads voxel slice
+// z_voxel + dz (0 outside) as a T.
+template <class T, class Voxel>
+T perspective_filtered(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v, Voxel&& voxel) {
   const int F = r.p.dda_frac_bits, W = r.p.weight_bits;
   const BoxAxis bx = box_axis(ray_position(s.ray0_x, s.spacing, u), s.spacing, F, W);
   const BoxAxis by = box_axis(ray_position(s.ray0_y, s.spacing, v), s.spacing, F, W);
   auto filtered = [&](int dz) {
-    std::array<std::array<uint32_t, 4>, 4> n{};
+    std::array<std::array<T, 4>, 4> n{};
     for (int j = 0; j < 4; ++j)
       for (int i = 0; i < 4; ++i) n[static_cast<size_t>(j)][static_cast<size_t>(i)] = voxel(bx.first + i, by.first + j, dz);
-    return box_filter(n, bx, by, s.box_reciprocal, box_recip_bits(r.p));
+    return box_filter_t<T>(n, bx, by, s.box_reciprocal, box_recip_bits(r.p));
   };
-  const uint32_t lo = filtered(0);
-  return s.wz == 0 ? lo : static_cast<uint32_t>(lerp(lo, filtered(1), s.wz, W));
+  const T lo = filtered(0);
+  return s.wz == 0 ? lo : static_cast<T>(lerp(lo, filtered(1), s.wz, W));
+}
+
+// The sample of ray (u, v).
+template <class Voxel>
+uint32_t perspective_sample(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v, Voxel&& voxel) {
+  return perspective_filtered<uint32_t>(r, s, u, v, voxel);
+}
+
+// VolumePro's voxel-difference z gradient in perspective: the voxel z
+// differences D(z) = V(z + 1) - V(z - 1) (voxel_z_difference()) of voxel
+// slices z_voxel and z_voxel + 1 through the sample's own box filters and z
+// lerp, as the parallel pipeline puts them through its trilinear weights.
+// `difference(x, y, dz)` reads D of voxel slice z_voxel + dz.
+template <class Difference>
+int32_t perspective_z_difference(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v,
+                                 Difference&& difference) {
+  return perspective_filtered<int32_t>(r, s, u, v, difference);
 }
 
 // The sample's position as the parallel pipeline's crop and cut-plane

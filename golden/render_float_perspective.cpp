@@ -31,9 +31,10 @@ struct Geometry {
   }
 };
 
-// The area-weighted mean of the nearest-voxel field of `slice` over the
-// box [x - m/2, x + m/2) x [y - m/2, y + m/2).
-double box_mean(const PermutedVolume& pv, int z, double x, double y, double m) {
+// The area-weighted mean of a nearest-voxel field, `field(i, j)` at voxel
+// (i, j), over the box [x - m/2, x + m/2) x [y - m/2, y + m/2).
+template <class Field>
+double box_mean(Field&& field, double x, double y, double m) {
   auto weights = [m](double c, int& first, double w[4]) {
     const double a = c + 0.5 - m / 2, b = a + m;
     first = static_cast<int>(std::floor(a));
@@ -48,7 +49,7 @@ double box_mean(const PermutedVolume& pv, int z, double x, double y, double m) {
     if (wy[j] == 0) continue;
     double row = 0;
     for (int i = 0; i < 4; ++i)
-      if (wx[i] != 0) row += wx[i] * pv.at(fx + i, fy + j, z);
+      if (wx[i] != 0) row += wx[i] * field(fx + i, fy + j);
     sum += wy[j] * row;
   }
   return sum / (m * m);
@@ -57,7 +58,7 @@ double box_mean(const PermutedVolume& pv, int z, double x, double y, double m) {
 struct Slice {
   int k = -1;
   long x0 = 0, x1 = 0, y0 = 0, y1 = 0;  // rays inside, base-plane pixels
-  std::vector<double> v;
+  std::vector<double> v, z;  // values; with the voxel-difference z gradient, the filtered z differences
   bool has(long u, long w) const { return k >= 0 && u >= x0 && u < x1 && w >= y0 && w < y1; }
 };
 
@@ -111,6 +112,7 @@ BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const Vie
   const CropRegs crop = permute_cropping(s.cropping, f);
   const PermutedCutPlane cut = permute_cut_plane_real(s.cut, f);
   const PermutedVolume pv(vol, f.perm, f.flip);
+  const bool voxel_z = e.gradient && s.z_gradient == ZGradient::VoxelDifferences;
 
   auto sample_slice = [&](int k, Slice& sl) {
     sl.k = k < 0 || k >= K ? -1 : k;
@@ -122,13 +124,24 @@ BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const Vie
     sl.y0 = std::max(0L, ry.first - jy.first);
     sl.y1 = std::min<long>(out.image.height, ry.second - jy.first);
     sl.v.assign(static_cast<size_t>(W) * out.image.height, 0.0);
+    if (voxel_z) sl.z.assign(sl.v.size(), 0.0);
     const int z = k / S;
     const double wz = static_cast<double>(k % S) / S;
     for (long w = sl.y0; w < sl.y1; ++w)
       for (long u = sl.x0; u < sl.x1; ++u) {
         const double x = geo.x(X(u), k), y = geo.y(Y(w), k);
-        const double lo = box_mean(pv, z, x, y, m);
-        sl.v[static_cast<size_t>(w) * W + u] = wz == 0 ? lo : lo + wz * (box_mean(pv, z + 1, x, y, m) - lo);
+        // The field of voxel slice z + dz: the voxels, or VolumePro's z
+        // differences V(z + dz + 1) - V(z + dz - 1).
+        auto filtered = [&](auto&& field_of) {
+          const double lo = box_mean([&](int i, int j) { return field_of(i, j, z); }, x, y, m);
+          return wz == 0 ? lo : lo + wz * (box_mean([&](int i, int j) { return field_of(i, j, z + 1); }, x, y, m) - lo);
+        };
+        const size_t at = static_cast<size_t>(w) * W + u;
+        sl.v[at] = filtered([&](int i, int j, int zz) { return static_cast<double>(pv.at(i, j, zz)); });
+        if (voxel_z)
+          sl.z[at] = filtered([&](int i, int j, int zz) {
+            return static_cast<double>(pv.at(i, j, zz + 1)) - static_cast<double>(pv.at(i, j, zz - 1));
+          });
       }
   };
   auto at = [&](const Slice& sl, long u, long w) { return sl.has(u, w) ? sl.v[static_cast<size_t>(w) * W + u] : 0.0; };
@@ -164,7 +177,8 @@ BasePlaneF render_float_perspective(const Volume& vol, const Scene& s, const Vie
         if (e.gradient)
           g = {(at(current, u + 1, w) - at(current, u - 1, w)) / m * gscale,
                (at(current, u, w + 1) - at(current, u, w - 1)) / m * gscale,
-               (straight(ahead, x, y) - straight(behind, x, y)) * S * gscale};
+               (voxel_z ? current.z[static_cast<size_t>(w) * W + u] : (straight(ahead, x, y) - straight(behind, x, y)) * S) *
+                   gscale};
         const int tag = e.tags ? pv.tag_at(static_cast<int>(std::floor(x + 0.5)), static_cast<int>(std::floor(y + 0.5)),
                                            zv + (z - zv >= 0.5))
                                : 0;

@@ -33,8 +33,10 @@ struct RayPlane {
   PerspectiveSlice slice;
   bool valid = false;  // a slice of the volume (k in range)
   std::vector<uint32_t> v;
-  RayPlane(int w, int h, int ox, int oy)
-      : width(w), height(h), origin_x(ox), origin_y(oy), v(static_cast<size_t>(w) * h, 0) {}
+  std::vector<int32_t> z;  // with the voxel-difference z gradient: each ray's filtered z difference
+  RayPlane(int w, int h, int ox, int oy, bool z_differences)
+      : width(w), height(h), origin_x(ox), origin_y(oy), v(static_cast<size_t>(w) * h, 0),
+        z(z_differences ? v.size() : 0, 0) {}
   size_t index(int64_t u, int64_t v_) const {
     return static_cast<size_t>(v_ + origin_y) * width + static_cast<size_t>(u + origin_x);
   }
@@ -51,8 +53,11 @@ class Traversal {
   Traversal(const Volume& vol, const Registers& r, const FixedOptions& opt, BasePlane& bp)
       : r_(r), opt_(opt), bp_(bp), pv_(vol, r.perm, r.flip), K_(r.sample_slices()), tagged_(r.p.tag_bits > 0),
         ox_(r.base_origin_x()), oy_(r.base_origin_y()), rays_(static_cast<size_t>(bp.width) * bp.height),
-        lo_(r.dim[0], r.dim[1], kBoxPad), hi_(lo_), behind_(plane()), current_(plane()), ahead_(plane()),
-        tag_(plane()), next_tag_(plane()), faces_(make_face_table(r)) {}
+        lo_(r.dim[0], r.dim[1], kBoxPad), hi_(lo_), voxel_z_(r.gradient && r.z_gradient == ZGradient::VoxelDifferences),
+        behind_(plane()), current_(plane()), ahead_(plane()), tag_(plane()), next_tag_(plane()),
+        faces_(make_face_table(r)) {
+    if (voxel_z_) below_ = above_ = d_lo_ = d_hi_ = lo_;
+  }
 
   void run() {
     const bool may_skip = r_.blend == BlendMode::Composite && opt_.probe == nullptr;
@@ -144,7 +149,7 @@ class Traversal {
   }
 
  private:
-  RayPlane plane() const { return RayPlane(bp_.width, bp_.height, ox_, oy_); }
+  RayPlane plane() const { return RayPlane(bp_.width, bp_.height, ox_, oy_, voxel_z_); }
 
   // Slice k's samples of rows lo_y + t, lo_y + t + T, ...: shaded and
   // composited, then the slab pixels behind them. Returns the samples seen.
@@ -208,6 +213,10 @@ class Traversal {
 
   Gradient gradient(int64_t u, int64_t v) const {
     const PerspectiveSlice& s = current_.slice;
+    if (voxel_z_)
+      return gradient_perspective_z(current_.at(u - 1, v), current_.at(u + 1, v), current_.at(u, v - 1),
+                                    current_.at(u, v + 1), current_.z[current_.index(u, v)], s.lateral_reciprocal,
+                                    r_.p);
     auto behind = [&](int64_t a, int64_t b) { return behind_.at(a, b); };
     auto ahead = [&](int64_t a, int64_t b) { return ahead_.at(a, b); };
     return gradient_perspective(current_.at(u - 1, v), current_.at(u + 1, v), current_.at(u, v - 1),
@@ -231,9 +240,18 @@ class Traversal {
   // Beams t, t + T, ... of voxel slices z and z + 1 (a beam per pipeline:
   // the permuted reads are strided, the costliest loads of the frame).
   void load_rows(int z, int t, int T) {
+    const int nx = r_.dim[0];
     for (int y = t; y < r_.dim[1]; y += T) {
       pv_.load_beam(y, z, lo_.row(y));
       pv_.load_beam(y, z + 1, hi_.row(y));
+      if (!voxel_z_) continue;
+      // The voxel z differences D(z) and D(z + 1), as the parallel renderer's.
+      pv_.load_beam(y, z - 1, below_.row(y));
+      pv_.load_beam(y, z + 2, above_.row(y));
+      for (int x = 0; x < nx; ++x) {
+        d_lo_.row(y)[x] = voxel_z_difference(static_cast<uint32_t>(hi_.row(y)[x]), static_cast<uint32_t>(below_.row(y)[x]));
+        d_hi_.row(y)[x] = voxel_z_difference(static_cast<uint32_t>(above_.row(y)[x]), static_cast<uint32_t>(lo_.row(y)[x]));
+      }
     }
   }
 
@@ -248,6 +266,9 @@ class Traversal {
     for (int64_t v = s.rays_y.lo + t; v < s.rays_y.hi; v += T)
       for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
         out.v[out.index(u, v)] = perspective_sample(r_, s, u, v, voxel);
+        if (voxel_z_)
+          out.z[out.index(u, v)] = perspective_z_difference(
+              r_, s, u, v, [&](int x, int y, int dz) { return (dz == 0 ? d_lo_ : d_hi_).at(x, y); });
         if (tagged_)
           tags.v[tags.index(u, v)] = pv_.tag_at(nearest_voxel(ray_position(s.ray0_x, s.spacing, u), F),
                                                 nearest_voxel(ray_position(s.ray0_y, s.spacing, v), F),
@@ -264,6 +285,8 @@ class Traversal {
   int ox_, oy_;
   std::vector<RayAcc> rays_;
   Plane lo_, hi_;
+  bool voxel_z_;
+  Plane below_, above_, d_lo_, d_hi_;  // voxel-difference z gradient: V(z - 1), V(z + 2), D(z), D(z + 1)
   RayPlane behind_, current_, ahead_, tag_, next_tag_;
   std::unique_ptr<FacePositionTable> faces_;
   int loaded_z_ = -1;

@@ -1014,19 +1014,10 @@ Scene default_scene() {
   return s;
 }
 
-// What perspective does not render yet (docs/perspective.md, "Not yet").
-void check_perspective(const Scene& s) {
-  if (!s.view.perspective()) return;
-  if (s.z_gradient != ZGradient::Abc)
-    fail_value(s.file, "z_gradient", "\"voxel_differences\"",
-               "is not built for \"view.projection\": \"perspective\" yet (its slices are scaled; use \"abc\")");
-}
-
 void finish_scene(Scene& s) {
   fill_defaults(s);
   check_precision(s);
   check_view(s);
-  check_perspective(s);
   check_volume(s);
   check_cut_plane(s);
   check_tags(s);

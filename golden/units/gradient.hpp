@@ -85,12 +85,19 @@ constexpr int64_t lateral_reciprocal(int64_t spacing, int frac_bits, int recip_b
 constexpr int64_t scale_lateral(int64_t full_difference, int64_t reciprocal, int recip_bits) {
   return round_shift(full_difference * reciprocal, recip_bits);
 }
-constexpr Gradient gradient_perspective(uint32_t left, uint32_t right, uint32_t up, uint32_t down, uint32_t behind,
-                                        uint32_t ahead, int supersampling, int64_t reciprocal, const Precision& p) {
+// `z_full`: the z difference spanning two voxels, (ahead - behind)·S for the
+// 12-neighbourhood, the filtered voxel difference for VolumePro's.
+constexpr Gradient gradient_perspective_z(uint32_t left, uint32_t right, uint32_t up, uint32_t down, int64_t z_full,
+                                          int64_t reciprocal, const Precision& p) {
   const int q = lateral_recip_bits(p);
   return {gradient_component(scale_lateral(static_cast<int64_t>(right) - left, reciprocal, q), p),
           gradient_component(scale_lateral(static_cast<int64_t>(down) - up, reciprocal, q), p),
-          gradient_component((static_cast<int64_t>(ahead) - behind) * supersampling, p)};
+          gradient_component(z_full, p)};
+}
+constexpr Gradient gradient_perspective(uint32_t left, uint32_t right, uint32_t up, uint32_t down, uint32_t behind,
+                                        uint32_t ahead, int supersampling, int64_t reciprocal, const Precision& p) {
+  return gradient_perspective_z(left, right, up, down, (static_cast<int64_t>(ahead) - behind) * supersampling,
+                                reciprocal, p);
 }
 
 }  // namespace cube4::golden

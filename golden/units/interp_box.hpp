@@ -27,16 +27,25 @@ constexpr uint64_t box_reciprocal(int64_t extent, int recip_bits) {
 }
 
 // v[j][i] is voxel (x.first + i, y.first + j) of the slice (0 outside it).
+// T is the voxels' type: unsigned for the samples, signed for VolumePro's
+// voxel z differences (V + 1 bits), which the same stage filters with the
+// same weights for the voxel-difference z gradient (docs/fixed-point.md);
+// the rounding is half up (towards +infinity) either way.
+template <class T>
+constexpr T box_filter_t(const std::array<std::array<T, 4>, 4>& v, const BoxAxis& x, const BoxAxis& y,
+                         uint64_t reciprocal, int recip_bits) {
+  __int128 sum = 0;
+  for (size_t j = 0; j < 4; ++j) {
+    int64_t row = 0;
+    for (size_t i = 0; i < 4; ++i) row += static_cast<int64_t>(x.overlap[i]) * v[j][i];
+    sum += static_cast<__int128>(y.overlap[j]) * row;
+  }
+  const __int128 half = static_cast<__int128>(1) << (recip_bits - 1);
+  return static_cast<T>((sum * static_cast<__int128>(reciprocal) + half) >> recip_bits);
+}
 constexpr uint32_t box_filter(const std::array<std::array<uint32_t, 4>, 4>& v, const BoxAxis& x, const BoxAxis& y,
                               uint64_t reciprocal, int recip_bits) {
-  unsigned __int128 sum = 0;
-  for (size_t j = 0; j < 4; ++j) {
-    uint64_t row = 0;
-    for (size_t i = 0; i < 4; ++i) row += static_cast<uint64_t>(x.overlap[i]) * v[j][i];
-    sum += static_cast<unsigned __int128>(y.overlap[j]) * row;
-  }
-  const unsigned __int128 half = static_cast<unsigned __int128>(1) << (recip_bits - 1);
-  return static_cast<uint32_t>((sum * reciprocal + half) >> recip_bits);
+  return box_filter_t<uint32_t>(v, x, y, reciprocal, recip_bits);
 }
 
 }  // namespace cube4::golden
