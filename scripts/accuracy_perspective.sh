@@ -25,10 +25,14 @@ cases=(
   "sphere perspective_sphere 40"
   "sphere perspective_sphere 60"
   "sphere perspective_sphere 80"
+  "sphere perspective_sphere 40-s2"
+  "sphere perspective_sphere 40-s2-vd"
   "head perspective_head parallel"
   "head perspective_head 20"
   "head perspective_head 40"
   "head perspective_head 60"
+  "head perspective_head 40-s2"
+  "head perspective_head 40-s2-vd"
   "head perspective_flyin flyin"
   "head perspective_flyin flyin-xy2"
 )
@@ -44,8 +48,14 @@ if fov == "parallel":
 elif fov == "flyin-xy2":
     s["xy_supersampling"] = 2
 elif fov != "flyin":
-    s["view"]["fov"] = float(fov)
+    # "40-s2-vd": 40°, supersampling 2, VolumePro's voxel-difference z gradient.
+    angle, *knobs = fov.split("-")
+    s["view"]["fov"] = float(angle)
     s["view"].pop("distance", None)
+    if "s2" in knobs:
+        s["supersampling"] = 2
+    if "vd" in knobs:
+        s["z_gradient"] = "voxel_differences"
 json.dump(s, open(sys.argv[3], "w"))
 PY
   echo "accuracy_perspective: $name $fov..." >&2
@@ -80,8 +90,11 @@ for name, title in (("sphere", "volume-sampled sphere 64³ (scenes/perspective_s
     print("|---|---:|---|---|---|")
     for r in rows:
         if r[0] != name: continue
+        angle, *knobs = r[1].split("-")
+        extra = "".join({"s2": ", S = 2", "vd": ", voxel-difference z gradient"}[k] for k in knobs) \
+            if not r[1].startswith("flyin") else ""
         view = {"parallel": "parallel", "flyin": "fly-in, 60°",
-                "flyin-xy2": "fly-in, 60°, xy_supersampling 2"}.get(r[1], f"perspective, {r[1]}°")
+                "flyin-xy2": "fly-in, 60°, xy_supersampling 2"}.get(r[1], f"perspective, {angle}°{extra}")
         print(f"| {view} | {r[2]} | {r[3]} / {r[4]} / {r[5]} | {r[6]} / {r[7]} / {r[8]} | {r[9]} / {r[10]} / {r[11]} |")
     print()
 PY
