@@ -144,6 +144,42 @@ TEST(PolygonsPerspective, SteppedDepthEqualsEachPixelsOwnQuotient) {
   EXPECT_GT(pixels, 10000);
 }
 
+// The integer range the host admits in perspective (corners within ±2^24
+// pixels and ±2^20 sample slices, h from 1 to 2^24 units of 2^-20): the
+// depth's numerator and denominator stay within 128 bits, so every covered
+// pixel's depth is a mean of the corners' (perspective weights in [0, 1]),
+// never a wrapped value. Triangles with corners at the extremes, their
+// footprints crossing the 64 x 64 window scanned.
+TEST(PolygonsPerspective, CornersAtTheRangesLimitsStayWithin128Bits) {
+  std::mt19937_64 gen(29);
+  const int64_t uv = int64_t{1} << (24 + golden::kSubpixelBits), d = int64_t{1} << (20 + golden::kZFracBits);
+  const int64_t h_max = int64_t{1} << 24;
+  auto extreme = [&](int64_t limit) {
+    switch (gen() % 4) {
+      case 0: return limit;
+      case 1: return -limit;
+      case 2: return static_cast<int64_t>(gen() % static_cast<uint64_t>(2 * limit + 1)) - limit;
+      default: return static_cast<int64_t>(gen() % (64 * 256));  // inside the window
+    }
+  };
+  int triangles = 0, pixels = 0;
+  for (int t = 0; t < 4000; ++t) {
+    golden::BaseVertex<int64_t> v[3];
+    for (auto& q : v) q = {extreme(uv), extreme(uv), extreme(d), gen() % 2 ? h_max : 1 + static_cast<int64_t>(gen() % static_cast<uint64_t>(h_max))};
+    const int64_t lo = std::min({v[0].d, v[1].d, v[2].d}), hi = std::max({v[0].d, v[1].d, v[2].d});
+    bool any = false;
+    golden::scan_triangle<int64_t>(v[0], v[1], v[2], 256, 64, 64, [&](int u, int w, int64_t depth) {
+      any = true;
+      ++pixels;
+      ASSERT_GE(depth, lo) << "triangle " << t << ", pixel (" << u << ", " << w << ")";
+      ASSERT_LE(depth, hi) << "triangle " << t << ", pixel (" << u << ", " << w << ")";
+    });
+    triangles += any;
+  }
+  EXPECT_GT(triangles, 200);
+  EXPECT_GT(pixels, 100000);
+}
+
 // A triangle reaching behind the eye is drawn beyond the near plane only:
 // one or two pieces whose corners all lie on or beyond it, sharing their
 // diagonal (no pixel twice), each pixel at the plane's true depth; wholly
