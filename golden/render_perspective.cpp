@@ -100,7 +100,13 @@ class Traversal {
         failed[0] = std::current_exception();
       }
     };
-    TeamBarrier after_shading(T, advance), after_loading(T), after_sampling(T);
+    // A failure anywhere (a throwing progress callback, say) ends the frame
+    // for the whole team at the same slice, so that no thread is left
+    // waiting at a barrier.
+    bool abandon = false;
+    TeamBarrier after_shading(T, advance), after_loading(T), after_sampling(T, [&] {
+      for (const std::exception_ptr& e : failed) abandon = abandon || e;
+    });
     auto team = [&](int t) {
       auto guarded = [&](auto&& work) {
         try {
@@ -120,13 +126,13 @@ class Traversal {
           if (r_.gradient) sample_rows(ahead_, next_tag_, t, T);
           else sample_rows(current_, tag_, t, T);
         });
-        after_sampling.arrive_and_wait();
         if (t == 0) {
+          // The next slice's completion reads k after this barrier.
           ++k;
-          if (opt_.progress) opt_.progress(static_cast<double>(slice + 1) / K_);
+          if (opt_.progress) guarded([&] { opt_.progress(static_cast<double>(slice + 1) / K_); });
         }
-        // k moves on before the next completion reads it: every thread
-        // passes the next barrier only after thread 0 has.
+        after_sampling.arrive_and_wait();
+        if (abandon) break;
       }
     };
     std::vector<std::thread> workers;

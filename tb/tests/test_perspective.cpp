@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -466,6 +467,23 @@ TEST(PerspectiveRender, ThreadsGiveTheSameFrame) {
       EXPECT_EQ(progress_calls, s.host.regs.sample_slices());
       EXPECT_EQ(last, 1.0);
     }
+  }
+}
+
+// A progress callback that throws (a caller giving up) ends the frame on
+// every thread: the exception reaches the caller, nothing hangs.
+TEST(PerspectiveRender, AThrowingProgressEndsTheFrameOnEveryThread) {
+  const auto s = test::setup(sphere(R"({"rotate": [20, 30, 0], "projection": "perspective", "fov": 45})",
+                                    R"(, "output": {"width": 64, "height": 64})", "[30, 26, 22]"));
+  for (int threads : {1, 2, 3}) {
+    golden::FixedOptions o;
+    o.threads = threads;
+    int calls = 0;
+    o.progress = [&](double) {
+      if (++calls == 3) throw std::runtime_error("cancelled");
+    };
+    EXPECT_THROW(golden::render_fixed(s.volume, s.host.regs, o), std::runtime_error) << threads << " threads";
+    EXPECT_EQ(calls, 3) << threads << " threads: the frame went on after the callback threw";
   }
 }
 
