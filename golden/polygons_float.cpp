@@ -12,28 +12,22 @@ PolygonsF::PolygonsF(const Scene& s, const std::vector<Mesh>& meshes, const View
                      const BaseFrame& frame, int width, int height)
     : hits_(static_cast<size_t>(width) * height), next_(hits_.size(), 0), done_(hits_.size(), false),
       z_(hits_.size(), std::numeric_limits<double>::infinity()), opaque_(hits_.size()) {
-  const Lighting L = lighting_of(s, f);
-  for (const Mesh& m : meshes) {
-    if (!(m.opacity > 0)) continue;
-    for (const auto& t : m.triangles) {
-      const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
-      const Vec3 rgb = polygon_color(s, L, f, a, b, c, m.color, m.lit);
-      const auto emit = [&](int u, int v, double d) {
-        const size_t i = static_cast<size_t>(v) * width + u;
-        if (m.opacity < 1) {
-          hits_[i].push_back({d, rgb, m.opacity});
-        } else if (d < z_[i]) {
-          z_[i] = d;
-          opaque_[i] = rgb;
-        }
-      };
-      project_triangle(frame, f.to_permuted(a), f.to_permuted(b), f.to_permuted(c), [&](const BaseCorner(&k)[3]) {
-        BaseVertex<double> v[3];
-        for (int i = 0; i < 3; ++i) v[i] = {k[i].uvd[0], k[i].uvd[1], k[i].uvd[2], k[i].h};
-        scan_triangle<double>(v[0], v[1], v[2], 1.0, width, height, emit);
-      });
-    }
-  }
+  for_each_drawn_triangle(s, f, meshes, [&](const Mesh& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& rgb) {
+    const auto emit = [&](int u, int v, double d) {
+      const size_t i = static_cast<size_t>(v) * width + u;
+      if (m.opacity < 1) {
+        hits_[i].push_back({d, rgb, m.opacity});
+      } else if (d < z_[i]) {
+        z_[i] = d;
+        opaque_[i] = rgb;
+      }
+    };
+    project_triangle(frame, f.to_permuted(a), f.to_permuted(b), f.to_permuted(c), [&](const BaseCorner(&k)[3]) {
+      BaseVertex<double> v[3];
+      for (int i = 0; i < 3; ++i) v[i] = {k[i].uvd[0], k[i].uvd[1], k[i].uvd[2], k[i].h};
+      scan_triangle<double>(v[0], v[1], v[2], 1.0, width, height, emit);
+    });
+  });
   for (size_t i = 0; i < hits_.size(); ++i) {
     auto& h = hits_[i];
     h.erase(std::remove_if(h.begin(), h.end(), [&](const Hit& x) { return x.d >= z_[i]; }), h.end());

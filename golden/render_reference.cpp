@@ -94,46 +94,40 @@ PolygonHits polygon_hits(const Scene& s, const std::vector<Mesh>& meshes, const 
                          int height) {
   const size_t n = static_cast<size_t>(width) * height;
   PolygonHits h{std::vector<std::vector<Hit>>(n), std::vector<Hit>(n, Hit{std::numeric_limits<double>::infinity(), {}, 1})};
-  const Lighting L = lighting_of(s, f);
-  for (const Mesh& m : meshes) {
-    if (!(m.opacity > 0)) continue;
-    for (const auto& t : m.triangles) {
-      const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
-      const Vec3 rgb = polygon_color(s, L, f, a, b, c, m.color, m.lit);
-      // The pixels whose rays can meet it: its projection's bounding box;
-      // in perspective every pixel when a corner is not in front of the eye.
-      double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-      double hi[2] = {-lo[0], -lo[1]};
-      for (const Vec3* v : {&a, &b, &c}) {
-        if (f.perspective && !in_front_of_eye(f, *v)) {
-          lo[0] = lo[1] = -std::numeric_limits<double>::infinity();
-          hi[0] = hi[1] = std::numeric_limits<double>::infinity();
-          break;
-        }
-        const auto xy = f.image_of(*v);
-        for (int i = 0; i < 2; ++i) {
-          lo[i] = std::min(lo[i], xy[static_cast<size_t>(i)]);
-          hi[i] = std::max(hi[i], xy[static_cast<size_t>(i)]);
+  for_each_drawn_triangle(s, f, meshes, [&](const Mesh& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& rgb) {
+    // The pixels whose rays can meet it: its projection's bounding box;
+    // in perspective every pixel when a corner is not in front of the eye.
+    double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    double hi[2] = {-lo[0], -lo[1]};
+    for (const Vec3* v : {&a, &b, &c}) {
+      if (f.perspective && !in_front_of_eye(f, *v)) {
+        lo[0] = lo[1] = -std::numeric_limits<double>::infinity();
+        hi[0] = hi[1] = std::numeric_limits<double>::infinity();
+        break;
+      }
+      const auto xy = f.image_of(*v);
+      for (int i = 0; i < 2; ++i) {
+        lo[i] = std::min(lo[i], xy[static_cast<size_t>(i)]);
+        hi[i] = std::max(hi[i], xy[static_cast<size_t>(i)]);
+      }
+    }
+    const int x0 = static_cast<int>(std::clamp(std::floor(lo[0]), 0.0, double(width))),
+              x1 = static_cast<int>(std::clamp(std::ceil(hi[0]), -1.0, double(width - 1))),
+              y0 = static_cast<int>(std::clamp(std::floor(lo[1]), 0.0, double(height))),
+              y1 = static_cast<int>(std::clamp(std::ceil(hi[1]), -1.0, double(height - 1)));
+    for (int Y = y0; Y <= y1; ++Y)
+      for (int X = x0; X <= x1; ++X) {
+        const ViewFactorisation::Ray ray = f.ray_of_image(X, Y);
+        const auto hit = intersect(ray.origin, ray.direction, a, b, c);
+        if (!hit || (f.perspective && !(*hit > 0))) continue;
+        const size_t i = static_cast<size_t>(Y) * width + X;
+        if (m.opacity < 1) {
+          h.translucent[i].push_back({*hit, rgb, m.opacity});
+        } else if (*hit < h.opaque[i].t) {
+          h.opaque[i] = {*hit, rgb, 1};
         }
       }
-      const int x0 = static_cast<int>(std::clamp(std::floor(lo[0]), 0.0, double(width))),
-                x1 = static_cast<int>(std::clamp(std::ceil(hi[0]), -1.0, double(width - 1))),
-                y0 = static_cast<int>(std::clamp(std::floor(lo[1]), 0.0, double(height))),
-                y1 = static_cast<int>(std::clamp(std::ceil(hi[1]), -1.0, double(height - 1)));
-      for (int Y = y0; Y <= y1; ++Y)
-        for (int X = x0; X <= x1; ++X) {
-          const ViewFactorisation::Ray ray = f.ray_of_image(X, Y);
-          const auto hit = intersect(ray.origin, ray.direction, a, b, c);
-          if (!hit || (f.perspective && !(*hit > 0))) continue;
-          const size_t i = static_cast<size_t>(Y) * width + X;
-          if (m.opacity < 1) {
-            h.translucent[i].push_back({*hit, rgb, m.opacity});
-          } else if (*hit < h.opaque[i].t) {
-            h.opaque[i] = {*hit, rgb, 1};
-          }
-        }
-    }
-  }
+  });
   for (size_t i = 0; i < n; ++i) {
     auto& list = h.translucent[i];
     const double z = h.opaque[i].t;

@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "golden/mesh.hpp"
 #include "golden/scene.hpp"
 #include "golden/view.hpp"
 
@@ -42,6 +43,22 @@ Lighting lighting_of(const Scene& s, const ViewFactorisation& f);
 // One definition for the host rasteriser and the float and reference renderers.
 Vec3 polygon_color(const Scene& s, const Lighting& L, const ViewFactorisation& f, const Vec3& a, const Vec3& b,
                    const Vec3& c, const Vec3& color, bool lit);
+
+// The float and reference renderers' walk over the meshes: every triangle of
+// a mesh that draws anything (opacity > 0), with its polygon_color():
+// visit(mesh, a, b, c, rgb), corners in object voxel coordinates.
+template <class Visit>
+void for_each_drawn_triangle(const Scene& s, const ViewFactorisation& f, const std::vector<Mesh>& meshes,
+                             Visit&& visit) {
+  const Lighting L = lighting_of(s, f);
+  for (const Mesh& m : meshes) {
+    if (!(m.opacity > 0)) continue;
+    for (const auto& t : m.triangles) {
+      const Vec3 &a = m.vertices[t[0]], &b = m.vertices[t[1]], &c = m.vertices[t[2]];
+      visit(m, a, b, c, polygon_color(s, L, f, a, b, c, m.color, m.lit));
+    }
+  }
+}
 
 // Unit outward normal (-gradient) in physical object space from a gradient
 // in permuted voxel space; zero vector if the gradient is zero.
