@@ -223,7 +223,7 @@ TEST(PolygonsPerspective, DepthBehindTheNearPlane) {
   }
 }
 
-TEST(PolygonsPerspective, SkippingStaysExactAndTheTlmFrameIsGolden) {
+TEST(PolygonsPerspective, SkippingStaysExactAndThePolygonsShow) {
   for (const char* view : kViews) {
     SCOPED_TRACE(view);
     const test::Setup s = test::setup(test::sphere_with_polygons(view));
