@@ -10,8 +10,9 @@
 // pipeline (the memory word {voxel tag, value} with voxel tags). Each
 // pipeline emits the samples of its own columns:
 // sample_o[k] = S(j*p + k, y) of the pass, with its own valid and flags (all
-// pipelines run in lock step). Stream format, latency (4 cycles without
-// stalls; last sample 4 cycles after the last input) and preconditions: see
+// pipelines run in lock step). Stream format (passes back to back, a flush
+// beam after the last), latency (4 cycles without stalls) and
+// preconditions: see
 // cube4_interp_unit and docs/rtl-interp.md. nx not a multiple of p is padded
 // by the stream with zero voxels (columns x >= nx produce samples of the
 // padding).
@@ -49,6 +50,7 @@ module cube4_interp_ring #(
   input  logic                          beam_end_i,
   input  logic                          slice_start_i,
   input  logic                          slice_end_i,
+  input  logic                          flush_i,
   input  logic [NumPipes*WordBits-1:0]  voxel_i,
   input  logic [WeightBits:0]           wx_i,
   input  logic [WeightBits:0]           wy_i,
@@ -97,6 +99,7 @@ module cube4_interp_ring #(
       .beam_end_i   (beam_end_i),
       .slice_start_i(slice_start_i),
       .slice_end_i  (slice_end_i),
+      .flush_i      (flush_i),
       .voxel_i      (voxel_i[k*WordBits +: WordBits]),
       .wx_i         (wx_i),
       .wy_i         (wy_i),

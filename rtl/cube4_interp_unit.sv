@@ -3,13 +3,18 @@
 // beams and beam extension). docs/rtl-interp.md describes the dataflow.
 //
 // Function: pipeline k of p receives, for every sample slice k_s, the voxel
-// slice the sample slice needs last, in beam order (beams y = 0 .. ny, beam
-// ny being the zero border), one partial beam j per valid cycle: voxel_i is
-// v(x, y, z_in) with x = j*p + k, z_in = z_voxel(k_s) if wz_i = 0 (the sample
-// slice lies on that voxel slice) and z_voxel(k_s) + 1 otherwise. The unit
-// emits, for every voxel (x, y+1) of beams 1 .. ny, the sample S(x, y) of
-// slice k_s: bit-exact golden trilinear() (cube4_interp) of
-//   v(x .. x+1, y .. y+1, z_voxel .. z_voxel+1), zero outside the volume.
+// slice the sample slice needs last, in beam order (beams y = 0 .. ny-1),
+// one partial beam j per valid cycle: voxel_i is v(x, y, z_in) with
+// x = j*p + k, z_in = z_voxel(k_s) if wz_i = 0 (the sample slice lies on
+// that voxel slice) and z_voxel(k_s) + 1 otherwise. The unit emits, for
+// every voxel (x, y+1) of beams 1 .. ny-1, the sample S(x, y) of slice k_s:
+// bit-exact golden trilinear() (cube4_interp) of
+//   v(x .. x+1, y .. y+1, z_voxel .. z_voxel+1), zero outside the volume,
+// and the pass's last sample beam S(x, ny-1) (whose y+1 voxels are the
+// zero border) in the beam after the pass: the next pass's beam 0, which
+// gives no sample of its own, or a flush beam (flush_i), which carries no
+// voxels. So passes follow back to back at ny beams each, and a stream
+// ends with one flush beam (docs/rtl-interp.md, "Passes back to back").
 // The voxels come from:
 //   - the slice store: voxel slice z_voxel, written from the stream in the
 //     slice's wz = 0 pass, read in its wz > 0 passes (ny * ceil(nx/p) entries);
@@ -22,33 +27,37 @@
 //     holds its own column one valid cycle (the alignment register: Cube-4's
 //     beam extension). x+1 = nx (after the last partial beam of a beam) reads
 //     zero instead.
-// Voxel values in beam ny (slice_end_i) are ignored and taken as zero.
 //
 // Stream format (valid_i cycles, any number of idle cycles between them):
 //   beam_start_i / beam_end_i  : first / last partial beam of a beam
-//   slice_start_i / slice_end_i: beam 0 / beam ny (the zero beam) of a pass
+//   slice_start_i / slice_end_i: beam 0 / beam ny-1 of a pass
+//   flush_i                    : a beam of no voxels (voxel_i, weights and
+//                                tag ignored) after a pass: it emits the
+//                                pass's last sample beam; after nothing
+//                                (reset or another flush) it emits nothing
 //   wx_i, wy_i, wz_i            : the sample slice's weights (golden
 //                                 slice_control()), constant over a pass
 //   tag_i                       : travels to tag_o with the sample (the weight
 //                                 generator's per-slice control for later units)
 // Output: valid_o with sample_o = S(x, y) in beam order (beams 0 .. ny-1 of
 // each pass), flags beam_start_o / beam_end_o (j = 0 / last), slice_start_o /
-// slice_end_o (y = 0 / ny - 1) and the tag of the input that produced it.
+// slice_end_o (y = 0 / ny - 1) and the tag of the pass that produced it.
 //
-// Latency: the sample of input step t (voxel (x, y+1)) leaves the alignment
-// register in the next valid cycle t' (or at t + 1 if t ends a beam: it
-// needs no next column), enters cube4_interp then, and appears on
-// sample_o 3 cycles later: t + 4 without stalls; the last sample of a pass
-// appears 4 cycles after its last input. One sample per clock.
-// Handshake: valid-only, no back-pressure. Reset: control (valid, alignment
-// and slice-start state, delay pointers); data registers and RAMs are not
-// reset.
+// Latency: the sample of input step t (voxel (x, y+1), or the step of the
+// following beam that emits row ny-1) leaves the alignment register in the
+// next valid cycle t' (or at t + 1 if t ends a beam: it needs no next
+// column), enters cube4_interp then, and appears on sample_o 3 cycles
+// later: t + 4 without stalls. One sample per clock.
+// Handshake: valid-only, no back-pressure. Reset: control (valid, alignment,
+// open-pass and slice-start state, delay pointers); data registers and RAMs
+// are not reset.
 //
-// Preconditions: every pass is complete (ny + 1 >= 2 beams of the same
-// ceil(nx/p) partial beams); ceil(nx/p) <= BeamDepth;
-// ny * ceil(nx/p) <= SliceDepth; the stream carries z_voxel whenever
-// wz = 0 (and z_voxel + 1 otherwise): golden z_weight(k) = 0 for k mod S = 0,
-// so every voxel slice pair starts with such a pass, which fills the store.
+// Preconditions: every pass is complete (ny >= 1 beams of the same
+// ceil(nx/p) partial beams, and a flush beam has the pass's length);
+// ceil(nx/p) <= BeamDepth; ny * ceil(nx/p) <= SliceDepth; the stream carries
+// z_voxel whenever wz = 0 (and z_voxel + 1 otherwise): golden z_weight(k) = 0
+// for k mod S = 0, so every voxel slice pair starts with such a pass, which
+// fills the store.
 //
 // Parameters:
 //   VoxelBits, WeightBits - as cube4_interp (Precision defaults 12, 8)
@@ -88,6 +97,7 @@ module cube4_interp_unit #(
   input  logic                  beam_end_i,
   input  logic                  slice_start_i,
   input  logic                  slice_end_i,
+  input  logic                  flush_i,
   input  logic [WordBits-1:0]   voxel_i,
   input  logic [WeightBits:0]   wx_i,
   input  logic [WeightBits:0]   wy_i,
@@ -123,18 +133,37 @@ module cube4_interp_unit #(
   // column x, beam y+1.
   logic           on_slice;   // wz = 0: the stream carries slice z_voxel
   logic           use_store;  // the front voxel comes from the slice store
+  logic           pass_last;  // the pass's last step
   logic [V-1:0]   vox, store_rdata, front_cur, back_cur;
   logic [2*V-1:0] beam_rdata; // {back, front} of column x, beam y
 
   assign on_slice  = wz_i == '0;
-  assign use_store = !on_slice && !slice_end_i;
-  assign vox       = slice_end_i ? '0 : voxel_i;
+  assign use_store = !on_slice && !flush_i;
+  assign pass_last = slice_end_i && beam_end_i && !flush_i;
+  assign vox       = flush_i ? '0 : voxel_i;
   assign front_cur = use_store ? store_rdata : vox;
   assign back_cur  = vox;
 
+  // A pass whose last sample beam is still to come (it needs the beam after
+  // the pass): set by the pass's last step, cleared by the end of the beam
+  // that emits it. A pass of one beam both emits the previous pass's row
+  // and opens its own.
+  logic open_q, open_d, drain;
+  assign drain  = open_q && (flush_i || slice_start_i);
+  assign open_d = (valid_i && pass_last) ? 1'b1
+                : (valid_i && drain && beam_end_i) ? 1'b0 : open_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      open_q <= 1'b0;
+    end else begin
+      open_q <= open_d;
+    end
+  end
+
   // Slice store: one entry per voxel of beams 0 .. ny-1, in stream order.
   // Written in a wz = 0 pass, re-read in the wz > 0 passes after it; the
-  // zero beam holds the pointer at entry 0 for the next pass.
+  // pass's last step ends the lap, so the next pass starts at entry 0.
   cube4_delay_ram #(
     .Width   (V),
     .MaxDepth(SliceDepth)
@@ -142,9 +171,9 @@ module cube4_interp_unit #(
     .clk_i    (clk_i),
     .rst_ni   (rst_ni),
     .depth_i  (SliceDepthBits'(SliceDepth)),
-    .clear_i  (valid_i && slice_end_i),
-    .advance_i(valid_i),
-    .last_i   (1'b0),
+    .clear_i  (1'b0),
+    .advance_i(valid_i && !flush_i),
+    .last_i   (pass_last),
     .write_i  (on_slice),
     .wdata_i  (voxel_i),
     .rdata_o  (store_rdata)
@@ -167,24 +196,35 @@ module cube4_interp_unit #(
   );
 
   // This cycle's column: [0] front y, [1] front y+1, [2] back y, [3] back y+1.
+  // A draining step's column is the finished pass's last beam over the zero
+  // border (its y+1 voxels are zero), while the beam delay takes the new
+  // pass's beam 0.
   logic [LinkBits-1:0] col_d;
-  assign col_d      = {back_cur, beam_rdata[V +: V], front_cur, beam_rdata[0 +: V]};
+  logic [V-1:0]        front_next, back_next;
+  assign front_next = drain ? '0 : front_cur;
+  assign back_next  = drain ? '0 : back_cur;
+  assign col_d      = {back_next, beam_rdata[V +: V], front_next, beam_rdata[0 +: V]};
   assign link_now_o = col_d;
 
   // -------------------------------------------------------------------------
   // Alignment register: holds the column until the x+1 column is available
   // (the next valid cycle), or one cycle if it ends a beam (x+1 = nx: zero).
+  // A draining column takes the finished pass's weights and tag, kept from
+  // its last step (the draining beam may itself end a pass of one beam).
   logic                  valid_q, valid_d, fire;
   logic [LinkBits-1:0]   col_q;
-  logic                  beam_start_q, beam_end_q, slice_start_q, slice_end_q;
+  logic                  beam_start_q, beam_end_q, slice_start_q, drain_q, flush_q;
   logic [WeightBits:0]   wx_q, wy_q, wz_q;
   logic [TagBits-1:0]    tag_q;
+  logic [WeightBits:0]   open_wx_q, open_wy_q, open_wz_q;  // the open pass's
+  logic [TagBits-1:0]    open_tag_q;
   logic                  second_q, second_d;  // the column's beam is beam 1
 
   assign fire    = valid_q && (valid_i || beam_end_q);
   assign valid_d = valid_i || (valid_q && !fire);
   // At the end of a beam the next beam's first output is slice_start iff the
-  // beam that ended was beam 0.
+  // beam that ended was beam 0: the next beam is then beam 1, or a beam
+  // draining a pass of one beam.
   assign second_d = (fire && beam_end_q) ? slice_start_q : second_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -202,12 +242,19 @@ module cube4_interp_unit #(
       col_q         <= col_d;
       beam_start_q  <= beam_start_i;
       beam_end_q    <= beam_end_i;
-      slice_start_q <= slice_start_i;
-      slice_end_q   <= slice_end_i;
-      wx_q          <= wx_i;
-      wy_q          <= wy_i;
-      wz_q          <= wz_i;
-      tag_q         <= tag_i;
+      slice_start_q <= slice_start_i && !flush_i;
+      drain_q       <= drain;
+      flush_q       <= flush_i;
+      wx_q          <= drain ? open_wx_q : wx_i;
+      wy_q          <= drain ? open_wy_q : wy_i;
+      wz_q          <= drain ? open_wz_q : wz_i;
+      tag_q         <= drain ? open_tag_q : tag_i;
+    end
+    if (valid_i && pass_last) begin
+      open_wx_q  <= wx_i;
+      open_wy_q  <= wy_i;
+      open_wz_q  <= wz_i;
+      open_tag_q <= tag_i;
     end
   end
   assign link_o = col_q;
@@ -235,8 +282,9 @@ module cube4_interp_unit #(
       assign vtags[i*VTagPortBits +: VTagPortBits] = '0;
     end
   end
-  // Beam 0 only fills the beam delay: no samples.
-  assign tri_valid = fire && !slice_start_q;
+  // A pass's beam 0 only fills the beam delay (no samples of its own); a
+  // flush beam after nothing emits nothing.
+  assign tri_valid = fire && (drain_q || !slice_start_q && !flush_q);
 
   cube4_interp #(
     .VoxelBits   (VoxelBits),
@@ -263,7 +311,7 @@ module cube4_interp_unit #(
 
   always_ff @(posedge clk_i) begin
     side_q <= {side_q[(TriLatency-1)*SideBits-1:0],
-               tag_q, slice_end_q, second_q, beam_end_q, beam_start_q};
+               tag_q, drain_q, second_q, beam_end_q, beam_start_q};
   end
 
   assign {tag_o, slice_end_o, slice_start_o, beam_end_o, beam_start_o} =

@@ -16,10 +16,12 @@ constexpr int kMaxLanes = 16;
 struct BeamFlags {
   bool beam_start = false, beam_end = false;    // partial beam j = 0, j = B-1
   bool slice_start = false, slice_end = false;  // beam y = 0, last beam of the slice
+  bool flush = false;  // voxel stream only: a beam of no voxels after a pass (docs/rtl-interp.md)
 };
 
 // Stream former -> interpolation: one pass per sample slice (plus the zero
-// pass when the gradient unit runs), beams 0 .. ny (ny = the zero beam).
+// pass when the gradient unit runs), beams 0 .. ny-1, and a flush beam
+// where FramePlan::beams() says.
 struct VoxelBeat {
   bool valid = false;
   BeamFlags f;

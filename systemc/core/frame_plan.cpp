@@ -10,7 +10,8 @@ FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits
                      std::vector<golden::SliceControl> slice_controls)
     : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]),
       B(pipes > 0 ? (regs.dim[0] + pipes - 1) / pipes : 0),  // p < 1 is refused below
-      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)), user_tag_bits(user_tag_bits_),
+      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)),
+      flush_each_pass(regs.gradient), user_tag_bits(user_tag_bits_),
       tag_base(tag_base_) {
   if (p < 1) throw std::invalid_argument("pipelines: " + std::to_string(p) + " (must be at least 1)");
   if (user_tag_bits < 1 || user_tag_bits > 32)
@@ -43,9 +44,10 @@ PassStep FramePlan::step(int pass, int y, int j) const {
   PassStep s;
   s.f.beam_start = j == 0;
   s.f.beam_end = j == B - 1;
-  s.f.slice_start = y == 0;
-  s.f.slice_end = y == ny;
-  if (!zero_pass(pass)) {
+  s.f.flush = y == ny;
+  s.f.slice_start = y == 0 && !s.f.flush;
+  s.f.slice_end = y == ny - 1;
+  if (!zero_pass(pass) && !s.f.flush) {
     const golden::SliceControl& c = slices[static_cast<size_t>(pass)];
     s.wx = c.wx;
     s.wy = c.wy;

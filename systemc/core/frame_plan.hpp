@@ -48,6 +48,10 @@ struct FramePlan {
   int B;              // partial beams per beam, ceil(nx / p)
   int K;              // sample slices, nz * S
   int passes;         // interpolation passes: K, plus the zero pass when the gradient unit runs
+  // Whether every pass ends with a flush beam (the gradient unit runs its
+  // own zero beam in the beam after each slice, docs/rtl-gradient.md) or
+  // only the stream's last (passes back to back, docs/rtl-interp.md).
+  bool flush_each_pass;
   int user_tag_bits;
   uint64_t tag_base;
   std::vector<golden::SliceControl> slices;  // slice_control(k), k = 0 .. K (K: the next of the last)
@@ -56,7 +60,12 @@ struct FramePlan {
   // (docs/rtl-interp.md); nz for the zero pass (no memory read).
   int pass_voxel_slice(int pass) const;
   bool zero_pass(int pass) const { return pass >= K; }
-  // Partial beam j of beam y (0 .. ny; ny is the zero beam) of a pass.
+  // The beams the stream gives a pass: ny, and the flush beam (beam ny)
+  // after every pass or only after the stream's last.
+  int beams(bool stream_last_pass) const { return ny + (flush_each_pass || stream_last_pass ? 1 : 0); }
+  // A pass's beats in a stream of passes (the last pass's flush aside).
+  uint64_t pass_beats() const { return static_cast<uint64_t>(beams(false)) * static_cast<uint64_t>(B); }
+  // Partial beam j of beam y (0 .. ny; ny is the flush beam) of a pass.
   PassStep step(int pass, int y, int j) const;
   // The interpolation ring's tag of a pass: the gradient ring's control
   // fields (realign x4, S, ZeroSlice), then tag_base + pass.

@@ -18,7 +18,7 @@ StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, AddrIf& addr
 StreamFormer::Pos StreamFormer::following(Pos p) const {
   if (++p.j == plan_.B) {
     p.j = 0;
-    if (++p.y > plan_.ny) {
+    if (++p.y == plan_.beams(p.frame + 1 == frames_ && p.pass + 1 == plan_.passes)) {
       p.y = 0;
       if (++p.pass == plan_.passes) {
         p.pass = 0;

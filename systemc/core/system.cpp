@@ -369,7 +369,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
 
   if (cfg.all_tlm() && !cfg.cycle_level) {
     res.plane = run_tlm_frame(plan, vol, progress, cfg.accumulators, polygons);
-    if (source) res.polygon_stall_cycles = source->stalls_of_frame(static_cast<uint64_t>(plan.ny + 1) * plan.B);
+    if (source) res.polygon_stall_cycles = source->stalls_of_frame(plan.pass_beats());
     res.frame_cycles = cc.latency + res.polygon_stall_cycles;
     for (int pass = 0; pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
@@ -414,7 +414,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     u.checker = checker.get();
     u.polygons = source.get();
     u.progress = progress;
-    u.total_beats = cc.stream;
+    u.total_beats = cc.stream * static_cast<uint64_t>(cfg.frames) + cc.flush;
     if (cfg.kernel == Kernel::SystemC) {
       CycleTop& top = cycle_top();
       top.start(u);

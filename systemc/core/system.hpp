@@ -125,8 +125,9 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg);
 // (systemc/core/cycle_model.cpp; equal to run_frame()'s frame_cycles at RTL,
 // which the system tests assert).
 struct CycleCount {
-  uint64_t stream = 0;   // voxel beats: passes * (ny + 1) * ceil(nx / p)
-  uint64_t latency = 0;  // first-frame latency: stream + the pipeline's drain
+  uint64_t stream = 0;   // voxel beats of a frame in a stream of frames: the steady-state interval
+  uint64_t flush = 0;    // the flush beam's beats that end a stream after its last frame (0: in `stream`)
+  uint64_t latency = 0;  // first-frame latency: stream + flush + the pipeline's drain
 };
 CycleCount frame_cycles(const golden::Registers& r, int p);
 

@@ -12,7 +12,12 @@ TlmInterp::TlmInterp(const FramePlan& plan)
 }
 
 void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
-  if (in.valid) {
+  if (in.valid && in.f.flush) {
+    // The RTL emits a pass's last sample beam here; this model emitted the
+    // whole pass at its last beat, so a flush beam leaves the slot free
+    // (a gradient unit's own zero beam runs in it).
+    out_.push_back(SampleBeat{});
+  } else if (in.valid) {
     if (in.f.slice_start && in.f.beam_start) y_ = 0;
     if (y_ < plan_.ny) {
       // The voxel word {tag, value}: the value in its voxel_bits, the tag above.
@@ -57,7 +62,6 @@ void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
           }
           out_.push_back(b);
         }
-      for (int j = 0; j < plan_.B; ++j) out_.push_back(SampleBeat{});
     }
   }
   if (out_.empty()) {

@@ -2,8 +2,8 @@
 // into a slice, interpolates it with golden SliceInterp (the renderer's
 // own), and streams the sample slice out, one beat per clock, after the
 // pass has arrived. Its latency is a pass, not the RTL's 4 cycles; the
-// stream it emits keeps the ring's protocol (B idle cycles after each
-// slice: the gradient unit's zero beam).
+// stream it emits keeps the ring's protocol (a free cycle for every beat of
+// a flush beam: the gradient unit's zero beam runs in them).
 #pragma once
 
 #include "golden/slice_steps.hpp"

@@ -336,9 +336,11 @@ inline sysc::VoxelBeat junk_voxel_beat(Random& rng, int p, int voxel_bits, int t
 
 // The frames back to back, frame i formed by plans[i] (its p, passes and
 // tags) from the voxels of frames[i]; tag(i, pass) is the tag its beats
-// carry. A frame with shorter beams than the one before starts after the
-// difference in idle cycles (the next pass's beam 0 is the gradient ring's
-// zero beam of the last slice).
+// carry. Passes follow back to back where the plan allows (FramePlan::
+// beams()), and a flush beam ends a frame followed by one of other beam
+// length, and the stream. A frame with shorter beams than the one before
+// starts after the difference in idle cycles (the next pass's beam 0 is the
+// gradient ring's zero beam of the last slice).
 inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
                                 const std::vector<sysc::FramePlan>& plans,
                                 const std::function<uint64_t(int frame, int pass)>& tag, int voxel_bits, int tag_bits,
@@ -350,6 +352,13 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
     s.idle += static_cast<uint64_t>(n);
   };
   std::vector<PassSample> due;  // with the index of the beat that produces them
+  // The pass whose last sample beam the next beam emits (docs/rtl-interp.md,
+  // "Passes back to back"): frame, pass, tag, or frame -1 for none.
+  struct Open {
+    int frame = -1, pass = 0;
+    uint64_t tag = 0;
+    int ny = 0;
+  } open;
   for (size_t fi = 0; fi < frames.size(); ++fi) {
     const SampleFrame& f = *frames[fi];
     const sysc::FramePlan& plan = plans[fi];
@@ -361,17 +370,23 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
       const bool junk_weights = zero && opt.junk;
       const auto junk_wx = junk_weights ? static_cast<uint32_t>(rng.range(0, 256)) : 0u;
       const auto junk_wy = junk_weights ? static_cast<uint32_t>(rng.range(0, 256)) : 0u;
-      for (int y = 0; y <= plan.ny; ++y)
+      // A pass drains into the next pass's beam 0 only if that beam is as
+      // long: before a frame of other beams, and at the end, a flush beam.
+      const bool flushed = pass + 1 == plan.passes && (fi + 1 == frames.size() || plans[fi + 1].B != plan.B);
+      const int beams = plan.beams(flushed);
+      for (int y = 0; y < beams; ++y)
         for (int j = 0; j < plan.B; ++j) {
           if (opt.stall > 0 && rng.chance(opt.stall)) idle(static_cast<int>(rng.range(1, opt.max_gap)));
           const sysc::PassStep st = plan.step(pass, y, j);
           sysc::VoxelBeat b;
           b.valid = true;
           b.f = st.f;
-          b.wx = junk_weights ? junk_wx : st.wx;
-          b.wy = junk_weights ? junk_wy : st.wy;
-          b.wz = st.wz;
-          b.tag = pass_tag;
+          // A flush beam's weights are ignored: junk ones show it.
+          const bool junk_flush = opt.junk && st.f.flush;
+          b.wx = junk_weights ? junk_wx : junk_flush ? static_cast<uint32_t>(rng.range(0, 256)) : st.wx;
+          b.wy = junk_weights ? junk_wy : junk_flush ? static_cast<uint32_t>(rng.range(0, 256)) : st.wy;
+          b.wz = junk_flush ? static_cast<uint32_t>(rng.range(0, 256)) : st.wz;
+          b.tag = junk_flush ? rng.bits(tag_bits) : pass_tag;
           for (int q = 0; q < p; ++q) {
             const int x = j * p + q;  // zero outside the volume
             uint32_t v = st.reads ? f.pv->at(x, y, st.voxel_slice) : 0;
@@ -381,12 +396,21 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
           }
           s.beats.push_back(b);
           ++s.valid;
-          if (y > 0) {
-            sysc::BeamFlags of = st.f;
+          sysc::BeamFlags of;
+          of.beam_start = st.f.beam_start;
+          of.beam_end = st.f.beam_end;
+          if (y == 0 || y == plan.ny) {  // the open pass's last sample beam, if any
+            if (open.frame >= 0) {
+              of.slice_start = open.ny == 1;
+              of.slice_end = true;
+              due.push_back({s.beats.size() - 1, open.frame, open.pass, open.ny - 1, j, of, open.tag});
+            }
+          } else {
             of.slice_start = y == 1;
-            of.slice_end = y == plan.ny;
             due.push_back({s.beats.size() - 1, static_cast<int>(fi), pass, y - 1, j, of, pass_tag});
           }
+          if (st.f.beam_end && (y == 0 || y == plan.ny)) open.frame = -1;
+          if (st.f.beam_end && y == plan.ny - 1) open = {static_cast<int>(fi), pass, pass_tag, plan.ny};
         }
     }
   }

@@ -5,8 +5,8 @@
 // The ring test builds scenes with the golden host driver, streams the
 // permuted volume into the verilated ring cycle by cycle as the system's
 // stream former does (FramePlan: docs/rtl-interp.md's order, sample slice by
-// sample slice, beam by beam including the zero beam y = ny, partial beam
-// by partial beam, with the slice weights of golden slice_control()), and
+// sample slice, beam by beam (passes back to back, a flush beam at the
+// end), partial beam by partial beam, with the slice weights of golden slice_control()), and
 // compares every output sample of
 // every pipeline with the value golden render_fixed() computed for the same
 // (x, y, k_s) (collected with a SampleProbe), together with its flags, its
@@ -224,15 +224,20 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
   // x < nx are exactly the golden samples.
   uint64_t expected_samples = 0, golden_samples = 0;
   uint64_t expected_valid = 0;
-  for (const SampleFrame* f : frames) {
+  for (size_t fi = 0; fi < frames.size(); ++fi) {
+    const SampleFrame* f = frames[fi];
     const uint64_t B = static_cast<uint64_t>((f->nx + rp.p - 1) / rp.p);
     expected_samples += static_cast<uint64_t>(f->K) * f->ny * B * rp.p;
-    expected_valid += static_cast<uint64_t>(f->ny + 1) * B * f->K;
+    expected_valid += static_cast<uint64_t>(f->ny) * B * f->K;
+    // A flush beam after the last frame and before a frame of other beams.
+    const bool last = fi + 1 == frames.size();
+    if (last || (frames[fi + 1]->nx + rp.p - 1) / rp.p != static_cast<int>(B)) expected_valid += B;
     golden_samples += f->samples.size();
   }
   EXPECT_EQ(r.checked, expected_samples);
-  // Cycle count: (ny + 1) * ceil(nx/p) * K input cycles per frame plus the
-  // idle ones; the last sample 4 cycles after the last input.
+  // Cycle count: ny * ceil(nx/p) * K input cycles per frame (passes back to
+  // back), the flush beams and the idle cycles; the last sample 4 cycles
+  // after the last input.
   EXPECT_EQ(s.valid, expected_valid);
   EXPECT_EQ(s.beats.size(), s.valid + s.idle);
   EXPECT_EQ(r.last_output, s.last_input + kInterpLatency);
@@ -240,8 +245,8 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
 }
 
 
-// Every view, S = 1, 2, 3, without and with stalls (junk in the zero beam
-// with stalls).
+// Every view, S = 1, 2, 3, without and with stalls (junk in the flush
+// beam with stalls).
 template <class M>
 void ring_matrix(const RingParams& rp) {
   Timer t("p=" + std::to_string(rp.p) + " matrix");
@@ -269,8 +274,9 @@ TEST(RtlInterpRing, P2MatchesGoldenSamples) { ring_matrix<Vcube4_interp_ring_p2>
 TEST(RtlInterpRing, P4MatchesGoldenSamples) { ring_matrix<Vcube4_interp_ring>(kRingP4); }
 TEST(RtlInterpRing, P5MatchesGoldenSamples) { ring_matrix<Vcube4_interp_ring_p5>(kRingP5); }
 
-// Frames back to back without a reset between them (the stores re-align on
-// every pass's zero beam), with stalls.
+// Frames back to back without a reset between them (the slice store's lap
+// ends with each pass's last voxel; a frame of other beam length follows a
+// flush beam), with stalls.
 TEST(RtlInterpRing, BackToBackFrames) {
   Timer t("back-to-back frames");
   const std::vector<const SampleFrame*> frames = back_to_back_frames(/*gradient=*/false);

@@ -24,6 +24,7 @@ using namespace cube4::rtl;
 struct Beat {
   bool bs, be, ss, se;
   int wx = 0, wy = 0, wz = 0;
+  bool fl = false;
 };
 
 template <class M>
@@ -33,6 +34,7 @@ void drive(M& m, const Beat& b) {
   m.beam_end_i = b.be;
   m.slice_start_i = b.ss;
   m.slice_end_i = b.se;
+  m.flush_i = b.fl;
   m.wx_i = static_cast<uint32_t>(b.wx);
   m.wy_i = static_cast<uint32_t>(b.wy);
   m.wz_i = static_cast<uint32_t>(b.wz);
@@ -42,14 +44,15 @@ void drive(M& m, const Beat& b) {
   rise(m);
 }
 
-// A pass: beams 0 .. ny-1 and the zero beam, each of `b` partial beams;
-// `edit` may change beat (y, j) (y = ny: the zero beam) to plant a fault.
+// A pass: beams 0 .. ny-1 and (flush) a flush beam, each of `b` partial
+// beams; `edit` may change beat (y, j) (y = ny: the flush beam) to plant a
+// fault.
 using Edit = std::function<void(int y, int j, Beat&)>;
 template <class M>
-void pass(M& m, int ny, int b, int wz, const Edit& edit = nullptr) {
-  for (int y = 0; y <= ny; ++y)
+void pass(M& m, int ny, int b, int wz, const Edit& edit = nullptr, bool flush = true) {
+  for (int y = 0; y < ny + (flush ? 1 : 0); ++y)
     for (int j = 0; j < b; ++j) {
-      Beat beat{j == 0, j == b - 1, y == 0, y == ny, 16, 32, wz};
+      Beat beat{j == 0, j == b - 1, y == 0 && y < ny, y == ny - 1, 16, 32, wz, y == ny};
       if (edit) edit(y, j, beat);
       drive(m, beat);
     }
@@ -73,8 +76,24 @@ using P5 = Vcube4_interp_ring_p5;  // MaxDim 12: beam delay 3, slice store 36 en
 
 TEST(RtlInterpSva, StreamFraming) {
   CUBE4_SKIP_WITHOUT_ASSERTIONS();
-  // Two passes of 2 beams x 3 partial beams (9 cycles each), correct.
+  // Two passes of 2 beams x 3 partial beams and a flush beam (9 cycles
+  // each), correct; so are passes back to back, one flush beam at the end,
+  // and a flush beam after a flush beam.
   run<P2>([](P2& m) { pass(m, 2, 3, 0); pass(m, 2, 3, 0); }, "", {});
+  run<P2>([](P2& m) { pass(m, 2, 3, 0, nullptr, false); pass(m, 1, 3, 0, nullptr, false); pass(m, 2, 3, 0); }, "",
+          {});
+  run<P2>([](P2& m) { pass(m, 2, 3, 0); pass(m, 0, 3, 0); }, "", {});
+  // A flush beam that also claims a slice flag.
+  run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int, Beat& b) { if (y == 2) b.ss = true; }); },
+          "a_stream_framing", {"cycle 7:", "slice_start 1 slice_end 0 flush 1"});
+  run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int, Beat& b) { if (y == 2) b.se = true; }); },
+          "a_stream_framing", {"cycle 7:", "slice_end 1 flush 1"});
+  // A flush beam shorter than the pass's beams.
+  run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int j, Beat& b) { if (y == 2 && j == 1) b.be = true; }); },
+          "a_stream_framing", {"cycle 8:", "flush 1 at partial beam 1 (beams of this pass: 3 partial beams"});
+  // A pass's second beam after its last (slice_end) beam, not a new pass.
+  run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int, Beat& b) { if (y == 0) b.se = true; }, false); },
+          "a_stream_framing", {"cycle 4:", "slice_start 0 slice_end 1"});
   // The second partial beam marked as a beam start.
   run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int j, Beat& b) { if (y == 0 && j == 1) b.bs = true; }); },
           "a_stream_framing", {"cycle 2:", "flags beam_start 1 beam_end 0 slice_start 1"});
@@ -91,8 +110,10 @@ TEST(RtlInterpSva, WeightsConstant) {
   // A new pass may bring new weights ...
   run<P2>([](P2& m) { pass(m, 2, 3, 0); pass(m, 2, 3, 0, [](int, int, Beat& b) { b.wx = 17; }); }, "", {});
   // ... a pass may not change them.
-  run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int, Beat& b) { if (y == 2) b.wx = 17; }); },
-          "a_weights_constant", {"cycle 7:", "weights (17, 32, 0) changed inside a pass that began with (16, 32, 0)"});
+  run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int, Beat& b) { if (y == 1) b.wx = 17; }); },
+          "a_weights_constant", {"cycle 4:", "weights (17, 32, 0) changed inside a pass that began with (16, 32, 0)"});
+  // A flush beam's weights are ignored.
+  run<P2>([](P2& m) { pass(m, 2, 3, 0, [](int y, int, Beat& b) { if (y == 2) b.wx = 17; }); }, "", {});
 }
 
 TEST(RtlInterpSva, BeamFits) {

@@ -118,9 +118,9 @@ inline void run_seeded(const Case& c, int p, std::array<Level, sysc::kUnits> lev
   EXPECT_EQ(res.simulated[1], simulated.gradient) << "the gradient unit runs exactly when needed (or forced)";
   const sysc::CycleCount cc = sysc::frame_cycles(simulated, p);
   // A clocked run: the stream former's last voxel beat is beat number
-  // `stream` (one partial beam per clock, no gap).
+  // `stream + flush` (one partial beam per clock, no gap).
   if (!cfg.all_tlm() || cycle_level) {
-    EXPECT_EQ(res.last_beat[0], cc.stream) << "voxel beats per frame";
+    EXPECT_EQ(res.last_beat[0], cc.stream + cc.flush) << "voxel beats per frame";
   }
   bool all_rtl = true;
   for (Level l : levels) all_rtl = all_rtl && l == Level::Rtl;
@@ -128,8 +128,11 @@ inline void run_seeded(const Case& c, int p, std::array<Level, sysc::kUnits> lev
     EXPECT_EQ(res.frame_cycles, cc.latency) << "RTL cycles against the cycle model";
   }
   const int B = (regs.dim[0] + p - 1) / p;
+  // Passes back to back and a flush beam at the end, or (gradient unit on)
+  // a flush beam after every pass and a zero pass.
   EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices() + (simulated.gradient ? 1 : 0)) *
-                           static_cast<uint64_t>(regs.dim[1] + 1) * static_cast<uint64_t>(B));
+                           static_cast<uint64_t>(regs.dim[1] + (simulated.gradient ? 1 : 0)) * static_cast<uint64_t>(B));
+  EXPECT_EQ(cc.flush, simulated.gradient ? 0u : static_cast<uint64_t>(B));
 }
 
 constexpr std::array<Level, sysc::kUnits> kRtl{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};

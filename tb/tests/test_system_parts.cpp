@@ -73,12 +73,13 @@ TEST(StreamFormer, DeskewedBeamsAreThePermutedVolume) {
         sysc::TlmAddr addr(mem.layout(), {r.perm, r.flip});
         sysc::StreamFormer former(plan, mem, addr);
         for (int pass = 0; pass < plan.passes; ++pass)
-          for (int y = 0; y <= plan.ny; ++y)
+          for (int y = 0; y < plan.beams(pass + 1 == plan.passes); ++y)
             for (int j = 0; j < plan.B; ++j) {
               const sysc::VoxelBeat b = former.next();
               ASSERT_TRUE(b.valid);
               ASSERT_EQ(b.f.beam_start, j == 0);
-              ASSERT_EQ(b.f.slice_end, y == plan.ny);
+              ASSERT_EQ(b.f.slice_end, y == plan.ny - 1);
+              ASSERT_EQ(b.f.flush, y == plan.ny);
               const int z = plan.pass_voxel_slice(pass);
               for (int k = 0; k < p; ++k) {
                 const int x = j * p + k;
