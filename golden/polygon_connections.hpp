@@ -21,7 +21,7 @@
 // Rates are §6's assumptions (golden Scene::polygon_engine, scene keys
 // under "polygon_engine": docs/scene.md). A performance model of the
 // host-side connection, not a cycle-level one: the volume's time is its
-// slices' beats, without the frame's zero pass and drain (docs/
+// slices' beats, without the stream's zero pass and drain (docs/
 // performance.md, "Cube-5: the two connections").
 #pragma once
 #include <cstdint>

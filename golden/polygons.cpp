@@ -366,7 +366,7 @@ PolygonTraffic polygon_traffic(const PolygonFrame& f, const std::vector<SlabLoad
     const SlabImage& s = f.slabs[k];
     ++t.slabs;
     t.raw_bytes += static_cast<uint64_t>(s.width()) * static_cast<uint64_t>(s.beams()) * 4 * channel;
-    t.slice_cycles = static_cast<uint64_t>(s.beams() + 1) * static_cast<uint64_t>(s.lane_width(0));
+    t.slice_cycles = static_cast<uint64_t>(s.beams()) * static_cast<uint64_t>(s.lane_width(0));
     t.flits += loads[k].flits;
     t.rle_bytes += 2 * loads[k].words;
     t.rle_cycles += std::max(loads[k].read_flits, t.slice_cycles);

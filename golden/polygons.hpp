@@ -94,7 +94,7 @@ struct PolygonTraffic {
   uint64_t rle_bytes = 0;        // those lines' 16-bit words
   uint64_t raw_bytes = 0;        // every slab as a plain RGBA image, nx x ny
   uint64_t image_bytes = 0;      // front and back (RGBA) and Z, once per frame
-  uint64_t slice_cycles = 0;     // a pass's beats, zero beam included: (ny + 1) ceil(nx / p)
+  uint64_t slice_cycles = 0;     // a pass's beats: ny ceil(nx / p) (passes back to back)
   // Sum over slabs of max(the busiest pipeline's flits, slice_cycles):
   // Cube-5's T = sum max(flits / f_rle, slice time) for the run-length
   // connection, in cycles of the volume pipeline's clock.

@@ -45,7 +45,7 @@ module cube4_gradient_ring #(
   parameter int unsigned  UserTagBits       = 8,
   parameter int unsigned  MaxDim            = cube4_pkg::MaxDim,
   parameter int unsigned  VoxelTagBits      = cube4_pkg::VoxelTagBits,
-  localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 1,
+  localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 2,
   localparam int unsigned TagBits           = CtrlBits + UserTagBits,
   localparam int unsigned DimBits           = $clog2(MaxDim + NumPipes),
   localparam int unsigned VTagPortBits      = VoxelTagBits > 0 ? VoxelTagBits : 1

@@ -12,7 +12,10 @@
 // re-aligned position in slices s+1 (ahead) and s-1 (behind), samples
 // outside the grid being zero. The gradient of S(x, y, s) is computed when
 // its column of beam y+1 of slice s+1 arrives: one slice, one beam and one
-// sample behind the input (VolumePro §3.2). The samples come from:
+// sample behind the input (VolumePro §3.2); the last beam's (y = ny-1, over
+// the zero border) in the beam after slice s+1, beam 0 of the next slice,
+// which gives no gradient of its own (a "draining" beam). So slices follow
+// back to back at ny beams each. The samples come from:
 //   - the stream itself: slice s+1 (ahead), beam y+1;
 //   - the slice delay (one 2V-bit RAM entry per sample of a slice): slice s
 //     (current) and slice s-1 (behind) of the same (x, y+1);
@@ -28,22 +31,28 @@
 //     beam extension), and pipeline p-1 holds one more (prev).
 //
 // Zero padding (docs/rtl-gradient.md, "Zero padding"):
-//   - beams: after the last sample of every slice (slice_end_i and
-//     beam_end_i) the unit runs one zero beam of its own: B = ceil(nx/p)
-//     steps (counted in that beam), one per clock, with zero samples. It
-//     produces the slice's last gradient beam and, being written into the
-//     beam delay, the zero row above beam 0. valid_i must stay low in those
-//     B cycles: the interpolation ring leaves exactly them free (its beam 0
-//     of the next pass produces no samples). A valid_i in them is ignored;
-//     the assertion a_zero_beam_idle (rtl/assert/cube4_gradient_unit_sva.sv)
-//     reports it in simulation.
-//   - slices: every frame ends with one zero slice (the tag's ZeroSlice bit;
-//     its sample values are ignored and taken as zero), which the stream
-//     former supplies as one more pass through the interpolation ring (pass
-//     K: z_voxel = nz, wz = 0, voxels zero, no memory read). Its input
-//     produces the gradients of the frame's last slice. The first slice of
-//     a frame (after reset or after a zero slice) produces no gradients and
-//     stores its current-slice samples as zero (the slice behind slice 0).
+//   - beams: a slice's last gradient beam takes zeros for beam ny; it is
+//     computed in the next slice's beam 0 from the beam delay's rows, while
+//     that beam is stored (with a zero row above it). After the stream's
+//     last slice, the zero slice, the unit runs one zero beam of its own:
+//     B = ceil(nx/p) steps (counted in that beam), one per clock, with zero
+//     samples, producing the frame's last gradient beam. valid_i must stay
+//     low in those B cycles: the interpolation ring leaves exactly them
+//     free (its flush beam after the zero pass emits the zero slice's last
+//     samples, and the next beam produces none). A valid_i in them is
+//     ignored; the assertion a_zero_beam_idle
+//     (rtl/assert/cube4_gradient_unit_sva.sv) reports it in simulation.
+//   - slices: the slice behind a frame's first slice is zero, and so is the
+//     slice ahead of its last. A frame's first slice carries the tag's
+//     FrameStart bit: its input is stored as the new frame's slice 0 while
+//     the unit computes the previous frame's last slice with zeros ahead
+//     (frames back to back, no gap); after a reset or a zero slice it
+//     produces no gradients. The stream's last frame ends with one zero
+//     slice (the tag's ZeroSlice bit; its sample values are ignored and
+//     taken as zero), which the stream former supplies as one more pass
+//     through the interpolation ring (pass K: z_voxel = nz, wz = 0, voxels
+//     zero, no memory read). Its input produces the gradients of the
+//     frame's last slice.
 //   - x: columns x >= nx of the last partial beam must carry zero samples
 //     (cube4_interp_ring's padding columns do); x = B*p reads zero (mask).
 //     Gradients of the padding columns are emitted too (x_o >= nx) and must
@@ -56,7 +65,8 @@
 //   [2*R +: R] ahead_x
 //   [3*R +: R] ahead_y
 //   [4*R +: SupersamplingBits] S (registers' supersampling)
-//   [4*R + SupersamplingBits]  ZeroSlice: the frame's trailing zero slice
+//   [4*R + SupersamplingBits]  ZeroSlice: the stream's trailing zero slice
+//   [4*R + SupersamplingBits + 1] FrameStart: a frame's first slice
 //   [CtrlBits +: UserTagBits]  user tag, out on tag_o with the slice's samples
 //
 // Voxel tags (bela §III; VoxelTagBits > 0): vtag_i is each sample's voxel
@@ -66,8 +76,7 @@
 // slice's, read one lap later as the current slice's) and a beam delay of
 // the current slice's (read as beam y's), both cube4_delay_ram with the
 // sample delays' control, so the tags stay in step with their samples. The
-// zero slice, the zero beam and a frame's first slice carry tag 0, as their
-// samples carry 0. With VoxelTagBits = 0 there is none of it; vtag_o is 0.
+// zero slice and the zero beam carry tag 0, as their samples carry 0. With VoxelTagBits = 0 there is none of it; vtag_o is 0.
 //
 // Output per gradient (valid_o): gx_o, gy_o, gz_o; sample_o = S(x, y, s)
 // (the centre sample, for the shader) and vtag_o its voxel tag;
@@ -79,17 +88,18 @@
 // alignment register; it leaves with the next step, or one cycle later if it
 // ends a beam, into cube4_gradient (3 cycles). Without idle cycles the
 // gradient of S(x, y, s) is on the outputs 4 cycles after the column of
-// beam y+1 of slice s+1 (or of the zero beam, for y = ny-1) arrived; the
-// last gradient of a frame 4 cycles after the last zero-beam step, i.e.
-// B + 4 cycles after the zero slice's last input. One gradient per clock.
+// beam y+1 of slice s+1 (or of beam 0 of slice s+2, for y = ny-1) arrived;
+// the last gradient of a stream 4 cycles after the last zero-beam step,
+// i.e. B + 4 cycles after the zero slice's last input. One gradient per
+// clock.
 // Handshake: valid-only, no back-pressure. Reset: control (valid, counters,
 // first-slice state, delay pointers); data registers and RAMs are not reset.
 //
 // Preconditions: every slice is complete (ny >= 1 beams of the same
-// B <= BeamDepth partial beams, ny * B <= SliceDepth); every frame ends with
-// a zero slice (and is its own first slice after a reset); B idle cycles
-// after each slice's last sample; all pipelines see the same valid_i and
-// flags (lock step).
+// B <= BeamDepth partial beams, ny * B <= SliceDepth); frames back to back
+// have the same ny and B (another frame follows a zero slice); the stream
+// ends with a zero slice and B idle cycles after its last sample; all
+// pipelines see the same valid_i and flags (lock step).
 //
 // Parameters:
 //   NumPipes, PipeIndex   - p, and this pipeline's k (0 .. p-1): k = 0 takes
@@ -123,7 +133,7 @@ module cube4_gradient_unit #(
   parameter int unsigned  VoxelTagBits      = cube4_pkg::VoxelTagBits,
   localparam int unsigned BeamDepth         = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth        = MaxDim * BeamDepth,
-  localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 1,
+  localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 2,
   localparam int unsigned TagBits           = CtrlBits + UserTagBits,
   localparam int unsigned DimBits           = $clog2(MaxDim + NumPipes),
   localparam int unsigned LinkBits          = 5 * VoxelBits,
@@ -167,6 +177,7 @@ module cube4_gradient_unit #(
   localparam int unsigned R              = WeightBits + 1;  // one realign field
   localparam int unsigned SBits          = SupersamplingBits;
   localparam int unsigned ZeroBit        = 4 * R + SBits;
+  localparam int unsigned StartBit       = ZeroBit + 1;
   localparam bit          First          = PipeIndex == 0;
   localparam bit          Last           = PipeIndex == NumPipes - 1;
   // Latency of cube4_gradient (its header): the side data travels beside it.
@@ -181,37 +192,56 @@ module cube4_gradient_unit #(
   logic [BeamBits-1:0]  zb_left_q, zb_left_d;   // zero-beam steps still to run
   logic [BeamBits-1:0]  j_q, j_d, j_step;       // partial beam of the step
   logic [DimBits-1:0]   y_q, y_d, y_step;       // beam of the step (ny: zero beam)
-  logic                 s_beam_start, s_beam_end, slice_last;
-  logic                 first_q, first_d;       // the input slice is a frame's first
+  logic [DimBits-1:0]   last_y_q;               // the last slice's last beam, ny-1
+  logic                 s_beam_start, s_beam_end, slice_last, in_zero, in_start;
+  logic                 first_q, first_d;       // no slice before the input slice
+  logic                 open_q, open_d;         // a slice's last gradient beam is due
+  logic                 drain;                  // this step computes it
   logic [TagBits-1:0]   tag_in_q;               // tag of the input slice (s+1)
   logic [TagBits-1:0]   tag_out_q;              // tag of the output slice (s)
+  logic [TagBits-1:0]   tag_prev_q;             // the slice before (s-1): a draining beam's
+  logic [TagBits-1:0]   ctl;                    // this step's output slice's tag
 
   assign zb_active    = zb_left_q != '0;
   assign step_in      = valid_i && !zb_active;
   assign step         = step_in || zb_active;
+  assign in_zero      = tag_i[ZeroBit];
+  assign in_start     = tag_i[StartBit];
   assign s_beam_start = zb_active ? (j_q == '0) : beam_start_i;
   assign s_beam_end   = zb_active ? (zb_left_q == BeamBits'(1)) : beam_end_i;
   assign slice_last   = step_in && slice_end_i && beam_end_i;
   assign j_step       = s_beam_start ? '0 : j_q;
   assign y_step       = (step_in && slice_start_i) ? '0 : y_q;
+  assign drain        = step_in && slice_start_i && open_q;
 
   always_comb begin
     j_d       = j_q;
     y_d       = y_q;
     zb_left_d = zb_left_q;
     first_d   = first_q;
+    open_d    = open_q;
     if (step) begin
       j_d = s_beam_end ? '0 : j_step + BeamBits'(1);
       y_d = s_beam_end ? y_step + DimBits'(1) : y_step;
     end
+    if (drain && s_beam_end) begin
+      open_d = 1'b0;
+    end
     if (slice_last) begin
-      zb_left_d = j_step + BeamBits'(1);  // B: the zero beam as long as this beam
+      // A slice that produced gradients leaves its last beam's due; the
+      // zero slice's own zero beam computes it instead.
+      if (in_zero) begin
+        zb_left_d = j_step + BeamBits'(1);  // B: the zero beam as long as this beam
+      end else begin
+        open_d = !first_q;
+      end
+      first_d = 1'b0;
     end else if (zb_active) begin
       zb_left_d = zb_left_q - BeamBits'(1);
     end
-    // The slice after a zero slice is the next frame's first.
+    // The slice after a zero slice starts a stream again.
     if (zb_active && s_beam_end) begin
-      first_d = tag_in_q[ZeroBit];
+      first_d = 1'b1;
     end
   end
 
@@ -221,49 +251,69 @@ module cube4_gradient_unit #(
       j_q       <= '0;
       y_q       <= '0;
       first_q   <= 1'b1;
+      open_q    <= 1'b0;
     end else begin
       zb_left_q <= zb_left_d;
       j_q       <= j_d;
       y_q       <= y_d;
       first_q   <= first_d;
+      open_q    <= open_d;
     end
   end
 
   // The output slice's control is the tag its samples arrived with, one
-  // slice earlier: it moves on when the next slice's first sample arrives
-  // (beam 0 steps produce no gradients).
+  // slice earlier: it moves on when the next slice's first sample arrives;
+  // a draining beam's output slice is the one before (still tag_out_q in
+  // the beam's first step).
   always_ff @(posedge clk_i) begin
     if (step_in) begin
       tag_in_q <= tag_i;
     end
     if (step_in && slice_start_i && beam_start_i) begin
-      tag_out_q <= tag_in_q;
+      tag_out_q  <= tag_in_q;
+      tag_prev_q <= tag_out_q;
+    end
+    if (slice_last) begin
+      last_y_q <= y_step;
     end
   end
+  assign ctl = (drain && !beam_start_i) ? tag_prev_q : tag_out_q;
 
   logic [W-1:0]     behind_wx, behind_wy, ahead_wx, ahead_wy;
   logic             behind_mx, behind_my, ahead_mx, ahead_my;  // base -1
   logic [SBits-1:0] supersampling;
-  assign {behind_mx, behind_wx} = tag_out_q[0*R +: R];
-  assign {behind_my, behind_wy} = tag_out_q[1*R +: R];
-  assign {ahead_mx, ahead_wx}   = tag_out_q[2*R +: R];
-  assign {ahead_my, ahead_wy}   = tag_out_q[3*R +: R];
-  assign supersampling          = tag_out_q[4*R +: SBits];
+  logic [TagBits-1:0] ctl_q;  // the fired column's (below)
+  assign behind_my              = ctl[1*R + W];
+  assign ahead_my               = ctl[3*R + W];
+  assign {behind_mx, behind_wx} = ctl_q[0*R +: R];
+  assign behind_wy              = ctl_q[1*R +: W];
+  assign {ahead_mx, ahead_wx}   = ctl_q[2*R +: R];
+  assign ahead_wy               = ctl_q[3*R +: W];
+  assign supersampling          = ctl_q[4*R +: SBits];
 
   // -------------------------------------------------------------------------
   // Storage. A row is {behind, current, ahead} = slices {s-1, s, s+1} of one
   // column x and one beam: [0 +: V] ahead, [V +: V] current, [2V +: V] behind.
-  logic [V-1:0]   ahead_new, cur_new, behind_new;
+  logic [V-1:0]   cur_new, behind_new;
   logic [2*V-1:0] slice_rdata;   // {behind, current} of (x, y+1)
   logic [3*V-1:0] row0, row1, row2;  // beams y+1, y, y-1
   logic [6*V-1:0] beam_rdata;    // {row2, row1}
 
-  // The zero slice and the zero beam carry zeros; the first slice's current
-  // samples are the (zero) slice behind slice 0 of the next.
-  assign ahead_new  = (zb_active || tag_i[ZeroBit]) ? '0 : sample_i;
+  // The zero slice and the zero beam carry zeros. A frame's first slice is
+  // the zero slice ahead of the previous frame's last: its samples go
+  // into the slice delay (as the slice current next) with a zero slice
+  // behind them, but the column sees zeros ahead. After a reset or a zero
+  // slice the current samples are the (zero) slice behind slice 0.
+  logic [V-1:0]   ahead_col, ahead_w, cur_w;
+  logic [3*V-1:0] row1_w;  // the row written above this step's (zero above beam 0)
+  assign ahead_w    = (zb_active || in_zero) ? '0 : sample_i;
+  assign ahead_col  = in_start ? '0 : ahead_w;
   assign cur_new    = (zb_active || first_q) ? '0 : slice_rdata[0 +: V];
+  assign cur_w      = in_start ? '0 : cur_new;
   assign behind_new = zb_active ? '0 : slice_rdata[V +: V];
-  assign row0       = {behind_new, cur_new, ahead_new};
+  // A draining step's column has the zero border for beam y+1.
+  assign row0       = drain ? '0 : {behind_new, cur_new, ahead_col};
+  assign row1_w     = (step_in && y_step == '0) ? '0 : row1;
 
   // Slice delay: one entry per sample of beams 0 .. ny-1, one lap per slice
   // (ended by the slice's last sample). Writing {current, ahead} and reading
@@ -279,13 +329,14 @@ module cube4_gradient_unit #(
     .advance_i(step_in),
     .last_i   (slice_end_i && beam_end_i),
     .write_i  (1'b1),
-    .wdata_i  ({cur_new, ahead_new}),
+    .wdata_i  ({cur_w, ahead_w}),
     .rdata_o  (slice_rdata)
   );
 
   // Beam delay: one lap per beam (zero beam included). Writing
   // {row1, row0} and reading one lap later gives {row2, row1}: two beam
-  // FIFOs in one RAM.
+  // FIFOs in one RAM. Beam 0 is written with a zero row above it, and a
+  // draining step writes beam 0's own row, not its column's zero border.
   cube4_delay_ram #(
     .Width   (6 * V),
     .MaxDepth(BeamDepth)
@@ -297,7 +348,7 @@ module cube4_gradient_unit #(
     .advance_i(step),
     .last_i   (s_beam_end),
     .write_i  (1'b1),
-    .wdata_i  ({row1, row0}),
+    .wdata_i  ({row1_w, drain ? {behind_new, cur_new, ahead_col} : row0}),
     .rdata_o  (beam_rdata)
   );
   assign row1 = beam_rdata[0 +: 3*V];
@@ -346,12 +397,14 @@ module cube4_gradient_unit #(
       col_q         <= col_d;
       beam_start_q  <= s_beam_start;
       beam_end_q    <= s_beam_end;
-      slice_start_q <= y_step == DimBits'(1);
-      slice_end_q   <= zb_active;
-      // Beam 0 of a slice and the first slice of a frame: no gradients.
-      out_q         <= !first_q && (y_step != '0);
+      slice_start_q <= drain ? last_y_q == '0 : y_step == DimBits'(1);
+      slice_end_q   <= zb_active || drain;
+      // Beam 0 of a slice (unless it drains the last slice's last beam) and
+      // a slice with none before it: no gradients.
+      out_q         <= drain || (!first_q && (y_step != '0));
       j_col_q       <= j_step;
-      y_col_q       <= y_step - DimBits'(1);
+      y_col_q       <= drain ? last_y_q : y_step - DimBits'(1);
+      ctl_q         <= ctl;
     end
   end
   assign link_o = col_q[0 +: LinkBits];
@@ -426,7 +479,7 @@ module cube4_gradient_unit #(
 
   always_ff @(posedge clk_i) begin
     side_q <= {side_q[(GradLatency-1)*SideBits-1:0],
-               tag_out_q[CtrlBits +: UserTagBits], y_col_q, x_fire, own[0 +: V],
+               ctl_q[CtrlBits +: UserTagBits], y_col_q, x_fire, own[0 +: V],
                slice_end_q, slice_start_q, beam_end_q, beam_start_q};
   end
 
@@ -442,7 +495,7 @@ module cube4_gradient_unit #(
     logic [T-1:0] ahead_tag, slice_tag_rdata, cur_tag, mid_tag, col_tag_q;
     logic [GradLatency*T-1:0] vtag_q;
 
-    assign ahead_tag = (zb_active || tag_i[ZeroBit]) ? '0 : vtag_i;
+    assign ahead_tag = (zb_active || in_zero) ? '0 : vtag_i;
     assign cur_tag   = (zb_active || first_q) ? '0 : slice_tag_rdata;
 
     cube4_delay_ram #(
@@ -489,8 +542,9 @@ module cube4_gradient_unit #(
     assign vtag_o      = '0;
   end
 
-  // The output slice's ZeroSlice bit is not needed (its input ends the frame).
-  logic unused_zero;
-  assign unused_zero = tag_out_q[ZeroBit];
+  // The output slice's ZeroSlice and FrameStart bits and the weights' base
+  // bits for y are used where the step forms its column, not at firing.
+  logic unused_ctl;
+  assign unused_ctl = ^{ctl_q[ZeroBit], ctl_q[StartBit], ctl_q[1*R + W], ctl_q[3*R + W]};
 
 endmodule

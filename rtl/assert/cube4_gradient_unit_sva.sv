@@ -2,7 +2,7 @@
 // header states, as assertions (bound to every instance below; compiled in
 // by Verilator's --assert, docs/verification.md, "Assertions"):
 //   a_zero_beam_idle - valid_i stays low in the B cycles of the unit's own
-//                      zero beam after each slice: the unit has no
+//                      zero beam after the zero slice: the unit has no
 //                      back-pressure, so a sample there would be dropped;
 //   a_beam_fits      - a beam has at most BeamDepth partial beams
 //                      (ceil(nx/p) <= BeamDepth): a longer one wraps the
@@ -56,7 +56,7 @@ module cube4_gradient_unit_sva #(
       end
 
       a_zero_beam_idle: assert (!(valid_i && zb_active))
-        else $error("cube4_gradient_unit: cycle %0d: valid_i high in a zero-beam cycle (%0d of its steps left): the stream must leave B idle cycles after each slice",
+        else $error("cube4_gradient_unit: cycle %0d: valid_i high in a zero-beam cycle (%0d of its steps left): the stream must leave B idle cycles after the zero slice",
                     cycle, zb_left_q);
       a_beam_fits: assert (!(step && j_step >= BeamBits'(BeamDepth)))
         else $error("cube4_gradient_unit: cycle %0d: partial beam %0d of beam %0d, but the beam delay holds %0d (ceil(nx/p) <= BeamDepth)",

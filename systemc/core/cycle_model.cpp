@@ -1,12 +1,11 @@
 // The cycles of a frame at one voxel per pipeline per clock
 // (docs/system.md, "Cycle accounting"):
-//   stream  = passes * beams * ceil(nx / p), the steady-state interval
-//             passes = nz * S sample slices, + 1 zero pass with gradients;
-//             beams  = ny, + 1 flush beam per pass with gradients (the
-//             gradient unit's own zero beam takes that slot)
-//   flush   = the stream's last flush beam, ceil(nx / p), when passes
-//             follow back to back (the next frame's first beam drains the
-//             last pass in a stream of frames, in the same cycles)
+//   stream  = nz * S passes * ny beams * ceil(nx / p): the steady-state
+//             interval of frames back to back
+//   flush   = what ends a stream after its last frame: the zero pass when
+//             the gradient unit runs (ny beams) and one flush beam, in
+//             beams of ceil(nx / p) (in a stream of frames the next frame's
+//             first pass and first beam do their work in the same cycles)
 //   latency = stream + flush + the drain after the last voxel beat (below),
 //             measured by the RTL run and asserted equal by the system tests.
 #include "systemc/core/frame_plan.hpp"
@@ -18,11 +17,10 @@ namespace cube4::sysc {
 CycleCount frame_cycles(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1];
   const uint64_t B = static_cast<uint64_t>((nx + p - 1) / p);
-  const uint64_t passes = static_cast<uint64_t>(r.sample_slices()) + (r.gradient ? 1 : 0);
-  const bool flush_each_pass = r.gradient;  // FramePlan::flush_each_pass
+  const uint64_t passes = static_cast<uint64_t>(r.sample_slices());
   CycleCount c;
-  c.stream = passes * static_cast<uint64_t>(ny + (flush_each_pass ? 1 : 0)) * B;
-  c.flush = flush_each_pass ? 0 : B;
+  c.stream = passes * static_cast<uint64_t>(ny) * B;
+  c.flush = (r.gradient ? static_cast<uint64_t>(ny) * B : 0) + B;
   // After the stream's last beat (the flush beam's last, which ends a
   // beam), each registered link adds a cycle, then:
   //   interpolation: 3 (a beat that ends a beam leaves the alignment

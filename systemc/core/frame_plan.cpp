@@ -10,8 +10,7 @@ FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits
                      std::vector<golden::SliceControl> slice_controls)
     : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]),
       B(pipes > 0 ? (regs.dim[0] + pipes - 1) / pipes : 0),  // p < 1 is refused below
-      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)),
-      flush_each_pass(regs.gradient), user_tag_bits(user_tag_bits_),
+      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)), user_tag_bits(user_tag_bits_),
       tag_base(tag_base_) {
   if (p < 1) throw std::invalid_argument("pipelines: " + std::to_string(p) + " (must be at least 1)");
   if (user_tag_bits < 1 || user_tag_bits > 32)
@@ -60,7 +59,7 @@ PassStep FramePlan::step(int pass, int y, int j) const {
 
 uint64_t FramePlan::pass_tag(int pass) const {
   const golden::SliceControl* control = zero_pass(pass) ? nullptr : &slices[static_cast<size_t>(pass)];
-  return rtl::gradient_tag(control, 0, static_cast<uint64_t>(r.supersampling), user_tag(pass), r.p.weight_bits,
+  return rtl::gradient_tag(control, 0, static_cast<uint64_t>(r.supersampling), pass == 0, user_tag(pass), r.p.weight_bits,
                            user_tag_bits);
 }
 

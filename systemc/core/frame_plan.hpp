@@ -48,10 +48,7 @@ struct FramePlan {
   int B;              // partial beams per beam, ceil(nx / p)
   int K;              // sample slices, nz * S
   int passes;         // interpolation passes: K, plus the zero pass when the gradient unit runs
-  // Whether every pass ends with a flush beam (the gradient unit runs its
-  // own zero beam in the beam after each slice, docs/rtl-gradient.md) or
-  // only the stream's last (passes back to back, docs/rtl-interp.md).
-  bool flush_each_pass;
+                      // (a stream's last frame; frames before it stream K: passes_in_stream())
   int user_tag_bits;
   uint64_t tag_base;
   std::vector<golden::SliceControl> slices;  // slice_control(k), k = 0 .. K (K: the next of the last)
@@ -60,15 +57,19 @@ struct FramePlan {
   // (docs/rtl-interp.md); nz for the zero pass (no memory read).
   int pass_voxel_slice(int pass) const;
   bool zero_pass(int pass) const { return pass >= K; }
+  // A frame's passes in a stream of frames: the zero pass only ends the
+  // stream (the next frame's first slice is the zero slice ahead of this
+  // frame's last, docs/rtl-gradient.md).
+  int passes_in_stream(bool stream_last_frame) const { return stream_last_frame ? passes : K; }
   // The beams the stream gives a pass: ny, and the flush beam (beam ny)
-  // after every pass or only after the stream's last.
-  int beams(bool stream_last_pass) const { return ny + (flush_each_pass || stream_last_pass ? 1 : 0); }
+  // after the stream's last (passes back to back, docs/rtl-interp.md).
+  int beams(bool stream_last_pass) const { return ny + (stream_last_pass ? 1 : 0); }
   // A pass's beats in a stream of passes (the last pass's flush aside).
-  uint64_t pass_beats() const { return static_cast<uint64_t>(beams(false)) * static_cast<uint64_t>(B); }
+  uint64_t pass_beats() const { return static_cast<uint64_t>(ny) * static_cast<uint64_t>(B); }
   // Partial beam j of beam y (0 .. ny; ny is the flush beam) of a pass.
   PassStep step(int pass, int y, int j) const;
   // The interpolation ring's tag of a pass: the gradient ring's control
-  // fields (realign x4, S, ZeroSlice), then tag_base + pass.
+  // fields (realign x4, S, ZeroSlice, FrameStart), then tag_base + pass.
   uint64_t pass_tag(int pass) const;
   uint64_t user_tag(int pass) const {
     return (tag_base + static_cast<uint64_t>(pass)) & ((uint64_t{1} << user_tag_bits) - 1);
@@ -77,7 +78,8 @@ struct FramePlan {
   uint32_t tag_slice(uint64_t tag) const {
     return static_cast<uint32_t>(tag >> (tag_bits() - user_tag_bits) & ((uint64_t{1} << user_tag_bits) - 1));
   }
-  bool tag_zero_slice(uint64_t tag) const { return tag >> (tag_bits() - user_tag_bits - 1) & 1; }
+  bool tag_zero_slice(uint64_t tag) const { return tag >> (tag_bits() - user_tag_bits - 2) & 1; }
+  bool tag_frame_start(uint64_t tag) const { return tag >> (tag_bits() - user_tag_bits - 1) & 1; }
 };
 
 }  // namespace cube4::sysc

@@ -18,9 +18,10 @@ StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, AddrIf& addr
 StreamFormer::Pos StreamFormer::following(Pos p) const {
   if (++p.j == plan_.B) {
     p.j = 0;
-    if (++p.y == plan_.beams(p.frame + 1 == frames_ && p.pass + 1 == plan_.passes)) {
+    const int passes = plan_.passes_in_stream(p.frame + 1 == frames_);
+    if (++p.y == plan_.beams(p.frame + 1 == frames_ && p.pass + 1 == passes)) {
       p.y = 0;
-      if (++p.pass == plan_.passes) {
+      if (++p.pass == passes) {
         p.pass = 0;
         ++p.frame;
       }
@@ -40,7 +41,7 @@ AddrRequest StreamFormer::request_for(const Pos& p) const {
   if (p.y != plan_.ny - 1 || p.j != plan_.B - 1) return r;  // not a slice's last partial beam
   // The next pass that reads, in this frame: the same slice again?
   const int z = plan_.pass_voxel_slice(p.pass);
-  for (int pass = p.pass + 1; pass < plan_.passes; ++pass) {
+  for (int pass = p.pass + 1; pass < plan_.passes_in_stream(p.frame + 1 == frames_); ++pass) {
     const int zn = plan_.pass_voxel_slice(pass);
     if (zn < plan_.nz) {
       r.repeat_slice = zn == z;

@@ -1,9 +1,9 @@
 // Address generation, voxel memory reads, de-skew and the weight generator:
 // the source of the pipelines' voxel stream, one partial beam per clock.
 // Pass order (docs/rtl-interp.md): for each pass, beams 0 .. ny-1, partial
-// beams 0 .. B-1, then a flush beam (a time slot, no read) where
-// FramePlan::beams() says. The zero pass (gradient unit on) reads nothing
-// either. The memory addresses come from
+// beams 0 .. B-1, passes and frames back to back; after the last frame the
+// zero pass (gradient unit on; it reads nothing) and a flush beam (a time
+// slot, no read). The memory addresses come from
 // the address generator (AddrIf: TlmAddr, systemc/tlm/tlm_addr.hpp, at TLM;
 // RtlAddr, the verilated cube4_addr, at RTL), which the former runs one read
 // ahead.

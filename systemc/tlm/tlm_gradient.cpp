@@ -4,9 +4,9 @@ namespace cube4::sysc {
 
 TlmGradient::TlmGradient(const FramePlan& plan)
     : plan_(plan), behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1),
-      tags_current_(plan.nx, plan.ny, 1), tags_ahead_(plan.nx, plan.ny, 1) {}
+      zeros_(plan.nx, plan.ny, 1), tags_current_(plan.nx, plan.ny, 1), tags_ahead_(plan.nx, plan.ny, 1) {}
 
-void TlmGradient::emit_current() {
+void TlmGradient::emit_current(const golden::Plane& ahead) {
   const golden::SliceControl& c = plan_.slices[static_cast<size_t>(current_slice_)];
   golden::Neighbourhood n;
   for (int y = 0; y < plan_.ny; ++y)
@@ -20,7 +20,7 @@ void TlmGradient::emit_current() {
       for (int k = 0; k < plan_.p; ++k) {
         const int x = j * plan_.p + k;
         if (x >= plan_.nx) continue;  // padding columns: zero sample, zero gradient
-        golden::gather_neighbourhood(behind_, current_, ahead_, c, x, y, n);
+        golden::gather_neighbourhood(behind_, current_, ahead, c, x, y, n);
         const golden::Gradient g = golden::sample_gradient(plan_.r, c, n);
         const auto i = static_cast<size_t>(k);
         b.sample[i] = static_cast<uint16_t>(n.centre);
@@ -49,12 +49,15 @@ void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
       ++y_;
     }
     if (in.f.slice_end && in.f.beam_end) {
-      const bool zero = plan_.tag_zero_slice(in.tag);
+      // The stream's zero slice, or a frame's first slice: the slice ahead
+      // of the last one is zero.
+      const bool zero = plan_.tag_zero_slice(in.tag), start = plan_.tag_frame_start(in.tag);
       if (zero) {
         ahead_.clear();
         tags_ahead_.clear();
       }
-      if (current_slice_ >= 0) emit_current();
+      if (current_slice_ >= 0) emit_current(start ? zeros_ : ahead_);
+      if (start) current_.clear();  // behind the new frame's first slice
       std::swap(behind_, current_);
       std::swap(current_, ahead_);
       std::swap(tags_current_, tags_ahead_);

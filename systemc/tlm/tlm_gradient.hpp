@@ -1,7 +1,8 @@
 // Gradient unit at transaction level: collects sample slices, and when
-// slice s+1 (or the frame's zero slice) has arrived, computes the gradients
-// of slice s with golden gather_neighbourhood() + sample_gradient() and
-// streams them out. Latency: a slice, where the RTL takes a beam.
+// slice s+1 (or the next frame's first slice, or the stream's zero slice:
+// then with zeros ahead) has arrived, computes the gradients of slice s with
+// golden gather_neighbourhood() + sample_gradient() and streams them out.
+// Latency: a slice, where the RTL takes a beam.
 #pragma once
 
 #include "golden/slice_steps.hpp"
@@ -18,9 +19,10 @@ class TlmGradient final : public GradientIf {
   Level level() const override { return Level::Tlm; }
 
  private:
-  void emit_current();
+  void emit_current(const golden::Plane& ahead);
   const FramePlan& plan_;
   golden::Plane behind_, current_, ahead_;
+  golden::Plane zeros_;  // ahead of a frame's last slice
   // The voxel tags of the current and ahead slices' samples (the centre's
   // tag travels with it; no tag of a neighbour is used).
   golden::Plane tags_current_, tags_ahead_;

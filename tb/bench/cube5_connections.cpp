@@ -43,9 +43,9 @@ ConnectionTimes frame(int n, int width, int height, int depth_complexity, std::m
     f.counts.slab_triangles[static_cast<size_t>(k)] =
         static_cast<uint32_t>((static_cast<double>(count) + kFragmentsPerTriangle - 1) / kFragmentsPerTriangle);
   }
-  // The volume's slice on p pipelines, a zero beam included (as
-  // golden::polygon_traffic counts it; the frame's zero pass and drain not).
-  const uint64_t slice_cycles = static_cast<uint64_t>(n + 1) * ((n + kPipes - 1) / kPipes);
+  // The volume's slice on p pipelines, passes back to back (as
+  // golden::polygon_traffic counts it; the stream's zero pass and drain not).
+  const uint64_t slice_cycles = static_cast<uint64_t>(n) * ((n + kPipes - 1) / kPipes);
   return connection_times(slab_loads(f), slice_cycles, kClockHz, 0, 0, PolygonEngine{});
 }
 

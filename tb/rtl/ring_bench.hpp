@@ -260,13 +260,18 @@ inline const SampleFrame& sample_frame(const std::string& name, const std::array
   });
 }
 
-// Four frames of different sizes, permutations and S, for streams of
-// frames back to back without a reset.
+// Six frames of different sizes, permutations and S, for streams of
+// frames back to back without a reset: the first two and the last two
+// have the same beams (one view's permutation, another S), so each pair
+// follows with no zero pass between (ends_stream()); the others change
+// shape.
 inline std::vector<const SampleFrame*> back_to_back_frames(bool gradient) {
   return {&sample_frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 21, gradient),
+          &sample_frame("+z tilted again", {9, 7, 6}, {-0.2, 0.25, 1}, {0, 1, 0}, 1, 25, gradient),
           &sample_frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 22, gradient),
           &sample_frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 1, 23, gradient),
-          &sample_frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24, gradient)};
+          &sample_frame("-x tilted", {9, 7, 6}, {-1, -0.2, 0.35}, {0, 1, 0}, 2, 24, gradient),
+          &sample_frame("-x tilted again", {9, 7, 6}, {-1, 0.3, -0.2}, {0, 1, 0}, 3, 26, gradient)};
 }
 
 // Frames whose slices fill the storage of the small rings to the last entry
@@ -334,13 +339,20 @@ inline sysc::VoxelBeat junk_voxel_beat(Random& rng, int p, int voxel_bits, int t
   return b;
 }
 
+// Whether frame fi ends a stream (FramePlan::passes_in_stream: its zero
+// pass and flush beam follow it): it is the last, or the next one has other
+// beams (B or ny), which cannot follow it back to back.
+inline bool ends_stream(const std::vector<sysc::FramePlan>& plans, size_t fi) {
+  return fi + 1 == plans.size() || plans[fi + 1].B != plans[fi].B || plans[fi + 1].ny != plans[fi].ny;
+}
+
 // The frames back to back, frame i formed by plans[i] (its p, passes and
 // tags) from the voxels of frames[i]; tag(i, pass) is the tag its beats
-// carry. Passes follow back to back where the plan allows (FramePlan::
-// beams()), and a flush beam ends a frame followed by one of other beam
-// length, and the stream. A frame with shorter beams than the one before
-// starts after the difference in idle cycles (the next pass's beam 0 is the
-// gradient ring's zero beam of the last slice).
+// carry. Passes and frames follow back to back; a frame that ends a stream
+// (ends_stream()) is followed by its zero pass (gradient unit on) and a
+// flush beam. A frame with shorter beams than the one before starts after
+// the difference in idle cycles (the next pass's beam 0 is the gradient
+// ring's zero beam of the last slice).
 inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
                                 const std::vector<sysc::FramePlan>& plans,
                                 const std::function<uint64_t(int frame, int pass)>& tag, int voxel_bits, int tag_bits,
@@ -364,16 +376,15 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
     const sysc::FramePlan& plan = plans[fi];
     const int p = plan.p;
     if (fi > 0) idle(plans[fi - 1].B - plan.B);
-    for (int pass = 0; pass < plan.passes; ++pass) {
+    const bool ends = ends_stream(plans, fi);
+    const int passes = plan.passes_in_stream(ends);
+    for (int pass = 0; pass < passes; ++pass) {
       const uint64_t pass_tag = tag(static_cast<int>(fi), pass);
       const bool zero = plan.zero_pass(pass);
       const bool junk_weights = zero && opt.junk;
       const auto junk_wx = junk_weights ? static_cast<uint32_t>(rng.range(0, 256)) : 0u;
       const auto junk_wy = junk_weights ? static_cast<uint32_t>(rng.range(0, 256)) : 0u;
-      // A pass drains into the next pass's beam 0 only if that beam is as
-      // long: before a frame of other beams, and at the end, a flush beam.
-      const bool flushed = pass + 1 == plan.passes && (fi + 1 == frames.size() || plans[fi + 1].B != plan.B);
-      const int beams = plan.beams(flushed);
+      const int beams = plan.beams(ends && pass + 1 == passes);
       for (int y = 0; y < beams; ++y)
         for (int j = 0; j < plan.B; ++j) {
           if (opt.stall > 0 && rng.chance(opt.stall)) idle(static_cast<int>(rng.range(1, opt.max_gap)));

@@ -4,13 +4,14 @@
 //
 // Two ways in:
 //   - chain: the permuted volume streamed into a verilated
-//     cube4_interp_ring (docs/rtl-interp.md order, K + 1 passes: the last is
-//     the zero slice), whose outputs drive the gradient ring wire for wire:
+//     cube4_interp_ring (docs/rtl-interp.md order: frames and passes back
+//     to back, and after a frame that ends a stream its zero pass and a
+//     flush beam), whose outputs drive the gradient ring wire for wire:
 //     voxels -> samples -> gradients, proving the two rings fit;
 //   - direct: the golden samples (from a SampleProbe) streamed straight into
 //     the gradient ring, with random gaps, and exactly the B idle cycles
-//     after each slice that the ring's zero beam needs (the chain always
-//     leaves exactly B).
+//     after each zero slice that the ring's zero beam needs (the chain
+//     always leaves exactly B).
 // Every gradient (and the sample, position, flags and tag beside it) of
 // every pipeline is compared with golden render_fixed()'s (regs.gradient
 // forced on; the probe gives every sample's value and gradient), in the
@@ -90,7 +91,7 @@ uint64_t slice_tag(const sysc::FramePlan& plan, int k, Random& rng) {
   if (k == plan.K) {
     const uint64_t realign = rng.bits(4 * (kWeightBits + 1));
     const uint64_t supersampling = rng.bits(kSupersamplingBits);
-    return gradient_tag(nullptr, realign, supersampling, plan.user_tag(k), kWeightBits, kUserTagBits);
+    return gradient_tag(nullptr, realign, supersampling, false, plan.user_tag(k), kWeightBits, kUserTagBits);
   }
   for (const g::Realign& r : {plan.slices[k].behind_x, plan.slices[k].behind_y, plan.slices[k].ahead_x,
                               plan.slices[k].ahead_y}) {
@@ -154,8 +155,12 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
         frames, plans, [&](int fi, int pass) { return slice_tag(plans[static_cast<size_t>(fi)], pass, rng); },
         kVoxelBits, kTagBits, vo, rng);
     s.voxel_valid = v.valid;
-    for (const SampleFrame* f : frames)
-      s.expected_voxel_valid += static_cast<uint64_t>(f->ny + 1) * ((f->nx + p - 1) / p) * (f->K + 1);
+    for (size_t fi = 0; fi < frames.size(); ++fi) {
+      const sysc::FramePlan& pl = plans[fi];
+      const uint64_t beam = static_cast<uint64_t>(pl.B), slice = static_cast<uint64_t>(pl.ny) * beam;
+      // K passes; a frame that ends a stream adds its zero pass and a flush beam.
+      s.expected_voxel_valid += slice * static_cast<uint64_t>(pl.K) + (ends_stream(plans, fi) ? slice + beam : 0);
+    }
     s.last_voxel = v.last_input;
     s.beats = std::move(v.beats);
     for (const PassSample& e : v.samples)
@@ -166,7 +171,8 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
     for (size_t fi = 0; fi < frames.size(); ++fi) {
       const SampleFrame& f = *frames[fi];
       const int B = (f.nx + p - 1) / p;
-      for (int k = 0; k <= f.K; ++k) {
+      const int slices = ends_stream(plans, fi) ? f.K + 1 : f.K;  // the zero slice ends a stream
+      for (int k = 0; k < slices; ++k) {
         const uint64_t tag = slice_tag(plans[fi], k, rng);
         for (int y = 0; y < f.ny; ++y)
           for (int j = 0; j < B; ++j) {
@@ -189,23 +195,26 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
             }
             s.in.push_back(std::move(e));
           }
-        // The zero beam's B cycles, and sometimes more.
-        cycle += B;
+        // After the zero slice, the zero beam's B cycles, and sometimes more.
+        if (k == f.K) cycle += B;
         if (opt.stall > 0 && rng.chance(opt.stall)) cycle += rng.range(1, opt.max_gap);
       }
     }
   }
-  for (const SampleFrame* f : frames)
-    s.expected_sample_valid += static_cast<uint64_t>(f->ny) * ((f->nx + p - 1) / p) * (f->K + 1);
+  for (size_t fi = 0; fi < frames.size(); ++fi) {
+    const SampleFrame* f = frames[fi];
+    s.expected_sample_valid += static_cast<uint64_t>(f->ny) * ((f->nx + p - 1) / p) *
+                               static_cast<uint64_t>(f->K + (ends_stream(plans, fi) ? 1 : 0));
+  }
   s.sample_valid = s.in.size();
   s.last_sample = s.in.back().cycle;
 
-  // The gradient ring's steps: every input sample, and after a slice's last
-  // one the B steps of the zero beam (beam ny), one per cycle.
+  // The gradient ring's steps: every input sample, and after the zero
+  // slice's last one the B steps of the zero beam (beam ny), one per cycle.
   struct Step {
     uint64_t cycle;
     int frame, k, y, j;
-    bool beam_end;
+    bool beam_end, zero_beam;
   };
   std::vector<Step> steps;
   for (size_t i = 0; i < s.in.size(); ++i) {
@@ -217,26 +226,60 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
         << ")";
       s.error = o.str();
     }
-    steps.push_back({e.cycle, e.frame, e.k, e.y, e.j, e.beam_end});
-    if (e.slice_end && e.beam_end) {
-      const SampleFrame& f = *frames[e.frame];
+    steps.push_back({e.cycle, e.frame, e.k, e.y, e.j, e.beam_end, false});
+    const SampleFrame& f = *frames[e.frame];
+    if (e.slice_end && e.beam_end && e.k == f.K) {
       const int B = (f.nx + p - 1) / p;
-      for (int j = 0; j < B; ++j) steps.push_back({e.cycle + 1 + j, e.frame, e.k, f.ny, j, j == B - 1});
+      for (int j = 0; j < B; ++j) steps.push_back({e.cycle + 1 + j, e.frame, e.k, f.ny, j, j == B - 1, true});
       s.zero_steps += B;
       s.last_B = B;
     }
   }
-  // Step (k, y', j) with k >= 1, y' >= 1 gives the gradient of (j*p + q, y'-1)
-  // of slice k-1: it fires with the next step (or a cycle later at a beam's
+  // Which gradients each step gives (docs/rtl-gradient.md): a step of beam
+  // y >= 1 of input slice t, those of beam y-1 of the slice before t (its
+  // output slice: t-1, or the previous frame's last slice when t starts a
+  // frame streamed right after it); a step of beam 0 those of the last beam
+  // of the output slice of the slice before (if it had one), with zeros
+  // below; the zero beam's steps those of the zero slice's output slice's
+  // last beam. Each fires with the next step (or a cycle later at a beam's
   // end) and appears kGradientStages cycles after that.
+  struct SliceId {
+    int frame = -1, k = 0;
+  };
+  SliceId prev_in;       // the previous input slice, frame -1: none since reset or a zero slice
+  SliceId out, open;     // the current input slice's output slice; the slice whose last beam is due
   for (size_t i = 0; i < steps.size(); ++i) {
     const Step& st = steps[i];
-    if (st.k == 0 || st.y == 0) continue;
     const SampleFrame& f = *frames[st.frame];
     const int B = (f.nx + p - 1) / p;
-    const uint64_t fire = st.beam_end ? st.cycle + 1 : steps[i + 1].cycle;
-    s.expects.push_back({fire + kGradientStages, st.frame, st.k - 1, st.y - 1, st.j, st.j == 0, st.j == B - 1,
-                         st.y == 1, st.y == f.ny});
+    if (!st.zero_beam && st.y == 0 && st.j == 0) out = prev_in;  // a new input slice
+    SliceId g;  // the gradients' slice, frame -1: none
+    int row = 0;
+    if (st.zero_beam) {
+      g = out;
+      row = f.ny - 1;
+    } else if (st.y == 0) {
+      g = open;
+      row = g.frame >= 0 ? frames[g.frame]->ny - 1 : 0;
+    } else {
+      g = out;
+      row = st.y - 1;
+    }
+    if (g.frame >= 0) {
+      const uint64_t fire = st.beam_end ? st.cycle + 1 : steps[i + 1].cycle;
+      const int gny = frames[g.frame]->ny;
+      s.expects.push_back({fire + kGradientStages, g.frame, g.k, row, st.j, st.j == 0, st.j == B - 1, row == 0,
+                           row == gny - 1});
+    }
+    if (!st.zero_beam && st.y == 0 && st.beam_end) open = SliceId{};
+    if (!st.zero_beam && st.y == f.ny - 1 && st.beam_end) {  // the input slice's last step
+      if (st.k == f.K) {
+        prev_in = SliceId{};  // the zero slice: its own zero beam ends the stream
+      } else {
+        open = out;
+        prev_in = {st.frame, st.k};
+      }
+    }
   }
   s.last_output = s.expects.back().cycle;
   s.end = s.last_output + 8;
@@ -403,10 +446,11 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
   }
   EXPECT_EQ(r.checked, expected);
   EXPECT_EQ(r.gradients_checked, golden);
-  // Cycle counts: ny * B * (K + 1) input samples per frame (the zero slice
-  // included; chain: (ny + 1) * B * (K + 1) voxel cycles), B zero-beam steps
-  // per slice, and the last gradient B + 4 cycles after the last sample
-  // (chain: B + 8 after the last voxel).
+  // Cycle counts: ny * B * K input samples per frame, and ny * B more for
+  // the zero slice of a frame that ends a stream (chain: the same in voxel
+  // cycles, and a flush beam after the zero pass), B zero-beam steps after
+  // each zero slice, and the last gradient B + 4 cycles after the last
+  // sample (chain: B + 8 after the last voxel).
   EXPECT_EQ(r.sample_valid, s.expected_sample_valid);
   EXPECT_EQ(s.sample_valid, s.expected_sample_valid);
   if (opt.chain) {
@@ -415,7 +459,8 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
   }
   EXPECT_EQ(r.last_output, s.last_sample + s.last_B + 1 + kGradientStages);
   uint64_t zero_steps = 0;
-  for (const SampleFrame* f : frames) zero_steps += static_cast<uint64_t>((f->nx + rp.p - 1) / rp.p) * (f->K + 1);
+  for (size_t fi = 0; fi < frames.size(); ++fi)
+    if (ends_stream(s.plans, fi)) zero_steps += static_cast<uint64_t>((frames[fi]->nx + rp.p - 1) / rp.p);
   EXPECT_EQ(s.zero_steps, zero_steps);
   if (gradients_checked) *gradients_checked += golden;
 }
@@ -508,6 +553,15 @@ TEST(RtlGradientRing, P5MatchesGoldenGradients) {
 TEST(RtlGradientRing, BackToBackFrames) {
   Timer t("back-to-back frames");
   const std::vector<const SampleFrame*> frames = back_to_back_frames(/*gradient=*/true);
+  // Some frames follow one of their shape: a frame's first slice then
+  // finishes the previous frame's last (no zero slice between them).
+  for (int p : {1, 2, 4, 5}) {
+    std::vector<sysc::FramePlan> plans;
+    for (size_t fi = 0; fi < frames.size(); ++fi) plans.push_back(plan_of(*frames[fi], p, fi));
+    int joined = 0;
+    for (size_t fi = 0; fi < frames.size(); ++fi) joined += !ends_stream(plans, fi);
+    EXPECT_EQ(joined, 2) << "p=" << p;
+  }
   for (int mode = 0; mode < 4; ++mode) {
     StreamOptions opt;
     opt.chain = mode < 2;

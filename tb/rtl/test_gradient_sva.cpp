@@ -22,13 +22,15 @@ constexpr int kVoxelBits = 12;
 constexpr int kTagBits = CUBE4_GRADIENT_TAG_BITS;  // rtl/groups/gradient.cmake
 
 // The tag of a plain slice: realign weights 0, S = 1, not a zero slice
-// (docs/rtl-gradient.md, "Tag"; R = WeightBits + 1 = 9 bits a field).
+// (docs/rtl-gradient.md, "Tag"; R = WeightBits + 1 = 9 bits a field), and
+// the zero slice's bit above S's four.
 constexpr uint64_t kSupersamplingOne = uint64_t{1} << (4 * 9);
+constexpr uint64_t kZeroSlice = uint64_t{1} << (4 * 9 + 4);
 
 // One input cycle of a gradient ring of p pipelines in lock step (the
 // samples do not matter here).
 template <class M>
-void drive(M& m, int p, bool valid, bool bs, bool be, bool ss, bool se) {
+void drive(M& m, int p, bool valid, bool bs, bool be, bool ss, bool se, uint64_t tag = kSupersamplingOne) {
   const uint32_t all = (1u << p) - 1;
   m.valid_i = valid ? all : 0;
   m.beam_start_i = bs ? all : 0;
@@ -37,32 +39,36 @@ void drive(M& m, int p, bool valid, bool bs, bool be, bool ss, bool se) {
   m.slice_end_i = se ? all : 0;
   for (int k = 0; k < p; ++k) {
     put_bits(m.sample_i, k * kVoxelBits, kVoxelBits, 100 + k);
-    put_bits(m.tag_i, k * kTagBits, kTagBits, kSupersamplingOne);
+    put_bits(m.tag_i, k * kTagBits, kTagBits, tag);
   }
   settle(m);
   rise(m);
 }
 
-// One slice of `beams` beams of `b` partial beams, back to back.
+// One slice of `beams` beams of `b` partial beams, back to back (the
+// zero slice if `zero`).
 template <class M>
-void slice(M& m, int p, int beams, int b) {
+void slice(M& m, int p, int beams, int b, bool zero = false) {
   for (int y = 0; y < beams; ++y)
-    for (int j = 0; j < b; ++j) drive(m, p, true, j == 0, j == b - 1, y == 0, y == beams - 1);
+    for (int j = 0; j < b; ++j)
+      drive(m, p, true, j == 0, j == b - 1, y == 0, y == beams - 1, kSupersamplingOne | (zero ? kZeroSlice : 0));
 }
 
-// A sample inside the unit's zero beam (B = 3 cycles after the slice).
+// A sample inside the unit's zero beam (B = 3 cycles after the zero
+// slice); slices before it follow back to back.
 TEST(RtlGradientSva, ZeroBeamIdle) {
   CUBE4_SKIP_WITHOUT_ASSERTIONS();
   for (const bool violate : {false, true}) {
     SvaBench<Vcube4_gradient_ring_p2> b;
     reset(*b);
     slice(*b, 2, 2, 3);                         // cycles 1 .. 6
-    drive(*b, 2, false, 0, 0, 0, 0);            // cycle 7: zero-beam step 1 of 3
-    drive(*b, 2, violate, 1, 0, 1, 0);          // cycle 8: step 2, a sample if `violate`
-    drive(*b, 2, false, 0, 0, 0, 0);            // cycle 9: step 3
-    slice(*b, 2, 2, 3);                         // the next slice, in time
+    slice(*b, 2, 2, 3, true);                   // cycles 7 .. 12: the zero slice
+    drive(*b, 2, false, 0, 0, 0, 0);            // cycle 13: zero-beam step 1 of 3
+    drive(*b, 2, violate, 1, 0, 1, 0);          // cycle 14: step 2, a sample if `violate`
+    drive(*b, 2, false, 0, 0, 0, 0);            // cycle 15: step 3
+    slice(*b, 2, 2, 3);                         // the next stream, in time
     if (violate)
-      expect_fired(b, "a_zero_beam_idle", {"cycle 8:", "(2 of its steps left)"});
+      expect_fired(b, "a_zero_beam_idle", {"cycle 14:", "(2 of its steps left)"});
     else
       expect_quiet(b);
   }

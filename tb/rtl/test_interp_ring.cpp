@@ -231,7 +231,8 @@ void check_ring(const RingParams& rp, const std::vector<const SampleFrame*>& fra
     expected_valid += static_cast<uint64_t>(f->ny) * B * f->K;
     // A flush beam after the last frame and before a frame of other beams.
     const bool last = fi + 1 == frames.size();
-    if (last || (frames[fi + 1]->nx + rp.p - 1) / rp.p != static_cast<int>(B)) expected_valid += B;
+    if (last || (frames[fi + 1]->nx + rp.p - 1) / rp.p != static_cast<int>(B) || frames[fi + 1]->ny != f->ny)
+      expected_valid += B;
     golden_samples += f->samples.size();
   }
   EXPECT_EQ(r.checked, expected_samples);

@@ -128,11 +128,11 @@ inline void run_seeded(const Case& c, int p, std::array<Level, sysc::kUnits> lev
     EXPECT_EQ(res.frame_cycles, cc.latency) << "RTL cycles against the cycle model";
   }
   const int B = (regs.dim[0] + p - 1) / p;
-  // Passes back to back and a flush beam at the end, or (gradient unit on)
-  // a flush beam after every pass and a zero pass.
-  EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices() + (simulated.gradient ? 1 : 0)) *
-                           static_cast<uint64_t>(regs.dim[1] + (simulated.gradient ? 1 : 0)) * static_cast<uint64_t>(B));
-  EXPECT_EQ(cc.flush, simulated.gradient ? 0u : static_cast<uint64_t>(B));
+  // Passes back to back (n³/p for S = 1), then the zero pass (gradient
+  // unit on) and a flush beam.
+  EXPECT_EQ(cc.stream, static_cast<uint64_t>(regs.sample_slices()) * static_cast<uint64_t>(regs.dim[1]) *
+                           static_cast<uint64_t>(B));
+  EXPECT_EQ(cc.flush, static_cast<uint64_t>(simulated.gradient ? regs.dim[1] + 1 : 1) * static_cast<uint64_t>(B));
 }
 
 constexpr std::array<Level, sysc::kUnits> kRtl{Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl, Level::Rtl};

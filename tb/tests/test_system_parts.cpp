@@ -211,8 +211,8 @@ TEST(StreamChecker, FindsADifferenceManyBatchesIntoTheStream) {
 // A failed RTL assertion stops the unit's clock() with RtlAssertionError,
 // naming the unit and the system's cycle (the checker's message on stdout
 // names the assertion and the same cycle); with the context's assertions
-// off (cube4 render --no-assert) the same stream runs on. The stream: one
-// slice of the gradient ring, ny = 2 beams of B = 2 partial beams
+// off (cube4 render --no-assert) the same stream runs on. The stream: the
+// zero slice of the gradient ring, ny = 2 beams of B = 2 partial beams
 // (nx = 6, p = 4), then a sample in the unit's zero beam, which must be idle.
 // No scene makes the system send such a stream, so this is the wrapper
 // level's test of the path cube4 render takes to its exit code 4.
@@ -230,7 +230,7 @@ TEST(RtlAssertion, StopsTheFrameNamingUnitAndCycle) {
     auto gradient = sysc::make_rtl_gradient(plan, *ctx, sysc::TraceWindow{});
     sysc::SampleBeat in;
     sysc::GradientBeat out;
-    in.tag = plan.pass_tag(0);
+    in.tag = plan.pass_tag(plan.K);  // the zero slice, which the unit's zero beam follows
     testing::internal::CaptureStdout();
     int failed_cycle = 0;
     std::string unit;

@@ -71,14 +71,14 @@ void expect_polygon_cycles(const Hybrid& h, const sysc::SystemConfig& cfg, const
   const sysc::CycleCount cc = sysc::frame_cycles(regs, cfg.p);
   const sysc::FramePlan plan(regs, cfg.p);
   sysc::PolygonSource source(plan, golden::polygon_work(h.frame), cfg.polygon_engine, cfg.clock_hz);
-  const uint64_t waits = source.stalls_of_frame(static_cast<uint64_t>(plan.ny + 1) * plan.B);
+  const uint64_t waits = source.stalls_of_frame(plan.pass_beats());
   EXPECT_EQ(res.polygon_stall_cycles, waits) << sysc::polygon_connection_name(cfg.polygon_engine.connection);
   EXPECT_EQ(res.stream_cycles, cc.stream + waits);
   if (cfg.all_tlm() && !cfg.cycle_level) {
     EXPECT_EQ(res.frame_cycles, cc.latency + waits) << "the cycle model's count and the waits";
     return;
   }
-  EXPECT_EQ(res.last_beat[0], cc.stream + waits) << "voxel beats per frame and the gaps of the waits";
+  EXPECT_EQ(res.last_beat[0], cc.stream + cc.flush + waits) << "voxel beats per frame and the gaps of the waits";
   const sysc::SystemResult volume_only = sysc::run_frame(regs, h.s.volume, cfg);
   EXPECT_EQ(res.frame_cycles, volume_only.frame_cycles + waits) << "the simulated frame: the volume's and the waits";
 }
