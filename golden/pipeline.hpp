@@ -131,6 +131,15 @@ inline ShadedSample shade_with(const Registers& r, uint32_t centre, uint32_t tag
   return out;
 }
 
+// True when compositing and the sample of value `centre` and tag `tag`
+// classifies to α = 0: it leaves its ray exactly as it is, whatever its
+// gradient and shading (α only shrinks on the way through the pipeline,
+// and blend_front_to_back adds nothing for α = 0), so a model whose
+// gradient and shading streams nobody else reads may skip them.
+inline bool sample_cannot_change_ray(const Registers& r, uint32_t centre, uint32_t tag) {
+  return r.blend == BlendMode::Composite && classify(r.classification, tag, centre, r.p).a == 0;
+}
+
 // Magnitude, classification and shading of a sample with value `centre`,
 // tag `tag` and gradient `g` (Gradient{} when the gradient unit is off): the
 // shading unit's work (rtl/cube4_shade_unit.sv). Units the registers leave

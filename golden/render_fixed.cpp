@@ -70,15 +70,13 @@ class Band {
         while (s.end > s.begin && samples[s.end - 1] < first_visible) --s.end;
         return s;
       };
-      // A composited sample whose classified α is zero leaves its ray
-      // exactly as it is (α only shrinks on the way through the pipeline,
-      // and blend_front_to_back adds nothing for α = 0), so its gradient and
-      // shading are not computed; nor are those of rays the compositor has
-      // stopped (RayStop).
+      // Neither gradient nor shading of a sample that cannot change its
+      // ray (sample_cannot_change_ray) is computed, nor those of rays the
+      // compositor has stopped (RayStop).
       auto shade = [&](int x, int y, const RayAcc&, ShadedSample& s) {
         const uint32_t centre = current.at(x, y);
         const uint32_t tag = tagged_ ? tag_current_.at(x, y) : 0;
-        if (f_.may_skip && classify(r.classification, tag, centre, r.p).a == 0) return false;
+        if (f_.may_skip && sample_cannot_change_ray(r, centre, tag)) return false;
         if (r.gradient) {
           gather_neighbourhood(behind, current, ahead, c, x, y, n);
           if (voxel_z_) n.z_difference = zdiff_.row(y)[x];

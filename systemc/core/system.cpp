@@ -403,12 +403,17 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     }
     u.former = std::make_unique<StreamFormer>(up, mem, *u.addr, cfg.frames);
     u.interp = rtl[0] ? make_rtl_interp(up, *rtl_ctx, cfg.trace) : std::make_unique<TlmInterp>(up);
+    // Gradients and shading of samples that cannot change their ray are
+    // don't-cares when only TLM shading and compositing read them.
+    const bool skip_transparent = !checker && !rtl[2] && !rtl[3];
     if (!rs->gradient) {
       u.gradient = std::make_unique<GradientBypass>(up);
     } else {
-      u.gradient = rtl[1] ? make_rtl_gradient(up, *rtl_ctx, cfg.trace) : std::make_unique<TlmGradient>(up);
+      u.gradient = rtl[1] ? make_rtl_gradient(up, *rtl_ctx, cfg.trace)
+                          : std::make_unique<TlmGradient>(up, skip_transparent);
     }
-    u.shade = rtl[2] ? make_rtl_shade(up, *rtl_ctx, cfg.trace, cfg.simulate_unneeded) : std::make_unique<TlmShade>(up);
+    u.shade = rtl[2] ? make_rtl_shade(up, *rtl_ctx, cfg.trace, cfg.simulate_unneeded)
+                     : std::make_unique<TlmShade>(up, skip_transparent);
     u.composite = rtl[3] ? make_rtl_composite(up, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
                          : std::make_unique<TlmComposite>(up, pixels, polygons);
     u.checker = checker.get();

@@ -2,8 +2,10 @@
 
 namespace cube4::sysc {
 
-TlmGradient::TlmGradient(const FramePlan& plan)
-    : plan_(plan), behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1),
+TlmGradient::TlmGradient(const FramePlan& plan, bool skip_transparent)
+    : plan_(plan),
+      skip_transparent_(skip_transparent),
+      behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1),
       zeros_(plan.nx, plan.ny, 1), tags_current_(plan.nx, plan.ny, 1), tags_ahead_(plan.nx, plan.ny, 1) {}
 
 void TlmGradient::emit_current(const golden::Plane& ahead) {
@@ -20,11 +22,13 @@ void TlmGradient::emit_current(const golden::Plane& ahead) {
       for (int k = 0; k < plan_.p; ++k) {
         const int x = j * plan_.p + k;
         if (x >= plan_.nx) continue;  // padding columns: zero sample, zero gradient
+        const auto i = static_cast<size_t>(k);
+        const uint32_t centre = current_.at(x, y), tag = tags_current_.at(x, y);
+        b.sample[i] = static_cast<uint16_t>(centre);
+        b.vtag[i] = static_cast<uint8_t>(tag);
+        if (skip_transparent_ && golden::sample_cannot_change_ray(plan_.r, centre, tag)) continue;
         golden::gather_neighbourhood(behind_, current_, ahead, c, x, y, n);
         const golden::Gradient g = golden::sample_gradient(plan_.r, c, n);
-        const auto i = static_cast<size_t>(k);
-        b.sample[i] = static_cast<uint16_t>(n.centre);
-        b.vtag[i] = static_cast<uint8_t>(tags_current_.at(x, y));
         b.gx[i] = static_cast<int16_t>(g.x);
         b.gy[i] = static_cast<int16_t>(g.y);
         b.gz[i] = static_cast<int16_t>(g.z);

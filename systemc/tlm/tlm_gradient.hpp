@@ -3,6 +3,11 @@
 // then with zeros ahead) has arrived, computes the gradients of slice s with
 // golden gather_neighbourhood() + sample_gradient() and streams them out.
 // Latency: a slice, where the RTL takes a beam.
+//
+// With `skip_transparent` (set by run_frame() when nothing but TLM shading
+// and compositing reads the stream: no --check, no RTL unit behind it) the
+// gradient of a sample that cannot change its ray
+// (golden::sample_cannot_change_ray) is not computed and streams as zero.
 #pragma once
 
 #include "golden/slice_steps.hpp"
@@ -14,13 +19,14 @@ namespace cube4::sysc {
 
 class TlmGradient final : public GradientIf {
  public:
-  explicit TlmGradient(const FramePlan& plan);
+  explicit TlmGradient(const FramePlan& plan, bool skip_transparent = false);
   void clock(const SampleBeat& in, GradientBeat& out) override;
   Level level() const override { return Level::Tlm; }
 
  private:
   void emit_current(const golden::Plane& ahead);
   const FramePlan& plan_;
+  bool skip_transparent_;
   golden::Plane behind_, current_, ahead_;
   golden::Plane zeros_;  // ahead of a frame's last slice
   // The voxel tags of the current and ahead slices' samples (the centre's

@@ -10,8 +10,9 @@ int shade_latency(const golden::Precision& p) {
   return (p.nr_iterations + 1) + 4 + cube + 3 + 3;
 }
 
-TlmShade::TlmShade(const FramePlan& plan)
+TlmShade::TlmShade(const FramePlan& plan, bool skip_transparent)
     : plan_(plan),
+      skip_transparent_(skip_transparent),
       faces_(golden::make_face_table(plan.r)),
       shading_(plan.r, faces_.get()),
       line_(static_cast<size_t>(shade_latency(plan.r.p))) {}
@@ -29,6 +30,10 @@ void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   s.slice = in.slice;
   for (int k = 0; k < plan_.p; ++k) {
     const auto i = static_cast<size_t>(k);
+    if (skip_transparent_ && golden::sample_cannot_change_ray(plan_.r, in.sample[i], in.vtag[i])) {
+      s.value[i] = in.sample[i];  // α and colour stay zero
+      continue;
+    }
     const golden::Gradient g{in.gx[i], in.gy[i], in.gz[i]};
     const golden::ShadedSample r = golden::shade_with(plan_.r, in.sample[i], in.vtag[i], shading_(g));
     s.red[i] = static_cast<uint16_t>(r.rgb[0]);

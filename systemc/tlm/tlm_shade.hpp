@@ -2,6 +2,12 @@
 // shade_with() of the gradient's cached shading), on a
 // delay line as long as cube4_shade_unit's latency, so that the shading
 // stage takes the same cycles at both levels.
+//
+// With `skip_transparent` (nothing but TLM compositing reads the stream: no
+// --check, no RTL compositor) a sample that cannot change its ray
+// (golden::sample_cannot_change_ray) is not shaded: it streams its value,
+// α = 0 and black, which the compositor steps over as it would the shaded
+// sample (golden::blend_changes_ray).
 #pragma once
 #include <memory>
 #include <vector>
@@ -19,12 +25,13 @@ int shade_latency(const golden::Precision& p);
 
 class TlmShade final : public ShadeIf {
  public:
-  explicit TlmShade(const FramePlan& plan);
+  explicit TlmShade(const FramePlan& plan, bool skip_transparent = false);
   void clock(const GradientBeat& in, ShadedBeat& out) override;
   Level level() const override { return Level::Tlm; }
 
  private:
   const FramePlan& plan_;
+  bool skip_transparent_;
   std::unique_ptr<golden::FacePositionTable> faces_;
   golden::GradientShadingCache shading_;  // the golden renderer's: equal gradients shade alike
   std::vector<ShadedBeat> line_;  // circular delay line

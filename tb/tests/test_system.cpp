@@ -38,6 +38,24 @@ TEST(System, SphereTlmCycleLevelNoGradientP5) {
   c.effects = R"("shading": false, "blend": "mip")";
   run(c, 5, kTlm, true);
 }
+// Unchecked clocked TLM skips the gradient and shading of samples that
+// cannot change their ray (run() runs it unchecked too): not under MIP,
+// where every sample counts, nor past α's modulation and the cut plane.
+TEST(System, ClockedTlmSkipsOnlyWhatCannotChangeARay) {
+  for (const char* effects :
+       {R"("shading": true, "blend": "mip")",
+        R"("shading": true, "gradient_modulation": {"opacity": true}, "gm_lut": [[0, 0.2], [1, 1]],)"
+        R"( "cut_plane": {"normal": [1, 0.5, 1], "dmin": 5, "dmax": 9, "falloff": 2.5})"}) {
+    SCOPED_TRACE(effects);
+    Case c;
+    c.effects = effects;
+    // The highest values transparent: MIP takes them, so their values must
+    // stream even where their shading does not.
+    c.transfer = R"("transfer": {"color": [[0, 1, 0.2, 0], [1, 0.1, 0, 1]],)"
+                 R"( "opacity": [[0, 0.4], [0.5, 0.6], [0.6, 0], [1, 0]]})";
+    run(c, 4, kTlm, true);
+  }
+}
 // Every p from 1 to 16 clocked (the TLM models; RTL is built for the p of
 // CUBE4_SYSTEM_PIPES, tested above), and loosely timed beyond.
 TEST(System, EveryPipelineCountClockedTlm) {
