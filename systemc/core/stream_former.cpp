@@ -74,7 +74,7 @@ VoxelBeat StreamFormer::next() {
     ny = at_.y;
     nz = plan_.pass_voxel_slice(at_.pass);
   }
-  const AddrResult a = addr_.clock(req, nj, ny, nz);
+  const AddrResult& a = addr_.clock(req, nj, ny, nz);
   if (const AddrResult* soon = addr_.upcoming())
     for (int m = 0; m < plan_.p; ++m) mem_.prefetch(m, soon->access.module_index[static_cast<size_t>(m)]);
   mem_.begin_cycle();

@@ -50,13 +50,15 @@ struct AddrRequest {
   bool repeat_slice = false;  // with a slice's last partial beam: walk the slice again
   bool again = false;         // with the frame's last partial beam: the frame once more
 };
+// j, y, z and access mean something only when valid.
 struct AddrResult {
   bool valid = false;
   int j = 0, y = 0, z = 0;
   golden::BeamAccess access;
 };
 struct AddrIf : virtual sc_core::sc_interface {
-  virtual AddrResult clock(const AddrRequest& next, int j, int y, int z) = 0;
+  // The answer stays valid until the next clock.
+  virtual const AddrResult& clock(const AddrRequest& next, int j, int y, int z) = 0;
   virtual Level level() const = 0;
   // What the next edge will answer, where the model already holds it (the
   // TLM model's pending access; nullptr from the RTL, whose registers are

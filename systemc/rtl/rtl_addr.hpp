@@ -35,14 +35,14 @@ class RtlAddr final : public AddrIf {
     m_.restart_cycles();
   }
 
-  AddrResult clock(const AddrRequest& next, int, int, int) override {
+  const AddrResult& clock(const AddrRequest& next, int, int, int) override {
     using rtl::get_bits;
     M& m = *m_;
     m.advance_i = next.issue;
     m.repeat_slice_i = next.repeat_slice;
     m.again_i = next.again;
     m_.settle();
-    AddrResult r;
+    AddrResult& r = out_;
     r.valid = m.valid_o;
     if (r.valid) {
       r.j = static_cast<int>(m.beam_o);
@@ -67,6 +67,7 @@ class RtlAddr final : public AddrIf {
   }
   int p_, index_bits_;
   RtlModel<M> m_;
+  AddrResult out_;  // the last edge's outputs
 };
 
 }  // namespace cube4::sysc

@@ -20,7 +20,7 @@ TlmShade::TlmShade(const FramePlan& plan, bool skip_transparent)
 void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   out = line_[head_];
   ShadedBeat& s = line_[head_];
-  head_ = (head_ + 1) % line_.size();
+  if (++head_ == line_.size()) head_ = 0;
   s = ShadedBeat{};
   if (!in.valid) return;
   s.valid = true;
