@@ -102,9 +102,11 @@ struct BeamAccess {
 };
 
 // The memory accesses of partial beam j of beam y of slice z (permuted
-// coordinates). Precondition: 1 <= l.p <= kMaxSkewPipes, position in range.
-constexpr BeamAccess beam_access(const SkewLayout& l, const SkewTraversal& t, int y, int z, int j) {
-  BeamAccess b;
+// coordinates), written into b: lanes and module indices 0 .. p - 1,
+// rotation and reverse (entries from p on keep what they held, so that a
+// simulator can reuse one BeamAccess a clock instead of clearing 32 lanes).
+// Precondition: 1 <= l.p <= kMaxSkewPipes, position in range.
+constexpr void beam_access_into(BeamAccess& b, const SkewLayout& l, const SkewTraversal& t, int y, int z, int j) {
   std::array<int, 3> o{0, 0, 0};
   o[t.perm[1]] = skew_object_coordinate(l, t, 1, y);
   o[t.perm[2]] = skew_object_coordinate(l, t, 2, z);
@@ -115,6 +117,11 @@ constexpr BeamAccess beam_access(const SkewLayout& l, const SkewTraversal& t, in
   }
   b.rotation = b.lane[0].module;
   b.reverse = t.flip[0];
+}
+// The same as a value (lanes from p on zero).
+constexpr BeamAccess beam_access(const SkewLayout& l, const SkewTraversal& t, int y, int z, int j) {
+  BeamAccess b;
+  beam_access_into(b, l, t, y, z, j);
   return b;
 }
 

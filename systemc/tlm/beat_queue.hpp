@@ -14,9 +14,9 @@ class BeatQueue {
  public:
   bool empty() const { return head_ == beats_.size(); }
   void push_back(const Beat& b) { beats_.push_back(b); }
-  // The oldest beat, removed.
-  Beat pop_front() {
-    Beat b = beats_[head_++];
+  // The oldest beat, removed, into out.
+  void pop_front(Beat& out) {
+    out = beats_[head_++];
     if (head_ == beats_.size()) {
       beats_.clear();
       head_ = 0;
@@ -26,7 +26,6 @@ class BeatQueue {
       beats_.erase(beats_.begin(), beats_.begin() + static_cast<std::ptrdiff_t>(head_));
       head_ = 0;
     }
-    return b;
   }
 
  private:

@@ -1,4 +1,4 @@
-// Address generation (`addr`) at TLM: golden beam_access()
+// Address generation (`addr`) at TLM: golden beam_access_into()
 // (golden/units/addr.hpp), answered one edge later as cube4_addr does
 // (docs/system.md, "Structure"). The RTL model is systemc/rtl/rtl_addr.hpp.
 #pragma once
@@ -24,7 +24,7 @@ class TlmAddr final : public AddrIf {
       pending.j = j;
       pending.y = y;
       pending.z = z;
-      pending.access = golden::beam_access(layout_, traversal_, y, z, j);
+      golden::beam_access_into(pending.access, layout_, traversal_, y, z, j);
     }
     return slot_[answer_];
   }

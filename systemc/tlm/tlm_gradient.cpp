@@ -77,7 +77,7 @@ void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
   if (out_.empty()) {
     out = GradientBeat{};
   } else {
-    out = out_.pop_front();
+    out_.pop_front(out);
   }
 }
 

@@ -67,7 +67,7 @@ void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
   if (out_.empty()) {
     out = SampleBeat{};
   } else {
-    out = out_.pop_front();
+    out_.pop_front(out);
   }
 }
 

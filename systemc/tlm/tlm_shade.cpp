@@ -21,8 +21,12 @@ void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   out = line_[head_];
   ShadedBeat& s = line_[head_];
   if (++head_ == line_.size()) head_ = 0;
-  s = ShadedBeat{};
-  if (!in.valid) return;
+  if (!in.valid) {
+    s = ShadedBeat{};
+    return;
+  }
+  // Lanes from p on stay zero (never written); lanes below it are all
+  // written, so a valid beat needs no clearing.
   s.valid = true;
   s.f = in.f;
   s.x = in.x;
@@ -31,7 +35,8 @@ void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   for (int k = 0; k < plan_.p; ++k) {
     const auto i = static_cast<size_t>(k);
     if (skip_transparent_ && golden::sample_cannot_change_ray(plan_.r, in.sample[i], in.vtag[i])) {
-      s.value[i] = in.sample[i];  // α and colour stay zero
+      s.red[i] = s.green[i] = s.blue[i] = s.alpha[i] = 0;
+      s.value[i] = in.sample[i];
       continue;
     }
     const golden::Gradient g{in.gx[i], in.gy[i], in.gz[i]};
