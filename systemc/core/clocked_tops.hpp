@@ -5,12 +5,14 @@
 #pragma once
 #include <systemc>
 
+#include "systemc/core/edge_clock.hpp"
+
 namespace cube4::sysc {
 
 // The network's top, built (with the machine's) on first use.
 sc_core::sc_module& network_top();
 // Builds the network's top on the machine's clock (called once, by the
 // function that builds the machine's).
-sc_core::sc_module* build_network_top(sc_core::sc_clock& clk);
+sc_core::sc_module* build_network_top(const EdgeClock& clk);
 
 }  // namespace cube4::sysc

@@ -180,7 +180,7 @@ SC_MODULE(NetworkTop) {
   std::exception_ptr error;
   sc_core::sc_event go;
 
-  NetworkTop(sc_core::sc_module_name name, sc_core::sc_clock& clk) : sc_core::sc_module(name) {
+  NetworkTop(sc_core::sc_module_name name, const EdgeClock& clk) : sc_core::sc_module(name) {
     SC_METHOD(step);
     sensitive << clk.posedge_event();
     dont_initialize();
@@ -227,7 +227,7 @@ std::unique_ptr<ComposeOutIf> make_tlm_compose_out(const golden::Precision& p) {
   return std::make_unique<TlmComposeOut>(p);
 }
 
-sc_core::sc_module* build_network_top(sc_core::sc_clock& clk) { return new NetworkTop("cube4_network", clk); }
+sc_core::sc_module* build_network_top(const EdgeClock& clk) { return new NetworkTop("cube4_network", clk); }
 
 NetworkResult run_network(const golden::BlockPlan& plan, const std::vector<const golden::BasePlane*>& partials,
                           const NetworkConfig& cfg, const golden::Progress& progress) {

@@ -11,6 +11,7 @@
 #include <systemc>
 
 #include "systemc/core/clocked_tops.hpp"
+#include "systemc/core/edge_clock.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/link.hpp"
 #include "systemc/core/pixel_memory.hpp"
@@ -127,7 +128,7 @@ void composite_edge(FrameUnits& u, const ShadedBeat& in) {
 // SystemC elaborates once per process, so the top is built on the first
 // frame and each frame plugs its units in (sc_pause() ends a frame).
 SC_MODULE(CycleTop) {
-  sc_core::sc_clock clk{"clk", sc_core::sc_time(1, sc_core::SC_NS)};
+  EdgeClock clk{"clk", sc_core::sc_time(1, sc_core::SC_NS)};
   Link<VoxelBeat> voxels{"voxels"};
   Link<SampleBeat> samples{"samples"};
   Link<GradientBeat> gradients{"gradients"};

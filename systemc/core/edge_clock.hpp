@@ -1,0 +1,34 @@
+// The machine's clock as the clocked tops use it: a rising edge each
+// period and nothing else. Every process of the machine and the
+// composition network runs on the rising edge and talks through registered
+// links (link.hpp), so no signal needs to toggle: sc_clock's boolean signal,
+// its falling edge and the signal updates of both edges were most of the
+// kernel's work per simulated cycle (docs/performance.md, "Simulation speed
+// of the system model").
+#pragma once
+#include <systemc>
+
+namespace cube4::sysc {
+
+class EdgeClock : public sc_core::sc_module {
+ public:
+  EdgeClock(sc_core::sc_module_name name, const sc_core::sc_time& period)
+      : sc_core::sc_module(name), period_(period) {
+    SC_METHOD(rise);
+  }
+  SC_HAS_PROCESS(EdgeClock);
+  // Notified at each rising edge, first at time 0. Processes made
+  // sensitive to it run in the edge's evaluation phase and see every link
+  // as the previous edge left it.
+  const sc_core::sc_event& posedge_event() const { return posedge_; }
+
+ private:
+  void rise() {
+    posedge_.notify();
+    next_trigger(period_);
+  }
+  sc_core::sc_time period_;
+  sc_core::sc_event posedge_;
+};
+
+}  // namespace cube4::sysc
