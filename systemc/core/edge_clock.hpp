@@ -2,9 +2,9 @@
 // period and nothing else. Every process of the machine and the
 // composition network runs on the rising edge and talks through registered
 // links (link.hpp), so no signal needs to toggle: sc_clock's boolean signal,
-// its falling edge and the signal updates of both edges were most of the
-// kernel's work per simulated cycle (docs/performance.md, "Simulation speed
-// of the system model").
+// its falling edge and the signal updates of both edges were about a third
+// of the kernel's work per simulated cycle (docs/performance.md,
+// "Simulation speed of the system model").
 #pragma once
 #include <systemc>
 
