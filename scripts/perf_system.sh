@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Simulation speed of the system model on brainsmall (the default scene,
-# p = 4), one core, written to the "system-speed" section of
-# docs/performance.md:
+# p = 4), one thread pinned to one core, and the clocked models again on two
+# threads and two cores (the shading and compositing units on a thread of
+# their own: systemc/core/schedules.hpp), written to the "system-speed"
+# section of docs/performance.md:
 #   golden render_fixed()             the reference for the TLM level
 #   tlm                               one loosely timed transaction per frame
 #   tlm-cycle                         every unit's TLM model clocked, SystemC kernel
@@ -20,42 +22,49 @@ pin=()
 command -v taskset >/dev/null && pin=(taskset -c "$(( $(nproc) - 1 ))")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-runs=("golden systemc" "tlm systemc" "tlm-cycle systemc" "tlm-cycle plain" "rtl plain" "rtl systemc"
-      "mixed:interp systemc" "mixed:gradient systemc" "mixed:shade systemc" "mixed:composite systemc")
+runs=("golden systemc 1" "tlm systemc 1" "tlm-cycle systemc 1" "tlm-cycle plain 1" "rtl plain 1" "rtl systemc 1"
+      "mixed:interp systemc 1" "mixed:gradient systemc 1" "mixed:shade systemc 1" "mixed:composite systemc 1"
+      "tlm-cycle systemc 2" "tlm-cycle plain 2" "rtl plain 2" "rtl systemc 2" "mixed:shade systemc 2")
 i=0
 for r in "${runs[@]}"; do
   set -- $r
-  echo "perf_system: $1 ($2)..." >&2
+  echo "perf_system: $1 ($2, $3 thread(s))..." >&2
   fr=$frames
   case "$1" in golden|tlm) fr=$(( frames * 10 )) ;; esac
-  "${pin[@]}" "$bench" --model "$1" --kernel "$2" --frames "$fr" --warmup 1 > "$tmp/$i.json"
+  if [ "$3" = 1 ]; then on=("${pin[@]}"); else on=(); fi
+  "${on[@]}" "$bench" --model "$1" --kernel "$2" --threads "$3" --frames "$fr" --warmup 1 > "$tmp/$i.json"
   i=$((i + 1))
 done
 python3 - "$tmp" "${#runs[@]}" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" system-speed
 import json, sys, datetime
 tmp, n, cpu = sys.argv[1], int(sys.argv[2]), sys.argv[3]
 rows = [json.load(open(f"{tmp}/{i}.json")) for i in range(n)]
-by = {(r["model"], r["kernel"]): r for r in rows}
-print(f"Measured {datetime.date.today()} by `scripts/perf_system.sh` on {cpu}, one core, brainsmall "
-      f"(128×128×84, default view), p = 4, {rows[0]['cycles_per_frame']} cycles per frame; median frame times.")
+by = {(r["model"], r["kernel"], r["threads"]): r for r in rows}
+print(f"Measured {datetime.date.today()} by `scripts/perf_system.sh` on {cpu}, brainsmall "
+      f"(128×128×84, default view), p = 4, {rows[0]['cycles_per_frame']} cycles per frame (rtl; clocked TLM units "
+      f"add their slice of latency); median frame times. One thread: pinned to one core; two threads: on two cores.")
 print()
-print("| model | kernel | ms/frame | simulated cycles/s | samples/s |")
-print("|---|---|---|---|---|")
+print("| model | kernel | threads | ms/frame | simulated cycles/s | samples/s |")
+print("|---|---|---:|---|---|---|")
 for r in rows:
     clk = "" if r["clock_simulated"] else " (no clock: cycles from the cycle model)"
     kern = r["kernel"] if r["model"] not in ("golden", "tlm") else "–"
-    print(f"| {r['model']} | {kern} | {r['ms']['median']:.1f} | {r['cycles_per_second']/1e6:.3g} M{clk} | "
+    print(f"| {r['model']} | {kern} | {r['threads']} | {r['ms']['median']:.1f} | {r['cycles_per_second']/1e6:.3g} M{clk} | "
           f"{r['samples_per_second']/1e6:.3g} M |")
-g = by[("golden", "systemc")]["ms"]["median"]
-t = by[("tlm", "systemc")]["ms"]["median"]
-rp = by[("rtl", "plain")]["ms"]["median"]
-rs = by[("rtl", "systemc")]["ms"]["median"]
-tc = by[("tlm-cycle", "systemc")]["ms"]["median"]
-tp = by[("tlm-cycle", "plain")]["ms"]["median"]
+ms = lambda m, k, n=1: by[(m, k, n)]["ms"]["median"]
+g = ms("golden", "systemc")
+t = ms("tlm", "systemc")
+rp = ms("rtl", "plain")
+rs = ms("rtl", "systemc")
+tc = ms("tlm-cycle", "systemc")
+tp = ms("tlm-cycle", "plain")
 print()
 print(f"- RTL level under SystemC against the same verilated units on a plain C++ loop (the ceiling): "
       f"**{rs/rp:.2f}×** (target: within 3×).")
 print(f"- TLM level against the golden renderer: **{t/g:.2f}×** (target: within 2×). Clocked beat by beat "
-      f"instead, the TLM models take {tc/g:.1f}× golden under SystemC ({tp/g:.1f}× on the plain loop).")
+      f"instead, the TLM models take {tc/g:.1f}× golden under SystemC ({tp/g:.1f}× on the plain loop); on two "
+      f"threads {ms('tlm-cycle', 'systemc', 2)/g:.1f}× ({ms('tlm-cycle', 'plain', 2)/g:.1f}×).")
+print(f"- RTL level on two threads against one: **{rs/ms('rtl', 'systemc', 2):.2f}×** faster under SystemC, "
+      f"{rp/ms('rtl', 'plain', 2):.2f}× on the plain loop.")
 PY
 echo "perf_system: docs/performance.md updated" >&2

@@ -461,6 +461,7 @@ int run_render(const RenderArgs& args) {
     cfg.polygon_engine = l.scene.polygon_engine;
     cfg.clock_hz = l.scene.clock_mhz * 1e6;
     cfg.assertions = !a.no_assert;
+    cfg.threads = a.threads;  // 1: one thread; else two where the machine has them
     net.assertions = cfg.assertions;
     if (a.frames > 1 && cfg.all_tlm())
       throw InputError("--frames: the tlm model has no clock to stream frames on (its interval is the cycle model's)");
@@ -902,8 +903,9 @@ int main(int argc, char** argv) {
   render->add_option("--trace", ra.trace, "system model: FST waveforms of the RTL units (FILE.fst -> FILE.UNIT.fst)");
   render->add_option("--trace-window", ra.trace_window, "FIRST LAST: trace only these cycles")->expected(2);
   render->add_option("--threads", ra.threads,
-                     "fixed model and --check: threads, each rendering a band of rays (default 0: one per core; "
-                     "the image is the same for any number)")
+                     "fixed model and --check: threads, each rendering a band of rays; clocked system models: 1 "
+                     "runs the units on one thread, more on two (the shading and compositing units on a thread "
+                     "of their own) (default 0: one per core; the image and cycles are the same for any number)")
       ->check(CLI::Range(0, 1024));
   render->add_option("--blocks", ra.blocks,
                      "AxBxC: render the volume as blocks along x, y, z, each by a machine of its own, merged by the "

@@ -34,6 +34,7 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
       {"simulated_cycles_per_wall_second",
        wall_seconds > 0 ? static_cast<double>(r.simulated_cycles ? r.simulated_cycles : r.frame_cycles) / wall_seconds
                         : 0.0},
+      {"simulation_threads", cfg.all_tlm() && !cfg.cycle_level ? 1 : sysc::simulation_threads(cfg)},
       {"seed", cfg.seed},
       {"rtl_assertions", cfg.assertions ? "on" : "off (--no-assert)"},
       {"timing", cfg.all_tlm() ? "cycle model (loosely timed, no clock simulated)" : "simulated clock cycles"},
@@ -108,6 +109,7 @@ nlohmann::json describe_partitioned(const sysc::PartitionedResult& r, const sysc
         {"timing", n.clocked ? "simulated clock cycles" : "cycle model (loosely timed, no clock simulated)"},
         {"wall_seconds", n.wall_seconds}}},
       {"wall_seconds", wall_seconds},
+      {"simulation_threads", cfg.all_tlm() && !cfg.cycle_level ? 1 : sysc::simulation_threads(cfg)},
       {"seed", cfg.seed},
       {"check", cfg.check ? (check_failure.empty()
                                  ? "passed: every block's partial image and unit streams, and the network's image, bit-exact"

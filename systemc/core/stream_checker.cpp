@@ -44,40 +44,43 @@ std::string str(std::initializer_list<int64_t> v) {
 }  // namespace
 
 StreamChecker::StreamChecker(const FramePlan& plan, const golden::Volume& vol) : plan_(plan) {
-  filling_.reserve(kBatch);
+  for (auto& f : filling_) f.reserve(kBatch);
   thread_ = std::thread([this, &vol] { work(vol); });
 }
 
 StreamChecker::~StreamChecker() { close(); }
 
-void StreamChecker::push(const Beat& b) {
-  filling_.push_back(b);
-  if (filling_.size() < kBatch) return;
+void StreamChecker::push(size_t side, const Beat& b) {
+  std::vector<Beat>& filling = filling_[side];
+  filling.push_back(b);
+  if (filling.size() < kBatch) return;
   {
     std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait(lock, [&] { return pending_.size() < kMaxPending; });
-    hand_over();
+    hand_over(side);
   }
   changed_.notify_all();
 }
 
-void StreamChecker::hand_over() {
-  if (filling_.empty()) return;
-  pending_.push_back(std::move(filling_));
+void StreamChecker::hand_over(size_t side) {
+  std::vector<Beat>& filling = filling_[side];
+  if (filling.empty()) return;
+  pending_.push_back(std::move(filling));
   ++handed_;
   // A checked batch's storage again, if one is back: no fresh pages.
   if (free_.empty()) {
-    filling_ = {};
-    filling_.reserve(kBatch);
+    filling = {};
+    filling.reserve(kBatch);
   } else {
-    filling_ = std::move(free_.back());
+    filling = std::move(free_.back());
     free_.pop_back();
   }
 }
 
 void StreamChecker::drain() {
   std::unique_lock<std::mutex> lock(mutex_);
-  hand_over();
+  hand_over(kFront);
+  hand_over(kBack);
   changed_.notify_all();
   changed_.wait(lock, [&] { return checked_ == handed_; });
 }
@@ -86,7 +89,8 @@ void StreamChecker::close() {
   if (!thread_.joinable()) return;
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    hand_over();
+    hand_over(kFront);
+    hand_over(kBack);
     closed_ = true;
   }
   changed_.notify_all();

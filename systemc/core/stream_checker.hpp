@@ -8,8 +8,12 @@
 // golden render, then every beat in the order the simulation handed them
 // over (copied, in batches; the simulation waits only when the thread is
 // far behind). A check costs the simulation the copies, not the golden
-// work (docs/system.md, "Checks and reports").
+// work (docs/system.md, "Checks and reports"). Samples and gradients are
+// handed over from one thread, shaded samples from one (the same or
+// another: the units may run on two, systemc/core/schedules.hpp); each
+// stream's beats keep their order.
 #pragma once
+#include <array>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -37,13 +41,13 @@ class StreamChecker {
   StreamChecker& operator=(const StreamChecker&) = delete;
 
   void samples(const SampleBeat& b) {
-    if (b.valid) push(b);
+    if (b.valid) push(kFront, b);
   }
   void gradients(const GradientBeat& b) {
-    if (b.valid && plan_.r.gradient) push(b);
+    if (b.valid && plan_.r.gradient) push(kFront, b);
   }
   void shaded(const ShadedBeat& b) {
-    if (b.valid) push(b);
+    if (b.valid) push(kBack, b);
   }
   // Waits until every beat handed over so far is checked (rethrows what
   // the checking thread threw); more beats may follow.
@@ -54,12 +58,14 @@ class StreamChecker {
  private:
   using Beat = std::variant<SampleBeat, GradientBeat, ShadedBeat>;
   static constexpr size_t kBatch = 4096, kMaxPending = 32;
+  // The handing-over sides: samples and gradients, shaded samples.
+  static constexpr size_t kFront = 0, kBack = 1;
 
   size_t index(int k, int x, int y) const {
     return (static_cast<size_t>(k) * plan_.ny + static_cast<size_t>(y)) * plan_.nx + static_cast<size_t>(x);
   }
-  void push(const Beat& b);
-  void hand_over();  // the batch being filled, if any (mutex_ held)
+  void push(size_t side, const Beat& b);
+  void hand_over(size_t side);  // the side's batch being filled, if any (mutex_ held)
   void drain();      // hands it over and waits until every batch is checked
   void close();      // ends the thread
   void work(const golden::Volume& vol);
@@ -78,7 +84,7 @@ class StreamChecker {
   int sample_y_ = 0, sample_j_ = 0;
 
   // The hand-over.
-  std::vector<Beat> filling_;  // the simulation's side
+  std::array<std::vector<Beat>, 2> filling_;  // the simulation's sides
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::vector<Beat>> pending_;

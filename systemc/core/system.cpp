@@ -1,6 +1,6 @@
 #include "systemc/core/system.hpp"
 
-#include <optional>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -8,14 +8,13 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <thread>
 #include <systemc>
 
-#include "systemc/core/clocked_tops.hpp"
-#include "systemc/core/edge_clock.hpp"
 #include "systemc/core/frame_plan.hpp"
-#include "systemc/core/link.hpp"
 #include "systemc/core/pixel_memory.hpp"
 #include "systemc/core/polygon_source.hpp"
+#include "systemc/core/schedules.hpp"
 #include "systemc/core/stream_checker.hpp"
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/voxel_memory.hpp"
@@ -43,191 +42,13 @@ std::string Mismatch::describe() const {
   return s.str();
 }
 
-namespace {
-
-// The units of one frame (plain objects: a frame creates them afresh) and
-// the frame's progress through them.
-struct FrameUnits {
-  std::unique_ptr<AddrIf> addr;
-  std::unique_ptr<StreamFormer> former;
-  std::unique_ptr<InterpIf> interp;
-  std::unique_ptr<GradientIf> gradient;
-  std::unique_ptr<ShadeIf> shade;
-  std::unique_ptr<CompositeIf> composite;
-  StreamChecker* checker = nullptr;
-  PolygonSource* polygons = nullptr;  // a hybrid frame's slab images in time
-  int released_pass = -1;             // frame * passes + pass: the pass the source let start
-  uint64_t release_at = 0;
-  uint64_t first_frame_stalls = 0;
-  golden::Progress progress;
-  uint64_t total_beats = 1;
-  uint64_t cycle = 0, done_cycle = 0;
-  uint64_t last_valid[4] = {0, 0, 0, 0};  // last cycle each link carried a beat
-  int frames = 1;
-  std::vector<uint64_t> frame_done_cycles;  // the cycle each frame's last pixel was written
-  bool done = false;
-};
-
-// One clock edge of each unit: it sees its input link's value of this cycle
-// and returns its output (the next link's value in the next cycle). Both
-// schedules below call these, so they simulate the same machine.
-VoxelBeat former_edge(FrameUnits& u) {
-  ++u.cycle;
-  if (u.polygons && !u.former->done()) {
-    // A pass starts only once its slice's slab image is in the buffer: the
-    // stream waits at its first beat (an invalid beat a cycle).
-    const StreamFormer::Upcoming n = u.former->upcoming();
-    const int id = n.frame * u.former->passes() + n.pass;
-    if (n.first_of_pass && id != u.released_pass) {
-      if (n.pass == 0 && n.frame == 1) u.first_frame_stalls = u.polygons->stall_cycles();
-      u.release_at = u.polygons->release(n.pass, u.cycle);
-      u.released_pass = id;
-    }
-    if (u.cycle < u.release_at) return VoxelBeat{};
-  }
-  const VoxelBeat b = u.former->next();
-  if (b.valid) u.last_valid[0] = u.cycle;
-  if (u.progress && (u.cycle & 0xffff) == 0)
-    u.progress(std::min(1.0, static_cast<double>(u.cycle) / static_cast<double>(u.total_beats)));
-  return b;
+int simulation_threads(const SystemConfig& cfg) {
+  // Waveforms are one thread's: on two the front runs some cycles past the
+  // frame's end, and its units' traces would hold them.
+  if (!cfg.trace.file.empty()) return 1;
+  if (cfg.threads > 0) return std::min(cfg.threads, 2);
+  return std::thread::hardware_concurrency() >= 2 ? 2 : 1;
 }
-SampleBeat interp_edge(FrameUnits& u, const VoxelBeat& in) {
-  SampleBeat out;
-  u.interp->clock(in, out);
-  if (u.checker) u.checker->samples(out);
-  if (out.valid) u.last_valid[1] = u.cycle;
-  return out;
-}
-GradientBeat gradient_edge(FrameUnits& u, const SampleBeat& in) {
-  GradientBeat out;
-  u.gradient->clock(in, out);
-  if (u.checker) u.checker->gradients(out);
-  if (out.valid) u.last_valid[2] = u.cycle;
-  return out;
-}
-ShadedBeat shade_edge(FrameUnits& u, const GradientBeat& in) {
-  ShadedBeat out;
-  u.shade->clock(in, out);
-  if (u.checker) u.checker->shaded(out);
-  if (out.valid) u.last_valid[3] = u.cycle;
-  return out;
-}
-void composite_edge(FrameUnits& u, const ShadedBeat& in) {
-  CompositeOut out;
-  u.composite->clock(in, out);
-  if (out.frame_done) {
-    u.frame_done_cycles.push_back(u.cycle);
-    if (static_cast<int>(u.frame_done_cycles.size()) == u.frames) {
-      u.done = true;
-      u.done_cycle = u.cycle;
-    }
-  }
-}
-
-// The clocked top: one process per unit, registered links between them.
-// SystemC elaborates once per process, so the top is built on the first
-// frame and each frame plugs its units in (sc_pause() ends a frame).
-SC_MODULE(CycleTop) {
-  EdgeClock clk{"clk", sc_core::sc_time(1, sc_core::SC_NS)};
-  Link<VoxelBeat> voxels{"voxels"};
-  Link<SampleBeat> samples{"samples"};
-  Link<GradientBeat> gradients{"gradients"};
-  Link<ShadedBeat> shaded{"shaded"};
-
-  FrameUnits* u = nullptr;
-  std::exception_ptr error;
-
-  SC_CTOR(CycleTop) {
-    SC_METHOD(former_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(interp_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(gradient_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(shade_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(composite_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-  }
-
-  void start(FrameUnits& units) {
-    u = &units;
-    error = nullptr;
-    voxels.reset();
-    samples.reset();
-    gradients.reset();
-    shaded.reset();
-  }
-
-  // Between frames (while the composition network runs on the same
-  // clock) no frame is plugged in.
-  void stop() { u = nullptr; }
-
-  template <class F>
-  void guarded(F&& f) {
-    if (!u || u->done || error) return;
-    try {
-      f();
-    } catch (...) {
-      error = std::current_exception();
-      sc_core::sc_pause();
-    }
-  }
-
-  void former_step() { guarded([&] { voxels.write(former_edge(*u)); }); }
-  void interp_step() { guarded([&] { samples.write(interp_edge(*u, voxels.read())); }); }
-  void gradient_step() { guarded([&] { gradients.write(gradient_edge(*u, samples.read())); }); }
-  void shade_step() { guarded([&] { shaded.write(shade_edge(*u, gradients.read())); }); }
-  void composite_step() {
-    guarded([&] {
-      composite_edge(*u, shaded.read());
-      if (u->done) sc_core::sc_pause();
-    });
-  }
-};
-
-// The same machine without the SystemC kernel: the links are plain
-// registers, and each edge runs the units from the last to the first, so
-// every unit reads its link before its producer overwrites it. The ceiling
-// for the system's speed at a given level mix (docs/performance.md).
-void run_plain(FrameUnits& u) {
-  VoxelBeat voxels;
-  SampleBeat samples;
-  GradientBeat gradients;
-  ShadedBeat shaded;
-  while (!u.done) {
-    composite_edge(u, shaded);
-    if (u.done) break;
-    shaded = shade_edge(u, gradients);
-    gradients = gradient_edge(u, samples);
-    samples = interp_edge(u, voxels);
-    voxels = former_edge(u);
-  }
-}
-
-// Both clocked tops, built together (clocked_tops.hpp); they live as long
-// as the SystemC kernel.
-struct ClockedTops {
-  CycleTop* cycle;
-  sc_core::sc_module* network;
-};
-ClockedTops& clocked_tops() {
-  static ClockedTops tops = [] {
-    auto* top = new CycleTop("cube4");
-    return ClockedTops{top, build_network_top(top->clk)};
-  }();
-  return tops;
-}
-CycleTop& cycle_top() { return *clocked_tops().cycle; }
-
-}  // namespace
-
-sc_core::sc_module& network_top() { return *clocked_tops().network; }
 
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
@@ -376,10 +197,18 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
 #ifdef CUBE4_HAVE_RTL
+    const bool threaded = simulation_threads(cfg) > 1;
     rtl::ScopedVerilatedContext ctx(cfg.seed, !cfg.trace.file.empty(), cfg.assertions);
+    // The back's models' own (schedules.hpp), made before any model so that
+    // both threads' models draw their random reset as one thread's would.
+    std::optional<rtl::ScopedVerilatedContext> back_ctx;
+    if (threaded) back_ctx.emplace(cfg.seed, !cfg.trace.file.empty(), cfg.assertions);
     VerilatedContext* rtl_ctx = ctx.get();
+    VerilatedContext* rtl_back_ctx = back_ctx ? back_ctx->get() : rtl_ctx;
 #else
+    const bool threaded = simulation_threads(cfg) > 1;
     VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit
+    VerilatedContext* rtl_back_ctx = nullptr;
 #endif
     VoxelMemory mem(vol, cfg.p);
     PixelMemory pixels(r, cfg.accumulators);
@@ -413,23 +242,27 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       u.gradient = rtl[1] ? make_rtl_gradient(up, *rtl_ctx, cfg.trace)
                           : std::make_unique<TlmGradient>(up, skip_transparent);
     }
-    u.shade = rtl[2] ? make_rtl_shade(up, *rtl_ctx, cfg.trace, cfg.simulate_unneeded)
-                     : std::make_unique<TlmShade>(up, skip_transparent);
-    u.composite = rtl[3] ? make_rtl_composite(up, pixels, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
+    // Two threads: the front keeps the RTL shading units of the upper half
+    // of the pipelines (schedules.hpp).
+    u.threaded = threaded;
+    u.p = cfg.p;
+    u.front_first_lane = threaded && rtl[2] ? cfg.p - cfg.p / 2 : cfg.p;
+    u.front_ctx = rtl_ctx;
+    u.back_ctx = threaded ? rtl_back_ctx : nullptr;
+    if (rtl[2]) {
+      u.shade = make_rtl_shade(up, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, 0, u.front_first_lane);
+      if (u.front_first_lane < cfg.p)
+        u.front_shade = make_rtl_shade(up, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, u.front_first_lane, cfg.p);
+    } else {
+      u.shade = std::make_unique<TlmShade>(up, skip_transparent);
+    }
+    u.composite = rtl[3] ? make_rtl_composite(up, pixels, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
                          : std::make_unique<TlmComposite>(up, pixels, polygons);
     u.checker = checker.get();
     u.polygons = source.get();
     u.progress = progress;
     u.total_beats = cc.stream * static_cast<uint64_t>(cfg.frames) + cc.flush;
-    if (cfg.kernel == Kernel::SystemC) {
-      CycleTop& top = cycle_top();
-      top.start(u);
-      sc_core::sc_start();
-      top.stop();
-      if (top.error) std::rethrow_exception(top.error);
-    } else {
-      run_plain(u);
-    }
+    run_units(u, cfg.kernel);
     if (!u.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
     res.frame_cycles = u.frame_done_cycles.front();
     if (source) res.polygon_stall_cycles = u.frames > 1 ? u.first_frame_stalls : source->stall_cycles();
@@ -439,7 +272,9 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     res.voxel_reads = mem.reads();
     res.plane = pixels.plane();
 #ifdef CUBE4_HAVE_RTL
-    rtl::write_coverage(*rtl_ctx);  // while the models live (a coverage build's; else nothing)
+    // While the models live (a coverage build's; else nothing).
+    rtl::write_coverage(*rtl_ctx);
+    if (back_ctx) rtl::write_coverage(**back_ctx);
 #endif
   }
   res.stream_cycles += res.polygon_stall_cycles;

@@ -57,6 +57,11 @@ struct SystemConfig {
   // came over the host bus (which carries their pixels, not the work that
   // drew them); unset: golden::polygon_work() of the frame run_frame() gets.
   std::optional<golden::PolygonWork> polygon_work;
+  // Threads of a cycle-level run: 1, or 2 with the shading and compositing
+  // units on a thread of their own (systemc/core/schedules.hpp; the same
+  // cycles and image); 0: 2 on a machine of two cores or more. A traced
+  // run takes one (its waveforms end where the frame does).
+  int threads = 0;
   // Evaluate the RTL units' assertions (rtl/assert/); a failure ends the
   // frame with RtlAssertionError. cube4 render --no-assert turns them off.
   bool assertions = true;
@@ -130,5 +135,8 @@ struct CycleCount {
   uint64_t latency = 0;  // first-frame latency: stream + flush + the pipeline's drain
 };
 CycleCount frame_cycles(const golden::Registers& r, int p);
+
+// The threads a cycle-level run of `cfg` uses (SystemConfig::threads).
+int simulation_threads(const SystemConfig& cfg);
 
 }  // namespace cube4::sysc

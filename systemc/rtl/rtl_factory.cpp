@@ -169,13 +169,14 @@ std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedCo
 }
 
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace,
-                                        bool full) {
+                                        bool full, int first, int last) {
   if (!rtl_available(plan.p)) unavailable(plan.p);
   // Tags need the classifier's wider address and the material RAM (one
   // unit model serves every p).
-  if (plan.r.p.tag_bits > 0) return std::make_unique<RtlShade<Vsys_shade_tags>>(plan, ctx, trace);
-  if (!full && !plan.r.shading && !plan.r.magnitude) return std::make_unique<RtlShade<Vsys_shade_lean>>(plan, ctx, trace);
-  return std::make_unique<RtlShade<Vsys_shade_unit>>(plan, ctx, trace);
+  if (plan.r.p.tag_bits > 0) return std::make_unique<RtlShade<Vsys_shade_tags>>(plan, ctx, trace, first, last);
+  if (!full && !plan.r.shading && !plan.r.magnitude)
+    return std::make_unique<RtlShade<Vsys_shade_lean>>(plan, ctx, trace, first, last);
+  return std::make_unique<RtlShade<Vsys_shade_unit>>(plan, ctx, trace, first, last);
 }
 
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,

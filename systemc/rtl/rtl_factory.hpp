@@ -59,8 +59,10 @@ std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedCo
 // Scenes without shading and without gradient-magnitude modulation get the
 // shading unit without reflectance-map, Phong and magnitude hardware.
 // full: the complete hardware whatever the scene needs (--simulate-all).
+// Only pipelines [first, last) (last < 0: to p), on ctx: the shading units
+// split between two threads (RtlShade).
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace,
-                                        bool full = false);
+                                        bool full = false, int first = 0, int last = -1);
 // Scenes without a cut plane get the ring without cut-plane hardware
 // (HasCutPlane = 0): that logic is not simulated. A frame with polygons
 // gets the ring with polygon hardware (and cut plane), fed the frame's

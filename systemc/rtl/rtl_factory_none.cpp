@@ -26,7 +26,9 @@ std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan&, const golden::SkewLayout
 }
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan&, VerilatedContext&, const TraceWindow&) { unavailable(); }
-std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&, bool) { unavailable(); }
+std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&, bool, int, int) {
+  unavailable();
+}
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, VerilatedContext&, const TraceWindow&,
                                                 bool, const golden::PolygonFrame*) {
   unavailable();

@@ -5,6 +5,11 @@
 // with kRtlVoxelTagBits of tag hardware: each sample's tag goes in, the
 // classification table is loaded at {tag, value} and each tag's material
 // through the mat_* port.
+// An RtlShade may hold only pipelines [first, last): the frame's shading
+// units split between two threads (systemc/core/schedules.cpp), each group
+// writing its own lanes of the shaded beat; the group with pipeline 0
+// writes the beat's valid, flags and position (which every pipeline
+// carries alike).
 #pragma once
 #include <memory>
 #include <vector>
@@ -23,8 +28,9 @@ constexpr int kShadeSideBits = 4 + 3 * 16;
 template <class M>
 class RtlShade final : public ShadeIf {
  public:
-  RtlShade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) : plan_(plan), p_(plan.p) {
-    for (int k = 0; k < p_; ++k) {
+  RtlShade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace, int first = 0, int last = -1)
+      : plan_(plan), first_(first), last_(last < 0 ? plan.p : last) {
+    for (int k = first_; k < last_; ++k) {
       const std::string name = "shade" + std::to_string(k);
       // Only pipeline 0 is traced: the others run the same control.
       units_.push_back(std::make_unique<RtlModel<M>>(ctx, name, k == 0 ? trace : TraceWindow{}, name));
@@ -40,8 +46,9 @@ class RtlShade final : public ShadeIf {
     const uint64_t side = (in.f.beam_start ? 1u : 0u) | (in.f.beam_end ? 2u : 0u) | (in.f.slice_start ? 4u : 0u) |
                           (in.f.slice_end ? 8u : 0u) | (uint64_t(in.x & 0xffff) << 4) |
                           (uint64_t(in.y & 0xffff) << 20) | (uint64_t(in.slice & 0xffff) << 36);
-    for (int k = 0; k < p_; ++k) {
-      M& m = **units_[static_cast<size_t>(k)];
+    for (int k = first_; k < last_; ++k) {
+      RtlModel<M>& unit = *units_[static_cast<size_t>(k - first_)];
+      M& m = *unit;
       const auto i = static_cast<size_t>(k);
       m.valid_i = in.valid;
       m.sample_i = in.sample[i];
@@ -50,7 +57,7 @@ class RtlShade final : public ShadeIf {
       put_bits(m.grad_y_i, 0, pr.gradient_bits, static_cast<uint64_t>(in.gy[i]));
       put_bits(m.grad_z_i, 0, pr.gradient_bits, static_cast<uint64_t>(in.gz[i]));
       m.side_i = side;
-      units_[i]->settle();
+      unit.settle();
       out.red[i] = static_cast<uint16_t>(m.red_o);
       out.green[i] = static_cast<uint16_t>(m.green_o);
       out.blue[i] = static_cast<uint16_t>(m.blue_o);
@@ -67,7 +74,7 @@ class RtlShade final : public ShadeIf {
         out.y = static_cast<int>(s >> 20 & 0xffff);
         out.slice = static_cast<uint32_t>(s >> 36 & 0xffff);
       }
-      units_[i]->rise();
+      unit.rise();
     }
   }
   Level level() const override { return Level::Rtl; }
@@ -92,7 +99,7 @@ class RtlShade final : public ShadeIf {
   }
 
   const FramePlan& plan_;
-  int p_;
+  int first_, last_;
   std::vector<std::unique_ptr<RtlModel<M>>> units_;
 };
 

@@ -2,7 +2,7 @@
 // warp is host code, timed in bench_golden). Prints one JSON object with
 // simulated cycles per wall second and samples per wall second.
 //   bench_system [SCENE] [--model golden|tlm|tlm-cycle|rtl|mixed:UNIT,...] [--kernel systemc|plain]
-//                [--pipes P] [--frames N] [--warmup K] [--simulate-all]
+//                [--pipes P] [--frames N] [--warmup K] [--threads 0|1|2] [--simulate-all]
 // golden: render_fixed() alone, the reference for the TLM level.
 // tlm-cycle: every unit's TLM model clocked beat by beat; --kernel plain:
 // the same units on a plain C++ loop instead of the SystemC kernel.
@@ -28,7 +28,7 @@ using namespace cube4;
 
 int main(int argc, char** argv) {
   std::string scene_path, model = "rtl", kernel = "systemc";
-  int frames = 3, warmup = 1, pipes = 0;
+  int frames = 3, warmup = 1, pipes = 0, threads = 0;
   bool cfg_all = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
     else if (a == "--pipes") pipes = std::atoi(value().c_str());
     else if (a == "--frames") frames = std::atoi(value().c_str());
     else if (a == "--warmup") warmup = std::atoi(value().c_str());
+    else if (a == "--threads") threads = std::atoi(value().c_str());
     else if (a == "--simulate-all") cfg_all = true;
     else if (!a.empty() && a[0] != '-') scene_path = a;
     else { std::fprintf(stderr, "bench_system: unknown option %s\n", a.c_str()); return 2; }
@@ -69,6 +70,7 @@ int main(int argc, char** argv) {
   }
   cfg.kernel = kernel == "plain" ? sysc::Kernel::PlainLoop : sysc::Kernel::SystemC;
   cfg.simulate_unneeded = cfg_all;
+  cfg.threads = threads;
   try {
     golden::Scene s = scene_path.empty() ? golden::default_scene() : golden::load_scene(scene_path);
     const std::string dir = scene_path.empty() ? "." : std::filesystem::path(scene_path).parent_path().string();
@@ -96,6 +98,7 @@ int main(int argc, char** argv) {
         {"model", model},
         {"kernel", kernel},
         {"pipelines", cfg.p},
+        {"threads", model == "golden" ? 1 : sysc::simulation_threads(cfg)},
         {"scene", scene_path.empty() ? "(default)" : scene_path},
         {"frames", frames},
         {"cycles_per_frame", last.frame_cycles},

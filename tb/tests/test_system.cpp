@@ -71,6 +71,40 @@ TEST(System, LargePipelineCountsTlm) {
 }
 // The plain C++ schedule (the benchmarks' ceiling) simulates the same machine.
 TEST(System, SpherePlainLoopP4) { run(Case{}, 4, kRtl, false, sysc::Kernel::PlainLoop); }
+// One thread or two (the shading and compositing units on a thread of
+// their own, and at RTL the upper half of the pipelines' shading units on
+// the first: systemc/core/schedules.hpp), under both kernels: the same
+// frames, cycles, streams and reads. p = 5 splits the shading units 3 + 2.
+TEST(System, TwoThreadsSimulateTheSameFrames) {
+  const auto [vol, regs] = program(Case{});
+  const std::array<Level, sysc::kUnits> mixed_shade{Level::Tlm, Level::Tlm, Level::Rtl, Level::Tlm, Level::Tlm};
+  for (const auto& [levels, p] : {std::pair{kRtl, 4}, std::pair{kRtl, 5}, std::pair{mixed_shade, 4}, std::pair{kTlm, 5}})
+    for (sysc::Kernel kernel : {sysc::Kernel::SystemC, sysc::Kernel::PlainLoop}) {
+      SCOPED_TRACE("p = " + std::to_string(p) + (levels == kRtl ? ", rtl" : levels == kTlm ? ", tlm" : ", mixed:shade") +
+                   (kernel == sysc::Kernel::SystemC ? ", SystemC" : ", plain loop"));
+      sysc::SystemConfig cfg;
+      cfg.p = p;
+      cfg.levels = levels;
+      cfg.cycle_level = true;
+      cfg.check = true;
+      cfg.frames = 2;
+      cfg.kernel = kernel;
+      if (!cfg.all_tlm() && !sysc::rtl_available(p)) continue;
+      cfg.threads = 1;
+      const sysc::SystemResult one = sysc::run_frame(regs, vol, cfg);
+      cfg.threads = 2;
+      const sysc::SystemResult two = sysc::run_frame(regs, vol, cfg);
+      EXPECT_FALSE(one.mismatch) << one.mismatch->describe();
+      EXPECT_FALSE(two.mismatch) << two.mismatch->describe();
+      EXPECT_EQ(two.plane.rgba, one.plane.rgba);
+      EXPECT_EQ(two.plane.rgba, golden::render_fixed(vol, regs).rgba);
+      EXPECT_EQ(two.frame_cycles, one.frame_cycles);
+      EXPECT_EQ(two.measured_interval, one.measured_interval);
+      EXPECT_EQ(two.simulated_cycles, one.simulated_cycles);
+      EXPECT_EQ(two.last_beat, one.last_beat);
+      EXPECT_EQ(two.voxel_reads, one.voxel_reads);
+    }
+}
 
 // The six base planes (p = 5 does not divide any axis: padding everywhere).
 class BasePlanes : public ::testing::TestWithParam<const char*> {};
