@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # What --check costs an RTL frame: `cube4 render --model rtl` of the default
 # scene (brainsmall, p = 4) with --check and with --no-check, N pairs in
-# turn, on every core and pinned to one core (where the stream checker's
-# thread cannot run beside the simulation). Writes the median frame times
+# turn, on every core (the simulation on two threads where there are two:
+# docs/system.md) and pinned to one core with one simulation thread (where
+# the stream checker's thread cannot run beside the simulation). Writes the median frame times
 # (the report's frame_ms) and their ratios into the "check-cost" section of
 # docs/performance.md.
 #   scripts/perf_check.sh [N]     (default 5; CUBE4_BUILD: the build folder)
@@ -19,7 +20,8 @@ import json, shutil, statistics, subprocess, sys, datetime
 cube4, n, cores, tmp, cpu = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4], sys.argv[5]
 def frame_ms(check, pin):
     cmd = [cube4, "render", "--model", "rtl", check, "-q", "-o", f"{tmp}/o.png", "--report", f"{tmp}/r.json"]
-    if pin and shutil.which("taskset"): cmd = ["taskset", "-c", str(cores - 1)] + cmd
+    # One core: one simulation thread (beside the checker's).
+    if pin and shutil.which("taskset"): cmd = ["taskset", "-c", str(cores - 1)] + cmd + ["--threads", "1"]
     subprocess.run(cmd, check=True)
     return json.load(open(f"{tmp}/r.json"))["frame_ms"]["median"]
 print(f"Measured {datetime.date.today()} by `scripts/perf_check.sh {n}` on {cpu} ({cores} cores): "

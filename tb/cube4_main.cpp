@@ -905,7 +905,8 @@ int main(int argc, char** argv) {
   render->add_option("--threads", ra.threads,
                      "fixed model and --check: threads, each rendering a band of rays; clocked system models: 1 "
                      "runs the units on one thread, more on two (the shading and compositing units on a thread "
-                     "of their own) (default 0: one per core; the image and cycles are the same for any number)")
+                     "of their own; default: two when one of them is at RTL) (default 0: one per core; the "
+                     "image and cycles are the same for any number)")
       ->check(CLI::Range(0, 1024));
   render->add_option("--blocks", ra.blocks,
                      "AxBxC: render the volume as blocks along x, y, z, each by a machine of its own, merged by the "

@@ -18,7 +18,7 @@ namespace cube4::sysc {
 template <class T>
 class CyclePipe {
  public:
-  explicit CyclePipe(size_t batch = 256, size_t max_pending = 16) : batch_(batch), max_pending_(max_pending) {
+  explicit CyclePipe(size_t batch = 1024, size_t max_pending = 8) : batch_(batch), max_pending_(max_pending) {
     filling_.reserve(batch_);
   }
   CyclePipe(const CyclePipe&) = delete;
@@ -95,16 +95,20 @@ class CyclePipe {
     changed_.notify_all();
   }
 
+  // Each side's fields on cache lines of their own, and the stop flag,
+  // which the producer reads every cycle, on one that nobody writes while
+  // values flow: a line one side writes and the other reads every cycle
+  // would travel between the cores every cycle.
   const size_t batch_, max_pending_;
-  std::vector<T> filling_;  // the producer's
-  std::vector<T> reading_;  // the consumer's
+  alignas(64) std::vector<T> filling_;  // the producer's
+  alignas(64) std::vector<T> reading_;  // the consumer's
   size_t at_ = 0;
-  std::mutex mutex_;
+  alignas(64) std::atomic<bool> stopped_{false};
+  alignas(64) std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::vector<T>> pending_;
   std::vector<std::vector<T>> free_;
   bool closed_ = false;
-  std::atomic<bool> stopped_{false};
 };
 
 }  // namespace cube4::sysc

@@ -74,7 +74,7 @@ ShadedBeat shade_edge(FrameUnits& u, const GradientBeat& in, uint64_t cycle, con
       out.value[k] = front->value[k];
     }
   if (u.checker) u.checker->shaded(out);
-  if (out.valid) u.last_valid[3] = cycle;
+  if (out.valid) u.last_shaded = cycle;
   return out;
 }
 void composite_edge(FrameUnits& u, const ShadedBeat& in, uint64_t cycle) {
@@ -150,11 +150,11 @@ class BackEnd {
 #ifdef CUBE4_HAVE_RTL
     if (u_.back_ctx) Verilated::threadContextp(u_.back_ctx);
 #endif
+    uint64_t cycle = 0;
     try {
       GradientBeat gradients;
       ShadedBeat shaded;
-      for (uint64_t cycle = 0;; ++cycle) {
-        back_cycle_ = cycle;
+      for (; ; ++cycle) {
         composite_edge(u_, shaded, cycle);
         if (u_.done) break;
         const FrontCycle* c = pipe_.pop();
@@ -164,6 +164,7 @@ class BackEnd {
       }
     } catch (...) {
       back_error_ = std::current_exception();
+      back_cycle_ = cycle;
     }
     pipe_.stop();
   }

@@ -8,7 +8,7 @@
 // and compositing units (the back) can run any number of cycles behind the
 // address generation, interpolation and gradient units (the front), fed
 // each cycle's gradient beat through a CyclePipe. At RTL the shading units
-// of the upper half of the pipelines stay on the front (their lanes of the
+// of the upper quarter of the pipelines stay on the front (their lanes of the
 // shaded beat travel with the gradient beat), which evens the two halves'
 // work: the shading units are most of an RTL frame
 // (docs/performance.md, "Simulation speed of the system model").
@@ -39,23 +39,31 @@ struct FrameUnits {
   std::unique_ptr<CompositeIf> composite;
   StreamChecker* checker = nullptr;
   PolygonSource* polygons = nullptr;  // a hybrid frame's slab images in time
-  int released_pass = -1;             // frame * passes + pass: the pass the source let start
-  uint64_t release_at = 0;
-  uint64_t first_frame_stalls = 0;
   golden::Progress progress;
   uint64_t total_beats = 1;
-  uint64_t cycle = 0, done_cycle = 0;
-  uint64_t last_valid[4] = {0, 0, 0, 0};  // last cycle each link carried a beat
   int frames = 1;
+
+  // Written by the front (stream former .. gradient unit).
+  int released_pass = -1;  // frame * passes + pass: the pass the source let start
+  uint64_t release_at = 0;
+  uint64_t first_frame_stalls = 0;
+  uint64_t cycle = 0;
+  uint64_t last_valid[3] = {0, 0, 0};  // last cycle the voxel, sample and gradient links carried a beat
+
+  // Written by the back (shading and compositing units), a cache line of
+  // their own: on two threads a line both wrote every cycle would travel
+  // between the cores every cycle.
+  alignas(64) uint64_t last_shaded = 0;  // last cycle the shaded link carried a beat
+  uint64_t done_cycle = 0;
   std::vector<uint64_t> frame_done_cycles;  // the cycle each frame's last pixel was written
   bool done = false;
 
-  // Two threads: `shade` then holds the back's shading units (pipelines
+  // Two threads (read-only while the frame runs): `shade` then holds the back's shading units (pipelines
   // [0, front_first_lane)) and `front_shade`, if any, the front's (the
   // rest, at RTL). Each thread's verilated models have a context of their
   // own (Verilator reports an assertion to the thread's context), made the
   // thread's while it runs them.
-  bool threaded = false;
+  alignas(64) bool threaded = false;
   std::unique_ptr<ShadeIf> front_shade;
   int p = 1, front_first_lane = 0;
   VerilatedContext* front_ctx = nullptr;

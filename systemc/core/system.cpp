@@ -47,7 +47,11 @@ int simulation_threads(const SystemConfig& cfg) {
   // frame's end, and its units' traces would hold them.
   if (!cfg.trace.file.empty()) return 1;
   if (cfg.threads > 0) return std::min(cfg.threads, 2);
-  return std::thread::hardware_concurrency() >= 2 ? 2 : 1;
+  // The hand-over costs the front more than TLM shading and compositing
+  // cost on one thread (docs/performance.md): two only for RTL ones.
+  const bool rtl_back = cfg.levels[static_cast<size_t>(Unit::Shade)] == Level::Rtl ||
+                        cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl;
+  return rtl_back && std::thread::hardware_concurrency() >= 2 ? 2 : 1;
 }
 
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
@@ -242,11 +246,12 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       u.gradient = rtl[1] ? make_rtl_gradient(up, *rtl_ctx, cfg.trace)
                           : std::make_unique<TlmGradient>(up, skip_transparent);
     }
-    // Two threads: the front keeps the RTL shading units of the upper half
-    // of the pipelines (schedules.hpp).
+    // Two threads: the front keeps the RTL shading units of the upper
+    // quarter of the pipelines (schedules.hpp), which evened the threads'
+    // work best at p = 4 and 8 (docs/performance.md).
     u.threaded = threaded;
     u.p = cfg.p;
-    u.front_first_lane = threaded && rtl[2] ? cfg.p - cfg.p / 2 : cfg.p;
+    u.front_first_lane = threaded && rtl[2] ? cfg.p - cfg.p / 4 : cfg.p;
     u.front_ctx = rtl_ctx;
     u.back_ctx = threaded ? rtl_back_ctx : nullptr;
     if (rtl[2]) {
@@ -267,7 +272,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     res.frame_cycles = u.frame_done_cycles.front();
     if (source) res.polygon_stall_cycles = u.frames > 1 ? u.first_frame_stalls : source->stall_cycles();
     if (u.frames > 1) res.measured_interval = u.frame_done_cycles[1] - u.frame_done_cycles[0];
-    res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_valid[3]};
+    res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_shaded};
     res.simulated_cycles = u.done_cycle;
     res.voxel_reads = mem.reads();
     res.plane = pixels.plane();

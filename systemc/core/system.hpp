@@ -59,8 +59,9 @@ struct SystemConfig {
   std::optional<golden::PolygonWork> polygon_work;
   // Threads of a cycle-level run: 1, or 2 with the shading and compositing
   // units on a thread of their own (systemc/core/schedules.hpp; the same
-  // cycles and image); 0: 2 on a machine of two cores or more. A traced
-  // run takes one (its waveforms end where the frame does).
+  // cycles and image); 0: 2 when the shading or compositing unit runs at
+  // RTL on a machine of two cores or more. A traced run takes one (its
+  // waveforms end where the frame does).
   int threads = 0;
   // Evaluate the RTL units' assertions (rtl/assert/); a failure ends the
   // frame with RtlAssertionError. cube4 render --no-assert turns them off.

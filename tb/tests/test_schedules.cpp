@@ -108,7 +108,7 @@ Outcome run_tlm(bool threaded, sysc::Kernel kernel, uint64_t gradient_fail = 0, 
   o.plane = pixels.plane();
   o.done_cycle = u.done_cycle;
   o.frames = u.frame_done_cycles;
-  o.last = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_valid[3]};
+  o.last = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_shaded};
   o.reads = mem.reads();
   return o;
 }

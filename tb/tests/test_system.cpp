@@ -72,13 +72,15 @@ TEST(System, LargePipelineCountsTlm) {
 // The plain C++ schedule (the benchmarks' ceiling) simulates the same machine.
 TEST(System, SpherePlainLoopP4) { run(Case{}, 4, kRtl, false, sysc::Kernel::PlainLoop); }
 // One thread or two (the shading and compositing units on a thread of
-// their own, and at RTL the upper half of the pipelines' shading units on
-// the first: systemc/core/schedules.hpp), under both kernels: the same
-// frames, cycles, streams and reads. p = 5 splits the shading units 3 + 2.
+// their own, and at RTL the upper quarter of the pipelines' shading units
+// on the first: systemc/core/schedules.hpp), under both kernels: the same
+// frames, cycles, streams and reads. The shading units split 3 + 1 at
+// p = 4, 4 + 1 at p = 5 and 6 + 2 at p = 8.
 TEST(System, TwoThreadsSimulateTheSameFrames) {
   const auto [vol, regs] = program(Case{});
   const std::array<Level, sysc::kUnits> mixed_shade{Level::Tlm, Level::Tlm, Level::Rtl, Level::Tlm, Level::Tlm};
-  for (const auto& [levels, p] : {std::pair{kRtl, 4}, std::pair{kRtl, 5}, std::pair{mixed_shade, 4}, std::pair{kTlm, 5}})
+  for (const auto& [levels, p] : {std::pair{kRtl, 4}, std::pair{kRtl, 5}, std::pair{kRtl, 8}, std::pair{mixed_shade, 4},
+                                 std::pair{kTlm, 5}})
     for (sysc::Kernel kernel : {sysc::Kernel::SystemC, sysc::Kernel::PlainLoop}) {
       SCOPED_TRACE("p = " + std::to_string(p) + (levels == kRtl ? ", rtl" : levels == kTlm ? ", tlm" : ", mixed:shade") +
                    (kernel == sysc::Kernel::SystemC ? ", SystemC" : ", plain loop"));
