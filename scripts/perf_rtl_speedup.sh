@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# How much faster an RTL frame is than in an earlier revision, measured in
+# one run: builds REV's bench_system (its RTL for p = 4 only) in a worktree
+# of this repository, then times `bench_system --model rtl` (brainsmall,
+# the default scene, p = 4, SystemC kernel) of that build and of this one in
+# turn, round by round, so that a drift of the machine's speed reaches both
+# alike. This build runs on its default threads (two on a machine of two
+# cores: docs/system.md) and on one. Writes the "rtl-speedup" section of
+# docs/performance.md.
+#   scripts/perf_rtl_speedup.sh [REV] [ROUNDS]
+# REV defaults to 5c52013, the last commit before the work that issue 16
+# (simulation speed) was filed against; ROUNDS to 5, of 3 frames each.
+# CUBE4_BUILD: this repository's build folder, already built (skips the
+# set-up). REV's build stays in build-rev-REV/ for the next run.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+if [ -z "${CUBE4_BUILD:-}" ]; then "$here/scripts/setup.sh" >/dev/null; fi
+build=${CUBE4_BUILD:-$here/build}
+rev=${1:-5c52013}
+rounds=${2:-5}
+old=$here/build-rev-$rev
+if [ ! -x "$old/build/tb/bench/bench_system" ]; then
+  echo "perf_rtl_speedup: building $rev's bench_system in $old (RTL for p = 4 only)..." >&2
+  if [ ! -d "$old/src" ]; then
+    mkdir -p "$old"
+    git -C "$here" worktree add --detach "$old/src" "$rev" >/dev/null
+  fi
+  cmake -S "$old/src" -B "$old/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCUBE4_SYSTEM_PIPES=4 >/dev/null
+  cmake --build "$old/build" --target bench_system >/dev/null
+fi
+[ -x "$build/tb/bench/bench_system" ] || cmake --build "$build" --target bench_system >/dev/null
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for round in $(seq "$rounds"); do
+  echo "perf_rtl_speedup: round $round of $rounds..." >&2
+  "$old/build/tb/bench/bench_system" --model rtl --frames 3 --warmup 1 >> "$tmp/old.json"
+  "$build/tb/bench/bench_system" --model rtl --frames 3 --warmup 1 >> "$tmp/new.json"
+  "$build/tb/bench/bench_system" --model rtl --frames 3 --warmup 1 --threads 1 >> "$tmp/one.json"
+done
+python3 - "$tmp" "$rev" "$(git -C "$here" rev-parse --short HEAD)" "$(nproc)" \
+  "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | \
+  python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" rtl-speedup
+import json, statistics, sys, datetime
+tmp, rev, head, cores, cpu = sys.argv[1:6]
+def rows(name):
+    return [json.loads(l) for l in open(f"{tmp}/{name}.json") if l.strip()]
+old, new, one = rows("old"), rows("new"), rows("one")
+med = lambda rs: statistics.median(r["ms"]["median"] for r in rs)
+print(f"Measured {datetime.date.today()} by `scripts/perf_rtl_speedup.sh {rev} {len(old)}` on {cpu} ({cores} cores): "
+      f"`bench_system --model rtl` (brainsmall, default view, p = 4, SystemC kernel), the median of {len(old)} rounds' "
+      "median frame times, the builds taking turns round by round.")
+print()
+print("| build | threads | ms/frame | cycles/frame | speed-up against " + rev + " |")
+print("|---|---:|---:|---:|---:|")
+o = med(old)
+print(f"| {rev} | 1 | {o:.0f} | {old[0]['cycles_per_frame']} | 1.00× |")
+print(f"| {head} | 1 | {med(one):.0f} | {one[0]['cycles_per_frame']} | {o / med(one):.2f}× |")
+print(f"| {head} | {new[0].get('threads', 1)} (default) | {med(new):.0f} | {new[0]['cycles_per_frame']} | "
+      f"**{o / med(new):.2f}×** |")
+PY
+echo "perf_rtl_speedup: docs/performance.md updated" >&2
