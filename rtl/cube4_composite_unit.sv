@@ -398,7 +398,12 @@ module cube4_composite_unit #(
     assign next_5      = poly_enabled_i && step_q[4] && real_q[AccDelay-2];
     assign slab_line_o = line_4;
 
+    // Waiver: a slab word is 16 bits and a pixel channel AlphaBits of them
+    // (the low ones, below); with AlphaBits < 16 the words' top bits go
+    // unused.
+    /* verilator lint_off UNUSEDSIGNAL */
     logic [W-1:0] slab_r, slab_g, slab_b, slab_a;
+    /* verilator lint_on UNUSEDSIGNAL */
     logic         slab_valid, slab_error, slab_finished;
     cube4_rle_decode u_slab_decode (
       .clk_i,

@@ -251,9 +251,10 @@ void check_system_limits(const Loaded& l, const sysc::SystemConfig& cfg, const g
                          "or in more blocks (--blocks AxBxC)");
     try {
       sysc::check_system_limits(regs, cfg);
+    } catch (const sysc::VolumeTooLarge& e) {
+      throw InputError(who.empty() ? std::string(e.what()) : l.volume.source + ": " + who + ": " + e.what() + "; use more blocks");
     } catch (const std::invalid_argument& e) {
-      throw InputError(who.empty() ? std::string(e.what()) + "; or render the volume in blocks (--blocks AxBxC)"
-                                   : l.volume.source + ": " + who + ": " + e.what() + "; use more blocks");
+      throw InputError(who.empty() ? std::string(e.what()) : l.volume.source + ": " + who + ": " + e.what());
     }
   };
   if (!plan) return one(l.volume.dim, l.host.regs, "");

@@ -64,7 +64,7 @@ uint64_t FramePlan::pass_tag(int pass) const {
 }
 
 #ifdef CUBE4_SYSTEM_TAG_BITS
-static_assert(rtl::gradient_tag_bits(golden::Precision{}.weight_bits, kUserTagBits) == CUBE4_SYSTEM_TAG_BITS,
+static_assert(rtl::gradient_tag_bits(CUBE4_SYSTEM_WEIGHT_BITS, kUserTagBits) == CUBE4_SYSTEM_TAG_BITS,
               "the system's verilated rings carry another tag width (cube4_gradient_tag_bits)");
 #endif
 

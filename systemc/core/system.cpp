@@ -65,25 +65,21 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   require_rtl(cfg.p);
   // Voxel tags (bela §III) run on the units verilated with tag hardware
   // (kRtlVoxelTagBits wide, for CMake's CUBE4_SYSTEM_TAG_PIPES); every other
-  // width is the default one.
+  // width is the build's (CMake's CUBE4_SYSTEM_WIDTHS).
   if (r.p.tag_bits > 0 && (cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl ||
                            cfg.levels[static_cast<size_t>(Unit::Gradient)] == Level::Rtl))
     require_rtl_tags(cfg.p, r.p.tag_bits);
-  golden::Precision widths = r.p;
-  widths.tag_bits = 0;
-  if (const golden::PrecisionField* f = golden::first_difference(widths, golden::Precision{}, true))
-    throw std::invalid_argument(std::string("precision: ") + f->key + " = " + std::to_string(r.p.*f->member) +
-                                ", but the system's RTL is verilated with the default widths "
-                                "(docs/fixed-point.md); run other widths with --model tlm");
+  require_rtl_widths(r.p, "the system's RTL");
   // The address generator's dimension registers (cube4_pkg::DimBits).
   if (cfg.levels[static_cast<size_t>(Unit::Addr)] == Level::Rtl)
     for (int axis = 0; axis < 3; ++axis)
       if (r.dim[axis] >= (1 << kRtlAddrDimBits))
-        throw std::invalid_argument(
+        throw VolumeTooLarge(
             "volume: a dimension of " + std::to_string(r.dim[axis]) + " voxels, more than the RTL address "
             "generator's " + std::to_string(kRtlAddrDimBits) + "-bit dimension registers hold (at most " +
             std::to_string((1 << kRtlAddrDimBits) - 1) + "; DimBits in rtl/cube4_pkg.sv); run the address "
-            "generation at TLM (--model tlm, or mixed: without addr)");
+            "generation at TLM (--model tlm, or mixed: without addr), or split the volume into sub-cubes that "
+            "fit (--blocks AxBxC)");
   // The rings keep beams and slices of the permuted x and y; a gradient
   // unit the scene does not need is not run at all.
   const bool gradient_runs = r.gradient || cfg.simulate_unneeded;
@@ -91,7 +87,7 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
     if (cfg.levels[static_cast<size_t>(u)] != Level::Rtl || (u == Unit::Gradient && !gradient_runs)) continue;
     for (int axis = 0; axis < 2; ++axis)
       if (r.dim[axis] > kRtlMaxDim)
-        throw std::invalid_argument(
+        throw VolumeTooLarge(
             std::string("volume: the view's permuted ") + (axis == 0 ? "x" : "y") + " axis has " +
             std::to_string(r.dim[axis]) + " voxels, more than the " + unit_name(u) +
             " ring's storage at RTL holds (MaxDim " + std::to_string(kRtlMaxDim) +

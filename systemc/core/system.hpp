@@ -5,6 +5,7 @@
 // and counts its cycles. docs/system.md describes the structure and the
 // cycle accounting.
 #pragma once
+#include <stdexcept>
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -124,7 +125,11 @@ void check_polygon_levels(const SystemConfig& cfg);
 // cycle-level run, the ring storage of each ring unit at RTL (a unit
 // without ring storage, shading or address generation, is not held to it),
 // the stream tag's slices. Throws std::invalid_argument naming the limit,
-// the value and what to do.
+// the value and what to do; VolumeTooLarge for a limit that smaller
+// sub-cubes (--blocks) would meet.
+struct VolumeTooLarge : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg);
 
 // The analytic cycle count of a frame at the hardware's rate, for any p

@@ -5,7 +5,7 @@
 // tag. The system's
 // stream former (FramePlan::pass_tag) and the ring testbenches form it
 // here; CMake's cube4_gradient_tag_bits (rtl/CMakeLists.txt) sizes the
-// verilated rings with the same layout at the rings' default widths.
+// verilated rings with the same layout at the system's WeightBits.
 #pragma once
 #include <cstdint>
 

@@ -13,19 +13,18 @@
 #include "golden/pipeline.hpp"
 #include "systemc/core/trace_window.hpp"
 #include "systemc/rtl/dda_control.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 
 namespace cube4::sysc {
 
-// The verilated unit's widths (its parameter defaults, rtl/cube4_dda.sv).
-constexpr int kRtlDdaFracBits = 20, kRtlDdaPosBits = 48;
+// The verilated unit's position width (its parameter default,
+// rtl/cube4_dda.sv); its FracBits is the build's dda_frac_bits.
+constexpr int kRtlDdaPosBits = 48;
 
 template <class M>
 std::vector<golden::SliceControl> run_rtl_dda(const golden::Registers& r, VerilatedContext& ctx) {
-  if (r.p.dda_frac_bits != kRtlDdaFracBits)
-    throw std::invalid_argument("precision: dda_frac_bits = " + std::to_string(r.p.dda_frac_bits) +
-                                ", but the RTL weight generator is verilated with " +
-                                std::to_string(kRtlDdaFracBits) + "; run with --model tlm");
+  require_rtl_widths(r.p, "the RTL weight generator");
   const int K = r.sample_slices();
   // Every position the accumulators hold (slices -1 .. K + 1) must fit.
   const int64_t limit = int64_t{1} << (kRtlDdaPosBits - 1);
@@ -51,7 +50,7 @@ std::vector<golden::SliceControl> run_rtl_dda(const golden::Registers& r, Verila
     m->advance_i = k > 0;
     m.setup_edge();
     m->start_i = 0;
-    out.push_back(rtl::read_dda_control(*m, kRtlDdaPosBits - kRtlDdaFracBits));
+    out.push_back(rtl::read_dda_control(*m, kRtlDdaPosBits - r.p.dda_frac_bits));
   }
   return out;
 }

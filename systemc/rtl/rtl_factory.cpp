@@ -2,6 +2,7 @@
 // systemc/CMakeLists.txt: rtl_variant_headers.inc, rtl_variant_list.inc).
 #include "systemc/rtl/rtl_factory.hpp"
 
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -53,6 +54,29 @@ namespace {
 }
 
 }  // namespace
+
+golden::Precision rtl_precision() {
+  struct Width {
+    const char* name;
+    int value;
+  };
+  static constexpr Width kWidths[] = {
+#define CUBE4_RTL_WIDTH(name, value) {#name, value},
+#include "rtl_widths.inc"
+#undef CUBE4_RTL_WIDTH
+      {nullptr, 0}};
+  golden::Precision p;
+  for (const Width& w : kWidths) {
+    if (!w.name) break;
+    const golden::PrecisionField* field = nullptr;
+    for (const golden::PrecisionField& f : golden::kPrecisionFields)
+      if (f.rtl_parameter && std::strcmp(f.rtl_parameter, w.name) == 0) field = &f;
+    // cmake/system_widths.cmake takes only the table's names.
+    if (!field) throw std::logic_error(std::string("CUBE4_SYSTEM_WIDTHS: no precision field ") + w.name);
+    p.*field->member = w.value;
+  }
+  return p;
+}
 
 std::vector<int> rtl_pipes() {
   return {
@@ -202,25 +226,14 @@ std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemo
   }
 }
 
-// The network's units exist at the default widths (what the machines'
-// partial images have at RTL too).
-void require_default_compose_widths(const golden::Precision& p) {
-  golden::Precision q = p;
-  q.tag_bits = 0;  // the partial images carry no tags
-  if (const golden::PrecisionField* f = golden::first_difference(q, golden::Precision{}, true))
-    throw std::invalid_argument(std::string("precision: ") + f->key + " = " + std::to_string(p.*f->member) +
-                                ", but the composition network's RTL is verilated with the default widths; "
-                                "compose at TLM");
-}
-
 std::unique_ptr<ComposeNodeIf> make_rtl_compose_node(golden::BlendMode mode, const golden::Precision& p,
                                                      VerilatedContext& ctx, const TraceWindow& trace, size_t index) {
-  require_default_compose_widths(p);
+  require_rtl_widths(p, "the composition network's RTL");
   return std::make_unique<RtlComposeNode<Vsys_compose_node>>(mode, p, ctx, trace, "node" + std::to_string(index));
 }
 
 std::unique_ptr<ComposeOutIf> make_rtl_compose_out(const golden::Precision& p, VerilatedContext& ctx) {
-  require_default_compose_widths(p);
+  require_rtl_widths(p, "the composition network's RTL");
   return std::make_unique<RtlComposeOut<Vsys_compose_out>>(ctx);
 }
 

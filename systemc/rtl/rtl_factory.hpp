@@ -3,6 +3,7 @@
 // no p is available and the system runs at transaction level only.
 #pragma once
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "golden/polygon_frame.hpp"
@@ -33,6 +34,14 @@ constexpr int kRtlAddrDimBits = 10;
 // (bela §III; CMake CUBE4_SYSTEM_TAG_PIPES, checked in rtl_factory.cpp): a
 // scene's tags of up to this many bits use them, in their low bits.
 constexpr int kRtlVoxelTagBits = 4;
+
+// The widths the system's RTL is verilated with: the defaults, or CMake's
+// CUBE4_SYSTEM_WIDTHS (cmake/system_widths.cmake); tag_bits is 0 (voxel
+// tags have variants of their own).
+golden::Precision rtl_precision();
+// Throws, naming the first width (tags aside) in which p differs from
+// rtl_precision(), if it does; `what` names the hardware that needs them.
+void require_rtl_widths(const golden::Precision& p, const std::string& what);
 
 std::vector<int> rtl_pipes();
 bool rtl_available(int p);
@@ -72,7 +81,7 @@ std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemo
                                                 const golden::PolygonFrame* polygons = nullptr);
 
 // The composition network's units (systemc/core/compose_network.hpp),
-// verilated once at the default widths; `index` names the node.
+// verilated once at rtl_precision(); `index` names the node.
 struct ComposeNodeIf;
 struct ComposeOutIf;
 std::unique_ptr<ComposeNodeIf> make_rtl_compose_node(golden::BlendMode mode, const golden::Precision& p,

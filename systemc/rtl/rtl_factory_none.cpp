@@ -6,6 +6,7 @@
 
 namespace cube4::sysc {
 
+golden::Precision rtl_precision() { return {}; }
 std::vector<int> rtl_pipes() { return {}; }
 bool rtl_available(int) { return false; }
 

@@ -514,6 +514,10 @@ TEST_F(Reliability, LimitsAreCheckedBeforeAnyVoxelIsLoaded) {
   const CliResult w = run("render " + write("w.json", missing_raw_scene(16, 16, 8, R"(, "precision": {"alpha_bits": 12, "acc_guard_bits": 0})")) +
                           " --model mixed:shade" + out);
   expect_one_error_line(w, "precision: alpha_bits = 12");
+  // The message says how to build the RTL at those widths, not to use blocks.
+  EXPECT_NE(w.err.find("CUBE4_SYSTEM_WIDTHS"), std::string::npos) << w.err;
+  EXPECT_NE(w.err.find("scripts/build_widths.sh AlphaBits=12"), std::string::npos) << w.err;
+  EXPECT_EQ(w.err.find("--blocks"), std::string::npos) << w.err;
   // More pipelines than a cycle-level run has lanes.
   expect_one_error_line(run("render " + small + " --model rtl --pipes 32" + out), "at most 16");
 #else
