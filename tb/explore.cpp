@@ -21,6 +21,7 @@
 #include "golden/errors.hpp"
 #include "golden/precision.hpp"
 #include "golden/scene_io.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
 #include "tb/image_error.hpp"
 #include "tb/image_io.hpp"
 #include "tb/report.hpp"
@@ -215,6 +216,43 @@ fs::path gates_cache_dir(const ExploreArgs& a) {
   return fs::path(home && *home ? home : "/tmp") / ".cache" / "cube4" / "gates";
 }
 
+// Whether the model runs some unit at RTL (a build verilated at the point's
+// widths and p is then needed).
+bool model_has_rtl(const std::string& m) { return m == "rtl" || m.rfind("mixed:", 0) == 0; }
+
+// The cube4 that renders a point at RTL: this one, if its RTL was verilated
+// at the point's widths and p; else one scripts/build_widths.sh builds (and
+// keeps) for them. The jobs that need the same build wait for the first.
+std::string rtl_renderer(const golden::Scene& scene, const std::string& self, const fs::path& log) {
+  const golden::Precision built = sysc::rtl_precision();
+  golden::Precision asked = scene.precision;
+  asked.tag_bits = 0;
+  const std::vector<int> pipes = sysc::rtl_pipes();
+  const bool has_p = std::find(pipes.begin(), pipes.end(), scene.pipelines) != pipes.end();
+  if (has_p && !golden::first_difference(asked, built, true)) return self;
+  std::vector<std::string> args{"bash", source_dir() + "/scripts/build_widths.sh", "--pipes",
+                                std::to_string(scene.pipelines)};
+  for (const golden::PrecisionField& f : golden::kPrecisionFields)
+    if (f.rtl_parameter && f.member != &golden::Precision::tag_bits &&
+        asked.*f.member != golden::Precision{}.*f.member)
+      args.push_back(std::string(f.rtl_parameter) + "=" + std::to_string(asked.*f.member));
+  const char* root = std::getenv("CUBE4_WIDTH_BUILDS");
+  const fs::path builds = root && *root ? fs::path(root) : fs::path(source_dir()) / "build-widths";
+  fs::create_directories(builds);
+  FileLock lock(builds / ".lock");
+  const ChildResult r = run_child(args, log);
+  if (r.exit_code != 0)
+    throw std::runtime_error("explore: scripts/build_widths.sh could not build the RTL at this point's widths (" +
+                             log.string() + ")");
+  // The script's one stdout line, the program's path, ends the log.
+  std::istringstream lines(read_text(log));
+  std::string path;
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty()) path = line;
+  if (!fs::exists(path)) throw std::runtime_error("explore: scripts/build_widths.sh named no program (" + log.string() + ")");
+  return path;
+}
+
 }  // namespace
 
 // The widths some unit is built with, p, and the memories p sizes.
@@ -319,7 +357,7 @@ fs::path point_dir(const fs::path& out, int i) {
 // What a point's result depends on: rerun it when any of these changes.
 std::string point_hash(const Sweep& s, const ExplorePoint& p) {
   return hash_text(p.scene.dump() + "|" + s.model + "|" + std::to_string(s.reference_step) + "|" +
-                   std::to_string(s.gates) + "|" + std::to_string(s.roi[0]) + "," + std::to_string(s.roi[1]) + "," +
+                   std::to_string(s.gates) + "|" + (s.check ? "check|" : "") + std::to_string(s.roi[0]) + "," + std::to_string(s.roi[1]) + "," +
                    std::to_string(s.roi[2]) + "," + std::to_string(s.roi[3]));
 }
 
@@ -379,18 +417,22 @@ int run_point(const Sweep& s, const ExplorePoint& p, const ExploreArgs& a, const
   };
   try {
     const fs::path ref = reference_image(s, p, out, self);
-    std::vector<std::string> args{self, "render", (dir / "scene.json").string(), "--model", s.model, "-q",
+    const golden::Scene scene = golden::parse_scene(p.scene.dump(), (dir / "scene.json").string());
+    const std::string renderer = model_has_rtl(s.model) ? rtl_renderer(scene, self, dir / "build-log.txt") : self;
+    if (renderer != self) result["rtl_build"] = renderer;
+    std::vector<std::string> args{renderer, "render", (dir / "scene.json").string(), "--model", s.model, "-q",
                                   "-o", (dir / "image.exr").string(), "--report", (dir / "report.json").string()};
-    if (system_level(s.model)) args.push_back("--no-check");  // equivalence is cube4 regress's job
+    // Equivalence is cube4 regress's job, unless the sweep asks for it.
+    if (system_level(s.model)) args.push_back(s.check ? "--check" : "--no-check");
     const ChildResult r = run_child(args, dir / "log.txt");
     if (r.exit_code != 0) return fail("cube4 render exited " + std::to_string(r.exit_code) + ": " + r.last_error);
+    if (system_level(s.model) && s.check) result["check"] = "bit-exact";  // a mismatch fails the render
     const golden::ImageF img = read_image((dir / "image.exr").string());
     const golden::ImageF reference = read_image(ref.string());
     result["error"] = error_json(image_error(img, reference));
     if (s.roi[2] > 0) result["error_roi"] = error_json(image_error(img, reference, {s.roi[0], s.roi[1], s.roi[2], s.roi[3]}));
 
     const json rep = json::parse(read_text(dir / "report.json"));
-    const golden::Scene scene = golden::parse_scene(p.scene.dump(), (dir / "scene.json").string());
     const double frames = rep.value("frames_per_image", 1.0);
     result["clock_mhz"] = scene.clock_mhz;
     result["pipelines"] = scene.pipelines;
@@ -598,9 +640,9 @@ Sweep load_sweep(const std::string& path) {
   const fs::path folder = fs::absolute(path).parent_path();
   for (const auto& [k, v] : j.items())
     if (k != "scene" && k != "model" && k != "axes" && k != "points" && k != "reference_step" && k != "gates" &&
-        k != "roi" && k != "description")
+        k != "check" && k != "roi" && k != "description")
       throw InputError(path + ": unknown key \"" + k +
-                       "\" (scene, model, axes, points, reference_step, gates, roi, description)");
+                       "\" (scene, model, axes, points, reference_step, gates, check, roi, description)");
   auto str = [&](const char* k) {
     if (!j[k].is_string()) throw InputError(path + ": \"" + k + "\" should be a string, not " + j[k].dump());
     return j[k].get<std::string>();
@@ -618,6 +660,12 @@ Sweep load_sweep(const std::string& path) {
   if (j.contains("gates")) {
     if (!j["gates"].is_boolean()) throw InputError(path + ": \"gates\" should be true or false, not " + j["gates"].dump());
     s.gates = j["gates"].get<bool>();
+  }
+  if (j.contains("check")) {
+    if (!j["check"].is_boolean()) throw InputError(path + ": \"check\" should be true or false, not " + j["check"].dump());
+    s.check = j["check"].get<bool>();
+    if (s.check && !system_level(s.model))
+      throw InputError(path + ": \"check\" needs a system model (tlm, rtl, mixed:UNIT,...), not " + s.model);
   }
   if (j.contains("roi")) {
     const ordered_json& r = j["roi"];

@@ -43,6 +43,7 @@ struct Sweep {
   std::string model = "tlm";
   double reference_step = 0.25;
   bool gates = true;
+  bool check = false;         // render with --check: every point bit-exact against golden
   int roi[4] = {0, 0, 0, 0};  // x, y, width, height in output pixels; width 0: none
   std::vector<ExplorePoint> points;
 };

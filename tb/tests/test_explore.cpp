@@ -104,6 +104,8 @@ TEST(Explore, BadSweepsAreRefusedNamingFileKeyAndValue) {
   refused(R"({"axes": {"supersampling": [1]}})", {"no \"scene\""});
   refused(R"({"scene": "scene.json", "roi": [0, 0, 0, 4]})", {"roi"});
   refused(R"({"scene": "scene.json", "points": [3]})", {"points[0]"});
+  refused(R"({"scene": "scene.json", "check": "yes"})", {"\"check\"", "true or false"});
+  refused(R"({"scene": "scene.json", "model": "fixed", "check": true})", {"\"check\"", "system model", "fixed"});
   refused("{", {"not JSON"});
 }
 
