@@ -65,11 +65,23 @@ struct SkewAddress {
   }
 };
 
+// A layout's word strides within a module: per row (y) and per slice (z).
+struct SkewStrides {
+  int p = 1;
+  int64_t row = 1, slice = 1;
+};
+constexpr SkewStrides skew_strides(const SkewLayout& l) {
+  return {l.p, l.blocks(0), int64_t{l.blocks(0)} * l.padded(1)};
+}
+
 // Where voxel (x, y, z) of the padded volume is stored (object coordinates,
-// 0 <= x < P_x, ...).
+// 0 <= x < P_x, ...). The strides' form lets a caller that places many
+// voxels work them out once.
+constexpr SkewAddress skew_address(const SkewStrides& s, int x, int y, int z) {
+  return {(x + y + z) % s.p, x / s.p + s.row * y + s.slice * z};
+}
 constexpr SkewAddress skew_address(const SkewLayout& l, int x, int y, int z) {
-  return {(x + y + z) % l.p,
-          x / l.p + int64_t{l.blocks(0)} * (y + int64_t{l.padded(1)} * z)};
+  return skew_address(skew_strides(l), x, y, z);
 }
 
 struct SkewTraversal {
@@ -110,9 +122,10 @@ constexpr void beam_access_into(BeamAccess& b, const SkewLayout& l, const SkewTr
   std::array<int, 3> o{0, 0, 0};
   o[t.perm[1]] = skew_object_coordinate(l, t, 1, y);
   o[t.perm[2]] = skew_object_coordinate(l, t, 2, z);
+  const SkewStrides s = skew_strides(l);
   for (int k = 0; k < l.p; ++k) {
     o[t.perm[0]] = skew_object_coordinate(l, t, 0, j * l.p + k);
-    b.lane[k] = skew_address(l, o[0], o[1], o[2]);
+    b.lane[k] = skew_address(s, o[0], o[1], o[2]);
     b.module_index[b.lane[k].module] = b.lane[k].index;
   }
   b.rotation = b.lane[0].module;
