@@ -14,6 +14,9 @@ class BeatQueue {
  public:
   bool empty() const { return head_ == beats_.size(); }
   void push_back(const Beat& b) { beats_.push_back(b); }
+  // A new beat at the back, default-constructed, to be filled in place
+  // (a slice of beats is emitted at once: no temporary copied per beat).
+  Beat& emplace_back() { return beats_.emplace_back(); }
   // The oldest beat, removed, into out.
   void pop_front(Beat& out) {
     out = beats_[head_++];

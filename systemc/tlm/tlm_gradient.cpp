@@ -13,7 +13,7 @@ void TlmGradient::emit_current(const golden::Plane& ahead) {
   golden::Neighbourhood n;
   for (int y = 0; y < plan_.ny; ++y)
     for (int j = 0; j < plan_.B; ++j) {
-      GradientBeat b;
+      GradientBeat& b = out_.emplace_back();
       b.valid = true;
       b.f = {j == 0, j == plan_.B - 1, y == 0, y == plan_.ny - 1};
       b.x = j * plan_.p;
@@ -33,7 +33,6 @@ void TlmGradient::emit_current(const golden::Plane& ahead) {
         b.gy[i] = static_cast<int16_t>(g.y);
         b.gz[i] = static_cast<int16_t>(g.z);
       }
-      out_.push_back(b);
     }
 }
 

@@ -51,7 +51,7 @@ void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
       if (tagged_) interp_.tags(store_tags_, pass_tags_, c, sample_tags_, 0, plan_.ny, whole_.data());
       for (int y = 0; y < plan_.ny; ++y)
         for (int j = 0; j < plan_.B; ++j) {
-          SampleBeat b;
+          SampleBeat& b = out_.emplace_back();
           b.valid = true;
           b.f = {j == 0, j == plan_.B - 1, y == 0, y == plan_.ny - 1};
           b.tag = in.tag;
@@ -60,7 +60,6 @@ void TlmInterp::clock(const VoxelBeat& in, SampleBeat& out) {
             b.sample[static_cast<size_t>(k)] = x < plan_.nx ? static_cast<uint16_t>(samples_.at(x, y)) : 0;
             if (tagged_ && x < plan_.nx) b.vtag[static_cast<size_t>(k)] = static_cast<uint8_t>(sample_tags_.at(x, y));
           }
-          out_.push_back(b);
         }
     }
   }
