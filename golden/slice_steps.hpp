@@ -232,6 +232,14 @@ class SliceCompositor {
     }
   }
 
+  // Whether sample (x, y) of slice c lies on a ray that has stopped
+  // (RayStop): no later sample of it is composited.
+  bool ray_stopped(const SliceControl& c, int x, int y) const {
+    if (words_ == 0) return false;
+    const int u = x + ix_last_ - c.ix, v = y - c.iy + iy_last_;
+    return stopped_[static_cast<size_t>(v) * words_ + static_cast<size_t>(u >> 6)] >> (u & 63) & 1;
+  }
+
   // After the last slice: the rays still inside leave through the back face.
   void finish(int v0 = 0, int v1 = kAllRows) {
     const SliceControl last = slice_control(r_, K_ - 1);

@@ -236,11 +236,16 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     // Gradients and shading of samples that cannot change their ray are
     // don't-cares when only TLM shading and compositing read them.
     const bool skip_transparent = !checker && !rtl[2] && !rtl[3];
+    // Nor those of samples on rays the TLM compositor has stopped, which the
+    // units ahead of it ask it about: on one thread only, as it runs.
+    std::unique_ptr<TlmComposite> tlm_composite;
+    if (!rtl[3]) tlm_composite = std::make_unique<TlmComposite>(up, pixels, polygons);
+    const TlmComposite* stops = threaded ? nullptr : tlm_composite.get();
     if (!rs->gradient) {
       u.gradient = std::make_unique<GradientBypass>(up);
     } else {
       u.gradient = rtl[1] ? make_rtl_gradient(up, *rtl_ctx, cfg.trace)
-                          : std::make_unique<TlmGradient>(up, skip_transparent);
+                          : std::make_unique<TlmGradient>(up, skip_transparent, stops);
     }
     // Two threads: the front keeps the RTL shading units of the upper
     // quarter of the pipelines (schedules.hpp), which evened the threads'
@@ -255,10 +260,12 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       if (u.front_first_lane < cfg.p)
         u.front_shade = make_rtl_shade(up, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, u.front_first_lane, cfg.p);
     } else {
-      u.shade = std::make_unique<TlmShade>(up, skip_transparent);
+      u.shade = std::make_unique<TlmShade>(up, skip_transparent, stops);
     }
-    u.composite = rtl[3] ? make_rtl_composite(up, pixels, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, polygons)
-                         : std::make_unique<TlmComposite>(up, pixels, polygons);
+    if (rtl[3])
+      u.composite = make_rtl_composite(up, pixels, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, polygons);
+    else
+      u.composite = std::move(tlm_composite);
     u.checker = checker.get();
     u.polygons = source.get();
     u.progress = progress;

@@ -22,7 +22,14 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   // A frame's compositor starts with its first slice: with polygons it
   // writes every pixel's front-over-back value then, which must not
   // overwrite the previous frame's plane before that frame is done.
-  if (!compositor_) compositor_.emplace(plan_.r, pixels_.plane(), polygons_);
+  // Rays stop as the golden renderer's do: a sample on a ray it can no
+  // longer change (its pixel, or for a block's partial image the
+  // accumulator kept with it) is not composited.
+  if (!compositor_) {
+    compositor_.emplace(plan_.r, pixels_.plane(), polygons_,
+                        pixels_.keeps_accumulators() ? golden::RayStop::full_alpha : golden::RayStop::settled_pixel);
+    ++frames_;
+  }
   const golden::SliceControl& c = plan_.slices[in.slice];
   auto shade = [&](int x, int y, const golden::RayAcc&, golden::ShadedSample& s) {
     s = golden::crop_and_cut(plan_.r, c, x, y, slice_[static_cast<size_t>(y) * plan_.nx + x]);

@@ -20,12 +20,21 @@ class TlmComposite final : public CompositeIf {
   TlmComposite(const FramePlan& plan, PixelMemory& pixels, const golden::PolygonFrame* polygons = nullptr);
   void clock(const ShadedBeat& in, CompositeOut& out) override;
   Level level() const override { return Level::Tlm; }
+  // Whether sample (x, y) of slice k of the `frame`-th frame (from 1) lies on
+  // a ray this compositor has stopped, as the golden renderer stops rays
+  // (golden::RayStop): the units ahead need not compute it. They run ahead,
+  // a frame's first slices while the last of the frame before are
+  // composited, so a frame not yet begun here has no stopped ray.
+  bool ray_stopped(uint64_t frame, uint32_t k, int x, int y) const {
+    return compositor_ && frame == frames_ && compositor_->ray_stopped(plan_.slices[k], x, y);
+  }
 
  private:
   const FramePlan& plan_;
   PixelMemory& pixels_;
   const golden::PolygonFrame* polygons_;
   std::optional<golden::SliceCompositor> compositor_;  // a new one per frame, from its first slice
+  uint64_t frames_ = 0;                                 // frames begun
   std::vector<golden::ShadedSample> slice_;
 };
 

@@ -2,15 +2,17 @@
 
 namespace cube4::sysc {
 
-TlmGradient::TlmGradient(const FramePlan& plan, bool skip_transparent)
+TlmGradient::TlmGradient(const FramePlan& plan, bool skip_transparent, const TlmComposite* stops)
     : plan_(plan),
       skip_transparent_(skip_transparent),
+      stops_(skip_transparent ? stops : nullptr),
       behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1),
       zeros_(plan.nx, plan.ny, 1), tags_current_(plan.nx, plan.ny, 1), tags_ahead_(plan.nx, plan.ny, 1) {}
 
 void TlmGradient::emit_current(const golden::Plane& ahead) {
   const golden::SliceControl& c = plan_.slices[static_cast<size_t>(current_slice_)];
   golden::Neighbourhood n;
+  if (current_slice_ == 0) ++frame_;
   for (int y = 0; y < plan_.ny; ++y)
     for (int j = 0; j < plan_.B; ++j) {
       GradientBeat& b = out_.emplace_back();
@@ -27,6 +29,7 @@ void TlmGradient::emit_current(const golden::Plane& ahead) {
         b.sample[i] = static_cast<uint16_t>(centre);
         b.vtag[i] = static_cast<uint8_t>(tag);
         if (skip_transparent_ && golden::sample_cannot_change_ray(plan_.r, centre, tag)) continue;
+        if (stops_ && stops_->ray_stopped(frame_, static_cast<uint32_t>(current_slice_), x, y)) continue;
         golden::gather_neighbourhood(behind_, current_, ahead, c, x, y, n);
         const golden::Gradient g = golden::sample_gradient(plan_.r, c, n);
         b.gx[i] = static_cast<int16_t>(g.x);

@@ -7,19 +7,22 @@
 // With `skip_transparent` (set by run_frame() when nothing but TLM shading
 // and compositing reads the stream: no --check, no RTL unit behind it) the
 // gradient of a sample that cannot change its ray
-// (golden::sample_cannot_change_ray) is not computed and streams as zero.
+// (golden::sample_cannot_change_ray) is not computed and streams as zero;
+// with `stops` (the TLM compositor, on the same thread) neither is that of
+// a sample on a ray the compositor has stopped.
 #pragma once
 
 #include "golden/slice_steps.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/tlm/beat_queue.hpp"
+#include "systemc/tlm/tlm_composite.hpp"
 
 namespace cube4::sysc {
 
 class TlmGradient final : public GradientIf {
  public:
-  explicit TlmGradient(const FramePlan& plan, bool skip_transparent = false);
+  explicit TlmGradient(const FramePlan& plan, bool skip_transparent = false, const TlmComposite* stops = nullptr);
   void clock(const SampleBeat& in, GradientBeat& out) override;
   Level level() const override { return Level::Tlm; }
 
@@ -27,6 +30,8 @@ class TlmGradient final : public GradientIf {
   void emit_current(const golden::Plane& ahead);
   const FramePlan& plan_;
   bool skip_transparent_;
+  const TlmComposite* stops_;
+  uint64_t frame_ = 0;  // the frame of current_slice_, from 1
   golden::Plane behind_, current_, ahead_;
   golden::Plane zeros_;  // ahead of a frame's last slice
   // The voxel tags of the current and ahead slices' samples (the centre's

@@ -10,9 +10,10 @@ int shade_latency(const golden::Precision& p) {
   return (p.nr_iterations + 1) + 4 + cube + 3 + 3;
 }
 
-TlmShade::TlmShade(const FramePlan& plan, bool skip_transparent)
+TlmShade::TlmShade(const FramePlan& plan, bool skip_transparent, const TlmComposite* stops)
     : plan_(plan),
       skip_transparent_(skip_transparent),
+      stops_(skip_transparent ? stops : nullptr),
       faces_(golden::make_face_table(plan.r)),
       shading_(plan.r, faces_.get()),
       line_(static_cast<size_t>(shade_latency(plan.r.p))) {}
@@ -27,6 +28,7 @@ void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   }
   // Lanes from p on stay zero (never written); lanes below it are all
   // written, so a valid beat needs no clearing.
+  if (in.slice == 0 && in.f.slice_start && in.f.beam_start) ++frame_;
   s.valid = true;
   s.f = in.f;
   s.x = in.x;
@@ -34,7 +36,8 @@ void TlmShade::clock(const GradientBeat& in, ShadedBeat& out) {
   s.slice = in.slice;
   for (int k = 0; k < plan_.p; ++k) {
     const auto i = static_cast<size_t>(k);
-    if (skip_transparent_ && golden::sample_cannot_change_ray(plan_.r, in.sample[i], in.vtag[i])) {
+    if (skip_transparent_ && (golden::sample_cannot_change_ray(plan_.r, in.sample[i], in.vtag[i]) ||
+                              (stops_ && in.x + k < plan_.nx && stops_->ray_stopped(frame_, in.slice, in.x + k, in.y)))) {
       s.red[i] = s.green[i] = s.blue[i] = s.alpha[i] = 0;
       s.value[i] = in.sample[i];
       continue;

@@ -7,7 +7,8 @@
 // --check, no RTL compositor) a sample that cannot change its ray
 // (golden::sample_cannot_change_ray) is not shaded: it streams its value,
 // α = 0 and black, which the compositor steps over as it would the shaded
-// sample (golden::blend_changes_ray).
+// sample (golden::blend_changes_ray); with `stops` (the TLM compositor) so
+// does a sample on a ray the compositor has stopped.
 #pragma once
 #include <memory>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "golden/pipeline.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/tlm/tlm_composite.hpp"
 
 namespace cube4::sysc {
 
@@ -25,13 +27,15 @@ int shade_latency(const golden::Precision& p);
 
 class TlmShade final : public ShadeIf {
  public:
-  explicit TlmShade(const FramePlan& plan, bool skip_transparent = false);
+  explicit TlmShade(const FramePlan& plan, bool skip_transparent = false, const TlmComposite* stops = nullptr);
   void clock(const GradientBeat& in, ShadedBeat& out) override;
   Level level() const override { return Level::Tlm; }
 
  private:
   const FramePlan& plan_;
   bool skip_transparent_;
+  const TlmComposite* stops_;
+  uint64_t frame_ = 0;  // the frame of the beat coming in, from 1
   std::unique_ptr<golden::FacePositionTable> faces_;
   golden::GradientShadingCache shading_;  // the golden renderer's: equal gradients shade alike
   std::vector<ShadedBeat> line_;  // circular delay line

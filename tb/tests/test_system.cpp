@@ -631,3 +631,40 @@ TEST(System, BackToBackFramesRtlMipS2) {
 TEST(System, BackToBackFramesMixed) { back_to_back(only(sysc::Unit::Gradient), false); }
 TEST(System, BackToBackFramesTlmClocked) { back_to_back(kTlm, true); }
 }  // namespace
+
+// Unchecked clocked TLM: the gradient and shading units skip the samples of
+// rays the compositor has stopped, as the golden renderer does (RayStop).
+// An opaque sphere stops most rays at their first samples; three frames
+// back to back on a volume three slices deep, so that each frame's first
+// slices are shaded while the frame before is still composited (its stopped
+// rays must not stop the next frame's); a block's partial image keeps its
+// accumulators, whose rays stop only at full α.
+TEST(System, ClockedTlmSkipsTheSamplesOfStoppedRaysFrameByFrame) {
+  for (const bool accumulators : {false, true}) {
+    for (const char* size : {"[13, 11, 9]", "[9, 7, 3]"}) {
+      SCOPED_TRACE(std::string("size ") + size + (accumulators ? ", accumulators" : ""));
+      Case c;
+      c.volume = std::string(R"({"synthetic": "sphere", "size": )") + size + "}";
+      c.transfer = R"("transfer": {"color": [[0, 1, 0.2, 0], [1, 0.1, 0, 1]], "opacity": [[0, 0], [0.2, 1], [1, 1]]})";
+      const auto [vol, regs] = program(c);
+      sysc::SystemConfig cfg;
+      cfg.p = 4;
+      cfg.levels = kTlm;
+      cfg.cycle_level = true;
+      cfg.frames = 3;
+      cfg.check = false;
+      cfg.accumulators = accumulators;
+      const sysc::SystemResult res = sysc::run_frame(regs, vol, cfg);
+      golden::FixedOptions o;
+      o.accumulators = accumulators;
+      const golden::BasePlane want = golden::render_fixed(vol, regs, o);
+      EXPECT_EQ(res.plane.rgba, want.rgba);
+      EXPECT_EQ(res.plane.acc.size(), want.acc.size());
+      for (size_t i = 0; i < want.acc.size() && i < res.plane.acc.size(); ++i)
+        ASSERT_TRUE(res.plane.acc[i].r == want.acc[i].r && res.plane.acc[i].g == want.acc[i].g &&
+                    res.plane.acc[i].b == want.acc[i].b && res.plane.acc[i].a == want.acc[i].a)
+            << "accumulator of ray " << i;
+      EXPECT_EQ(res.measured_interval, sysc::frame_cycles(regs, 4).stream);
+    }
+  }
+}
