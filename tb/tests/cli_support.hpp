@@ -39,9 +39,12 @@ class Cli : public ::testing::Test {
   // `shell` runs before the command in the same bash (a ulimit, a trap);
   // `wrapper` runs it ("timeout 20").
   CliResult run(const std::string& args, const std::string& shell = "", const std::string& wrapper = "") const {
+    return run_line(shell + (shell.empty() ? "" : "; ") + "exec " + wrapper + (wrapper.empty() ? "" : " ") +
+                    CUBE4_BINARY + " " + args);
+  }
+  // Any command line, run by bash (a script of the repository, say).
+  CliResult run_line(const std::string& line) const {
     const std::string err_file = path("stderr.txt"), out_file = path("stdout.txt");
-    const std::string line =
-        shell + (shell.empty() ? "" : "; ") + "exec " + wrapper + (wrapper.empty() ? "" : " ") + CUBE4_BINARY + " " + args;
     const std::string cmd = "bash -c '" + line + "' >" + out_file + " 2>" + err_file;
     const int status = std::system(cmd.c_str());
     CliResult r;

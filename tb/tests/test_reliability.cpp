@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <zlib.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -536,4 +537,33 @@ TEST_F(Reliability, LimitsAreCheckedBeforeAnyVoxelIsLoaded) {
   const CliResult m = run("render --max-memory 512 " + image + out);
   expect_one_error_line(m, "8192x8192 image");
   EXPECT_NE(m.err.find("--max-memory"), std::string::npos) << m.err;
+}
+
+// scripts/build_widths.sh refuses what the RTL cannot be verilated with in
+// the configure step's first second, naming the width and its limit, and
+// leaves no half-made build behind to be taken for one.
+TEST_F(Reliability, BuildWidthsRefusesWidthsTheRtlCannotTake) {
+  const std::string script = "CUBE4_WIDTH_BUILDS=" + path("builds") + " bash " CUBE4_SOURCE_DIR "/scripts/build_widths.sh ";
+  struct Bad {
+    std::string args, says;
+  };
+  for (const Bad& b : {Bad{"AlphaBits=99", "AlphaBits=99 is outside precision.alpha_bits's range 8 to 16"},
+                       Bad{"Nonsense=3", "Nonsense is not a width of the RTL"},
+                       Bad{"WeightBits=10", "WeightBits at most 9 at RTL"},
+                       Bad{"AlphaBits", "\"AlphaBits\" is not Name=value"},
+                       Bad{"--pipes 0 AlphaBits=12", "\"0\" is not a pipeline count"}}) {
+    SCOPED_TRACE(b.args);
+    const CliResult r = run_line(script + b.args);
+    EXPECT_NE(r.code, 0);
+    EXPECT_EQ(r.out, "") << "no program path for a build that failed";
+    // CMake wraps its messages: the words, whatever the line breaks.
+    std::string words;
+    for (const char c : r.err)
+      if (!std::isspace(static_cast<unsigned char>(c)) || (!words.empty() && words.back() != ' '))
+        words += std::isspace(static_cast<unsigned char>(c)) ? ' ' : c;
+    EXPECT_NE(words.find(b.says), std::string::npos) << r.err;
+    if (fs::exists(path("builds")))
+      for (const auto& e : fs::directory_iterator(path("builds")))
+        EXPECT_FALSE(e.is_directory()) << "a half-made build: " << e.path();
+  }
 }
