@@ -600,14 +600,18 @@ TEST(System, RegistersAtTheirLimitsThroughTheHostInterface) {
 // cycle model's latency, every next one exactly `stream` cycles later (the
 // steady-state interval), and the pixel memory holds the frame.
 namespace {
-void back_to_back(std::array<Level, sysc::kUnits> levels, bool cycle_level, const Case& c = Case{}) {
-  const auto [vol, regs] = program(c);
+sysc::SystemConfig three_frames(std::array<Level, sysc::kUnits> levels, bool cycle_level, bool check) {
   sysc::SystemConfig cfg;
   cfg.p = 4;
   cfg.levels = levels;
   cfg.cycle_level = cycle_level;
   cfg.frames = 3;
-  cfg.check = true;
+  cfg.check = check;
+  return cfg;
+}
+void back_to_back(std::array<Level, sysc::kUnits> levels, bool cycle_level, const Case& c = Case{}) {
+  const auto [vol, regs] = program(c);
+  const sysc::SystemConfig cfg = three_frames(levels, cycle_level, true);
   if (!cfg.all_tlm() && !sysc::rtl_available(cfg.p)) GTEST_SKIP() << "no RTL build for p = " << cfg.p;
   const sysc::SystemResult res = sysc::run_frame(regs, vol, cfg);
   EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
@@ -630,7 +634,6 @@ TEST(System, BackToBackFramesRtlMipS2) {
 }
 TEST(System, BackToBackFramesMixed) { back_to_back(only(sysc::Unit::Gradient), false); }
 TEST(System, BackToBackFramesTlmClocked) { back_to_back(kTlm, true); }
-}  // namespace
 
 // Unchecked clocked TLM: the gradient and shading units skip the samples of
 // rays the compositor has stopped, as the golden renderer does (RayStop).
@@ -647,12 +650,7 @@ TEST(System, ClockedTlmSkipsTheSamplesOfStoppedRaysFrameByFrame) {
       c.volume = std::string(R"({"synthetic": "sphere", "size": )") + size + "}";
       c.transfer = R"("transfer": {"color": [[0, 1, 0.2, 0], [1, 0.1, 0, 1]], "opacity": [[0, 0], [0.2, 1], [1, 1]]})";
       const auto [vol, regs] = program(c);
-      sysc::SystemConfig cfg;
-      cfg.p = 4;
-      cfg.levels = kTlm;
-      cfg.cycle_level = true;
-      cfg.frames = 3;
-      cfg.check = false;
+      sysc::SystemConfig cfg = three_frames(kTlm, true, false);
       cfg.accumulators = accumulators;
       const sysc::SystemResult res = sysc::run_frame(regs, vol, cfg);
       golden::FixedOptions o;
@@ -668,3 +666,4 @@ TEST(System, ClockedTlmSkipsTheSamplesOfStoppedRaysFrameByFrame) {
     }
   }
 }
+}  // namespace
