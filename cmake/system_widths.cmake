@@ -75,11 +75,25 @@ foreach(w ${CUBE4_SYSTEM_WIDTHS})
   endif()
 endforeach()
 
-# The interpolation ring carries the gradient ring's stream tag
-# (systemc/rtl/gradient_tag.hpp), four weights of WeightBits + 1 and 22 bits
-# more, in a 64-bit word of the C++ stream.
+# The gradient ring's stream tag width (cube4_gradient_ring's, which the
+# interpolation ring carries as its TagBits) at the rings' WeightBits
+# (cube4_pkg's default unless given) and SupersamplingBits 4: the layout of
+# systemc/rtl/gradient_tag.hpp, whose gradient_tag_bits the C++ checks
+# against the value this gives.
+function(cube4_gradient_tag_bits out user_tag_bits)
+  if(ARGC GREATER 2)
+    set(_weight_bits ${ARGV2})
+  else()
+    cube4_pkg_default(_weight_bits WeightBits)
+  endif()
+  math(EXPR _bits "4 * (${_weight_bits} + 1) + 4 + 2 + ${user_tag_bits}")
+  set(${out} ${_bits} PARENT_SCOPE)
+endfunction()
+
+# The interpolation ring carries the gradient ring's stream tag, with
+# FramePlan's 16 user bits, in a 64-bit word of the C++ stream.
 cube4_system_width(_weight_bits WeightBits)
-math(EXPR _tag_bits "4 * (${_weight_bits} + 1) + 4 + 2 + 16")
+cube4_gradient_tag_bits(_tag_bits 16 ${_weight_bits})
 if(_tag_bits GREATER 64)
   message(FATAL_ERROR "CUBE4_SYSTEM_WIDTHS: WeightBits=${_weight_bits} makes the rings' stream tag ${_tag_bits} bits, "
                       "more than the 64 the system's stream carries (WeightBits at most 9 at RTL)")

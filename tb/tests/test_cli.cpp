@@ -45,7 +45,9 @@ TEST_F(Cli, RendersEveryModelWithReportAndBasePlane) {
     EXPECT_EQ(j["samples"].get<uint64_t>() > 0, true);
     for (const char* key : {"volume", "view", "pipelines", "wall_seconds", "samples_per_second", "effects"})
       EXPECT_TRUE(j.contains(key)) << key;
-    if (model == "splat") EXPECT_EQ(j["splat"]["extent"].get<int>() % 2, 1);
+    if (model == "splat") {
+      EXPECT_EQ(j["splat"]["extent"].get<int>() % 2, 1);
+    }
     if (model == "fixed") {
       EXPECT_EQ(j["samples"], 16 * 16 * 16);
       EXPECT_EQ(j["baseplane_hash_fnv1a64"].get<std::string>().size(), 16u);
