@@ -19,6 +19,13 @@ class Link : public sc_core::sc_prim_channel {
     next_ = v;
     request_update();
   }
+  // The value for the next edge, for the producer to write in place (a
+  // beat is then not built in a temporary and copied). Only the producer
+  // writes it, so a field it never sets keeps its idle value.
+  T& next() {
+    request_update();
+    return next_;
+  }
 
  private:
   void update() override { current_ = next_; }

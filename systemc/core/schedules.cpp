@@ -45,25 +45,32 @@ VoxelBeat former_edge(FrameUnits& u) {
     u.progress(std::min(1.0, static_cast<double>(u.cycle) / static_cast<double>(u.total_beats)));
   return b;
 }
-SampleBeat interp_edge(FrameUnits& u, const VoxelBeat& in) {
-  SampleBeat out;
+// Each edge writes its beat into `out` (the plain loop's own variable, no
+// copy a cycle) or returns it (for a channel's write).
+void interp_edge(FrameUnits& u, const VoxelBeat& in, SampleBeat& out) {
   u.interp->clock(in, out);
   if (u.checker) u.checker->samples(out);
   if (out.valid) u.last_valid[1] = u.cycle;
+}
+SampleBeat interp_edge(FrameUnits& u, const VoxelBeat& in) {
+  SampleBeat out;
+  interp_edge(u, in, out);
   return out;
 }
-GradientBeat gradient_edge(FrameUnits& u, const SampleBeat& in) {
-  GradientBeat out;
+void gradient_edge(FrameUnits& u, const SampleBeat& in, GradientBeat& out) {
   u.gradient->clock(in, out);
   if (u.checker) u.checker->gradients(out);
   if (out.valid) u.last_valid[2] = u.cycle;
+}
+GradientBeat gradient_edge(FrameUnits& u, const SampleBeat& in) {
+  GradientBeat out;
+  gradient_edge(u, in, out);
   return out;
 }
 // `front`: with two threads, the shaded beat's lanes the front's shading
 // units gave (pipelines front_first_lane .. p - 1), merged before the
 // beat leaves.
-ShadedBeat shade_edge(FrameUnits& u, const GradientBeat& in, uint64_t cycle, const ShadedBeat* front = nullptr) {
-  ShadedBeat out;
+void shade_edge(FrameUnits& u, const GradientBeat& in, uint64_t cycle, ShadedBeat& out, const ShadedBeat* front = nullptr) {
   u.shade->clock(in, out);
   if (front)
     for (size_t k = static_cast<size_t>(u.front_first_lane); k < static_cast<size_t>(u.p); ++k) {
@@ -75,6 +82,10 @@ ShadedBeat shade_edge(FrameUnits& u, const GradientBeat& in, uint64_t cycle, con
     }
   if (u.checker) u.checker->shaded(out);
   if (out.valid) u.last_shaded = cycle;
+}
+ShadedBeat shade_edge(FrameUnits& u, const GradientBeat& in, uint64_t cycle, const ShadedBeat* front = nullptr) {
+  ShadedBeat out;
+  shade_edge(u, in, cycle, out, front);
   return out;
 }
 void composite_edge(FrameUnits& u, const ShadedBeat& in, uint64_t cycle) {
@@ -244,11 +255,11 @@ SC_MODULE(CycleTop) {
   }
 
   void former_step() { guarded([&] { voxels.write(former_edge(*u)); }); }
-  void interp_step() { guarded([&] { samples.write(interp_edge(*u, voxels.read())); }); }
+  void interp_step() { guarded([&] { interp_edge(*u, voxels.read(), samples.next()); }); }
   void gradient_step() {
     guarded([&] {
       if (!back) {
-        gradients.write(gradient_edge(*u, samples.read()));
+        gradient_edge(*u, samples.read(), gradients.next());
         return;
       }
       back->front_cycle(gradients.read(), [&] {
@@ -260,7 +271,7 @@ SC_MODULE(CycleTop) {
   }
   void shade_step() {
     guarded([&] {
-      if (!back) shaded.write(shade_edge(*u, gradients.read(), u->cycle));
+      if (!back) shade_edge(*u, gradients.read(), u->cycle, shaded.next());
     });
   }
   void composite_step() {
@@ -283,9 +294,10 @@ void run_plain(FrameUnits& u) {
   while (!u.done) {
     composite_edge(u, shaded, u.cycle);
     if (u.done) break;
-    shaded = shade_edge(u, gradients, u.cycle);
-    gradients = gradient_edge(u, samples);
-    samples = interp_edge(u, voxels);
+    // Each beat is overwritten once the unit behind has taken it.
+    shade_edge(u, gradients, u.cycle, shaded);
+    gradient_edge(u, samples, gradients);
+    interp_edge(u, voxels, samples);
     voxels = former_edge(u);
   }
 }
