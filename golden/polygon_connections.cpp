@@ -12,14 +12,10 @@ std::vector<SlabLoad> slab_loads(const PolygonFrame& f) {
     l.fragments = s.inserts();
     l.copied_flits = s.copied_flits();
     l.triangles = k < f.counts.slab_triangles.size() ? f.counts.slab_triangles[k] : 0;
+    l.words = s.words();
     for (int lane = 0; lane < s.lanes(); ++lane) {
-      uint64_t flits = 0;
-      for (int y = 0; y < s.beams(); ++y) {
-        flits += s.line_flits(y, lane);
-        l.words += s.line(y, lane).size();
-      }
-      l.flits += flits;
-      l.read_flits = std::max(l.read_flits, flits);
+      l.flits += s.lane_flits(lane);
+      l.read_flits = std::max(l.read_flits, s.lane_flits(lane));
     }
   }
   return out;

@@ -108,7 +108,10 @@ struct Fragment {
 // The fragments in depth order, equal depths in the order drawn: a least
 // significant digit first radix sort (stable by construction) of the
 // depths' offsets from the nearest, 11 bits a pass, as many passes as the
-// depths' range needs (two for a volume of 2^14 sample slices). The
+// depths' range needs (two for a volume of 2^14 sample slices), less those
+// whose digit is the same for every fragment. (Shorter digits, e.g. two of
+// 7 bits for 2^14 depths, or one of 14, measured slower on the sphere
+// and box: 3 to 4 % of the frame.) The
 // fragments themselves move, so that the walk in depth order reads them in
 // sequence.
 std::vector<Fragment> depth_order(std::vector<Fragment> order) {
@@ -121,13 +124,24 @@ std::vector<Fragment> depth_order(std::vector<Fragment> order) {
   constexpr int kDigitBits = 11;
   constexpr uint64_t kDigitMask = (uint64_t{1} << kDigitBits) - 1;
   const auto range = static_cast<uint64_t>(farthest - nearest);
-  std::vector<Fragment> next(order.size());
-  for (int shift = 0; shift < 64 && (range >> shift) != 0; shift += kDigitBits) {
-    const auto digit = [&](const Fragment& g) { return static_cast<uint64_t>(g.depth - nearest) >> shift & kDigitMask; };
-    std::array<uint32_t, (size_t{1} << kDigitBits) + 1> start{};
-    for (const Fragment& g : order) ++start[digit(g) + 1];
-    for (size_t d = 1; d < start.size(); ++d) start[d] += start[d - 1];
-    for (const Fragment& g : order) next[start[digit(g)]++] = g;
+  int passes = 0;
+  while (passes * kDigitBits < 64 && (range >> (passes * kDigitBits)) != 0) ++passes;
+  // Every pass's digit counts in one read of the fragments; a pass whose
+  // fragments all share one digit would leave the order as it is.
+  using Counts = std::array<uint32_t, (size_t{1} << kDigitBits) + 1>;
+  std::vector<Counts> start(static_cast<size_t>(passes), Counts{});
+  for (const Fragment& g : order) {
+    const auto offset = static_cast<uint64_t>(g.depth - nearest);
+    for (int d = 0; d < passes; ++d) ++start[static_cast<size_t>(d)][(offset >> (d * kDigitBits) & kDigitMask) + 1];
+  }
+  std::vector<Fragment> next;
+  for (int d = 0; d < passes; ++d) {
+    Counts& c = start[static_cast<size_t>(d)];
+    if (std::find(c.begin(), c.end(), static_cast<uint32_t>(order.size())) != c.end()) continue;
+    for (size_t i = 1; i < c.size(); ++i) c[i] += c[i - 1];
+    next.resize(order.size());
+    const int shift = d * kDigitBits;
+    for (const Fragment& g : order) next[c[static_cast<uint64_t>(g.depth - nearest) >> shift & kDigitMask]++] = g;
     order.swap(next);
   }
   return order;
@@ -258,6 +272,10 @@ PolygonFrame rasterise_polygons(const Scene& s, const std::vector<Mesh>& meshes,
   std::vector<int64_t> opaque_depth(pixels, kNone);
   std::vector<Pixel> opaque_px(pixels);
   std::vector<Fragment> translucent;
+  // A closed surface gives about two fragments a pixel it covers: room for
+  // that over the base plane saves the copies of growing (what is not
+  // written is not touched).
+  translucent.reserve(2 * pixels);
   uint32_t triangle = 0, last_opaque = 0;  // triangles count from 1
   for (const Mesh& m : meshes) {
     const auto alpha = static_cast<uint32_t>(quantise_unit(m.opacity, p.alpha_bits));

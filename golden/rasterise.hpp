@@ -101,6 +101,11 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
   int u0, u1, v0, v1;
   raster::centres(std::min({a.u, b.u, c.u}), std::max({a.u, b.u, c.u}), one, width, u0, u1);
   raster::centres(std::min({a.v, b.v, c.v}), std::max({a.v, b.v, c.v}), one, height, v0, v1);
+  // In integers each edge's test is monotonic along a row (its value is
+  // exactly linear in u, its tie rule fixed per edge), so a row's covered
+  // pixels are one run: the scan of a row ends at its first uncovered pixel
+  // after a covered one. (Not so in floating point, whose rounded edge
+  // values need not be monotonic: that scan reads the whole row.)
   const auto covered = [&](W ea, W eb, W ec) {
     return raster::inside<T>(ea, b, c) && raster::inside<T>(eb, c, a) && raster::inside<T>(ec, a, b);
   };
@@ -116,8 +121,13 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
         const W ha = a.h, hb = b.h, hc = c.h, hda = ha * a.d, hdb = hb * b.d, hdc = hc * c.d;
         W N = ea * hda + eb * hdb + ec * hdc, D = ea * ha + eb * hb + ec * hc;
         const W dN = dea * hda + deb * hdb + dec * hdc, dD = dea * ha + deb * hb + dec * hc;
-        for (int u = u0; u <= u1; ++u) {
-          if (covered(ea, eb, ec)) emit(u, v, static_cast<T>(raster::floor_div(2 * N + D, 2 * D)));  // half up
+        for (int u = u0, in = 0; u <= u1; ++u) {
+          if (covered(ea, eb, ec)) {
+            emit(u, v, static_cast<T>(raster::floor_div(2 * N + D, 2 * D)));  // half up
+            in = 1;
+          } else if (in) {
+            break;  // the row's pixels are contiguous (see covered)
+          }
           ea += dea, eb += deb, ec += dec;
           N += dN, D += dD;
         }
@@ -133,8 +143,13 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
       const W N = 2 * (ea * a.d + eb * b.d + ec * c.d) + area;
       W q = raster::floor_div(N, D), r = N - q * D;
       const W dq = raster::floor_div(dN, D), dr = dN - dq * D;
-      for (int u = u0; u <= u1; ++u) {
-        if (covered(ea, eb, ec)) emit(u, v, static_cast<T>(q));  // rounded half up
+      for (int u = u0, in = 0; u <= u1; ++u) {
+        if (covered(ea, eb, ec)) {
+          emit(u, v, static_cast<T>(q));  // rounded half up
+          in = 1;
+        } else if (in) {
+          break;  // the row's pixels are contiguous (see covered)
+        }
         ea += dea, eb += deb, ec += dec;
         q += dq, r += dr;
         if (r >= D) ++q, r -= D;

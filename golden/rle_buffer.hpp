@@ -22,6 +22,7 @@
 // adjacent, no empty run, the pixels adding up to the line's width; the
 // insert keeps a canonical line canonical (it only splits runs).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +33,33 @@
 namespace cube4::golden {
 
 using RleLine = std::vector<uint16_t>;
+
+// A line's words where they are kept (an RleLine, or a slab image's store),
+// valid while that line is not changed.
+class RleWords {
+ public:
+  using value_type = uint16_t;
+  using const_iterator = const uint16_t*;
+  using iterator = const_iterator;
+  RleWords() = default;
+  RleWords(const uint16_t* words, size_t count) : words_(words), count_(count) {}
+  RleWords(const RleLine& line) : words_(line.data()), count_(line.size()) {}  // NOLINT: a line is its words
+  const uint16_t* data() const { return words_; }
+  size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  const uint16_t* begin() const { return words_; }
+  const uint16_t* end() const { return words_ + count_; }
+  uint16_t operator[](size_t i) const { return words_[i]; }
+  RleLine line() const { return RleLine(begin(), end()); }
+  friend bool operator==(const RleWords& a, const RleWords& b) {
+    return a.count_ == b.count_ && std::equal(a.begin(), a.end(), b.begin());
+  }
+  friend bool operator!=(const RleWords& a, const RleWords& b) { return !(a == b); }
+
+ private:
+  const uint16_t* words_ = nullptr;
+  size_t count_ = 0;
+};
 
 // A cleared line: one run of `width` blank pixels (no flit for width 0).
 RleLine rle_clear(int width);
@@ -48,7 +76,7 @@ RleLine rle_insert(const RleLine& line, int width, int x, const Pixel& px, const
 // `width` pixels.
 size_t rle_insert_into(RleLine& line, int width, int x, const Pixel& px, const Precision& p);
 // Flits in a line: the cycles Fig. 13's hardware spends copying it.
-size_t rle_flits(const RleLine& line);
+size_t rle_flits(RleWords line);
 
 // One slab image: the fragments of one thin slab, for every beam y of the
 // sample slice and every pipeline lane (golden/units/rle_decode.hpp).
@@ -67,11 +95,12 @@ class SlabImage {
   // Pixels of lane l of a beam: x = l, l + lanes, ... < width.
   int lane_width(int lane) const { return lane_widths_[static_cast<size_t>(lane)]; }
   // No fragment at all: the lines are not even stored (every one cleared).
-  bool empty() const { return lines_.empty(); }
-  const RleLine& line(int y, int lane) const {
-    if (lines_.empty()) return cleared_[static_cast<size_t>(lane)];
-    const RleLine& l = lines_[static_cast<size_t>(y) * lanes_ + lane];
-    return l.empty() ? cleared_[static_cast<size_t>(lane)] : l;
+  bool empty() const { return slots_.empty(); }
+  // Valid until the next insert.
+  RleWords line(int y, int lane) const {
+    if (slots_.empty()) return cleared(lane);
+    const Slot& s = slots_[static_cast<size_t>(y) * lanes_ + lane];
+    return s.cap == 0 ? cleared(lane) : RleWords(pool_.data() + s.at, s.size);
   }
   // Inserts a fragment at (x, y) with rle_insert on its lane's line.
   void insert(int x, int y, const Pixel& px, const Precision& p);
@@ -85,36 +114,62 @@ class SlabImage {
   void for_each_pixel(int y, Visit&& visit) const {
     if (empty()) return;
     for (int l = 0; l < lanes_ && l < width_; ++l) {
-      const RleLine& words = lines_[static_cast<size_t>(y) * lanes_ + l];
-      if (words.empty()) continue;  // never inserted into: its lane's cleared line, all blank
-      if (!rle_for_each_pixel(words.data(), words.size(), lane_width(l),
+      const Slot& s = slots_[static_cast<size_t>(y) * lanes_ + l];
+      if (s.cap == 0) continue;  // never inserted into: its lane's cleared line, all blank
+      if (!rle_for_each_pixel(pool_.data() + s.at, s.size, lane_width(l),
                               [&](int i, const Pixel& px) { visit(l + i * lanes_, px); }))
         malformed(y, l);
     }
   }
   // Flits in a line (rle_flits(line(y, lane))), kept as the line is built.
   uint32_t line_flits(int y, int lane) const {
-    if (lines_.empty() || lines_[static_cast<size_t>(y) * lanes_ + lane].empty()) return lane < width_;
-    return flits_[static_cast<size_t>(y) * lanes_ + lane];
+    if (slots_.empty()) return lane < width_;
+    const Slot& s = slots_[static_cast<size_t>(y) * lanes_ + lane];
+    return s.cap == 0 ? lane < width_ : s.flits;
   }
+  // Over all its lines (cleared ones too), kept as the lines change: the
+  // words, the lines of an odd number of words, and each lane's flits
+  // (the sum of line_flits(y, lane) over the beams).
+  uint64_t words() const { return words_; }
+  uint64_t odd_lines() const { return odd_lines_; }
+  uint64_t lane_flits(int lane) const { return lane_flits_[static_cast<size_t>(lane)]; }
   // What building it cost Fig. 13's hardware: the fragments inserted and
   // the flits copied doing so (each insert copies its line, a flit a clock).
   uint64_t inserts() const { return inserts_; }
   uint64_t copied_flits() const { return copied_flits_; }
 
  private:
+  // Where a line's words lie in pool_, and its flits (rle_flits()). A line
+  // never inserted into has no room (cap 0) and reads as its lane's
+  // cleared line, so that an image with a few fragments stores only the
+  // lines they fall in.
+  struct Slot {
+    uint32_t at = 0, size = 0, cap = 0, flits = 0;
+  };
   [[noreturn]] static void malformed(int y, int lane);
+  RleWords cleared(int lane) const {
+    return {cleared_.data() + 5 * static_cast<size_t>(lane), lane_widths_[static_cast<size_t>(lane)] > 0 ? 5u : 0u};
+  }
+  // Slot s's line (its lane's cleared line if it has none yet) moved to
+  // the end of the pool, with room for `cap` words.
+  void move_to_end(Slot& s, int lane, uint32_t cap);
 
   int width_ = 0, beams_ = 0, lanes_ = 1;
-  // Beam by beam, lane by lane; a line never inserted into is stored empty
-  // and read as its lane's cleared line (cleared_), so that an image with
-  // a few fragments allocates only the lines they fall in.
-  std::vector<RleLine> lines_;
-  std::vector<RleLine> cleared_;
+  int lane_shift_ = -1;  // log2(lanes_) if lanes_ is a power of two
+  // Beam by beam, lane by lane.
+  std::vector<Slot> slots_;
+  // Every stored line's words, one allocation for the image: a line that
+  // outgrows its room moves to the end with twice the room (its old words
+  // stay behind, unused).
+  std::vector<uint16_t> pool_;
+  // Per lane, its cleared line (rle_clear()): 5 words, none for a lane
+  // without pixels.
+  std::vector<uint16_t> cleared_;
   // Per lane, its pixels: kept rather than divided out per fragment.
   std::vector<int> lane_widths_;
-  std::vector<uint32_t> flits_;  // per line of lines_, rle_flits() of it
   uint64_t inserts_ = 0, copied_flits_ = 0;
+  uint64_t words_ = 0, odd_lines_ = 0;
+  std::vector<uint64_t> lane_flits_;
 };
 
 }  // namespace cube4::golden

@@ -117,8 +117,12 @@ void SliceCompositor::composite_slab(const SliceControl& c, int y, RayAcc* ray) 
   slab.for_each_pixel(y, [&](int x, const Pixel& px) {
     const int u = x + shift;
     if (stopped && (stopped[u >> 6] >> (u & 63) & 1)) return;
-    ray[x] = ray_over_pixel(ray[x], px, r_.p);
-    if (stopped && stop_.can_stop(ray[x])) stopped[u >> 6] |= uint64_t{1} << (u & 63);
+    // Field by field: the node changes only colour and opacity, and a
+    // whole-struct copy here compiled to a store-forwarding stall.
+    RayAcc& acc = ray[x];
+    const RayAcc over = ray_over_pixel(acc, px, r_.p);
+    acc.r = over.r, acc.g = over.g, acc.b = over.b, acc.a = over.a;
+    if (stopped && stop_.can_stop(acc)) stopped[u >> 6] |= uint64_t{1} << (u & 63);
   });
 }
 

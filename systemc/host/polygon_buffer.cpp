@@ -14,7 +14,7 @@ std::vector<uint32_t> encode_slab_stream(const golden::SlabImage& slab) {
   if (slab.empty()) return out;
   for (int y = 0; y < slab.beams(); ++y)
     for (int l = 0; l < slab.lanes(); ++l) {
-      const golden::RleLine& line = slab.line(y, l);
+      const golden::RleWords line = slab.line(y, l);
       out.push_back(static_cast<uint32_t>(line.size()));
       for (size_t i = 0; i < line.size(); i += 2)
         out.push_back(uint32_t{line[i]} | (i + 1 < line.size() ? uint32_t{line[i + 1]} << 16 : 0));
@@ -24,10 +24,9 @@ std::vector<uint32_t> encode_slab_stream(const golden::SlabImage& slab) {
 
 uint64_t slab_stream_words(const golden::SlabImage& slab) {
   if (slab.empty()) return 0;
-  uint64_t n = 0;
-  for (int y = 0; y < slab.beams(); ++y)
-    for (int l = 0; l < slab.lanes(); ++l) n += 1 + (slab.line(y, l).size() + 1) / 2;
-  return n;
+  // encode_slab_stream()'s: per line a count word and its 16-bit words in pairs.
+  const uint64_t lines = static_cast<uint64_t>(slab.beams()) * static_cast<uint64_t>(slab.lanes());
+  return lines + (slab.words() + slab.odd_lines()) / 2;
 }
 
 void PolygonBuffer::map(const golden::PolygonFrame& f, const std::array<int, 3>& size) {

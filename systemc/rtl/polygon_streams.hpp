@@ -79,9 +79,9 @@ class SlabLineSource {
   void present(M& m) const {
     constexpr int kW = 16;
     const int base = lane_ * 5 * kW;
-    const size_t left = line_ ? line_->size() - at_ : 0;
+    const size_t left = line_.size() - at_;
     for (int i = 0; i < 5; ++i)
-      put_bits(m.slab_window_i, base + i * kW, kW, static_cast<size_t>(i) < left ? (*line_)[at_ + i] : 0);
+      put_bits(m.slab_window_i, base + i * kW, kW, static_cast<size_t>(i) < left ? line_[at_ + i] : 0);
     put_bits(m.slab_avail_i, lane_ * 3, 3, left < 5 ? left : 5);
   }
   // After the clock edge: the decoder's consume_o and the ring's
@@ -101,9 +101,9 @@ class SlabLineSource {
     const golden::SlabImage& s = f_.slabs[static_cast<size_t>(k_)];
     if (s.empty()) {
       cleared_ = golden::rle_clear(s.lane_width(lane_));
-      line_ = &cleared_;
+      line_ = cleared_;
     } else {
-      line_ = &s.line(y_, lane_);
+      line_ = s.line(y_, lane_);
     }
     at_ = 0;
     ++started_;
@@ -116,7 +116,7 @@ class SlabLineSource {
   const golden::PolygonFrame& f_;
   int lane_;
   int k_ = 0, y_ = 0;  // the next line's slice and beam
-  const golden::RleLine* line_ = nullptr;
+  golden::RleWords line_;  // none before the first line
   golden::RleLine cleared_;
   size_t at_ = 0, started_ = 0;
 };

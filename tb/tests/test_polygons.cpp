@@ -46,7 +46,7 @@ Pixel random_pixel(std::mt19937& gen, int bits) {
 
 // A line is canonical: flits that add up to its width, no empty run, no
 // two runs in a row, nothing after the last flit.
-bool canonical(const golden::RleLine& line, int width) {
+bool canonical(golden::RleWords line, int width) {
   size_t at = 0;
   int total = 0;
   bool last_run = false;
@@ -259,6 +259,24 @@ TEST(Rle, SlabImagesDecodePerPipelineToTheSameBeam) {
         });
         for (int x = 0; x < width; ++x)
           ASSERT_TRUE(same(walked[static_cast<size_t>(x)], beam[static_cast<size_t>(x)])) << "(" << x << ", " << y << ")";
+      }
+      // The totals kept as the lines change are the lines' own sums, in the
+      // image built by inserts and in one built from its lines (as a bus
+      // delivers them).
+      std::vector<golden::RleLine> lines;
+      for (int y = 0; y < 3; ++y)
+        for (int l = 0; l < lanes; ++l) lines.push_back(slab.line(y, l).line());
+      const golden::SlabImage delivered(width, 3, lanes, lines);
+      for (const golden::SlabImage* image : {static_cast<const golden::SlabImage*>(&slab), &delivered}) {
+        uint64_t words = 0, odd = 0;
+        for (const golden::RleLine& l : lines) words += l.size(), odd += l.size() % 2;
+        EXPECT_EQ(image->words(), words) << "width " << width << ", lanes " << lanes;
+        EXPECT_EQ(image->odd_lines(), odd) << "width " << width << ", lanes " << lanes;
+        for (int l = 0; l < lanes; ++l) {
+          uint64_t flits = 0;
+          for (int y = 0; y < 3; ++y) flits += golden::rle_flits(lines[static_cast<size_t>(y * lanes + l)]);
+          EXPECT_EQ(image->lane_flits(l), flits) << "width " << width << ", lanes " << lanes << ", lane " << l;
+        }
       }
     }
 }
