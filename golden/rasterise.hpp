@@ -75,8 +75,8 @@ Wide<T> edge(const BaseVertex<T>& a, const BaseVertex<T>& b, Wide<T> pu, Wide<T>
 
 // The tie rule: on the edge (e == 0) the centre counts as inside iff moving
 // it by (-1, +epsilon)·epsilon makes e positive.
-template <class T>
-bool inside(Wide<T> e, const BaseVertex<T>& a, const BaseVertex<T>& b) {
+template <class T, class E>
+bool inside(E e, const BaseVertex<T>& a, const BaseVertex<T>& b) {
   if (e != 0) return e > 0;
   const T du = b.u - a.u, dv = b.v - a.v;
   return dv > 0 || (dv == 0 && du > 0);
@@ -106,7 +106,7 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
   // pixels are one run: the scan of a row ends at its first uncovered pixel
   // after a covered one. (Not so in floating point, whose rounded edge
   // values need not be monotonic: that scan reads the whole row.)
-  const auto covered = [&](W ea, W eb, W ec) {
+  const auto covered = [&](auto ea, auto eb, auto ec) {
     return raster::inside<T>(ea, b, c) && raster::inside<T>(eb, c, a) && raster::inside<T>(ec, a, b);
   };
   for (int v = v0; v <= v1; ++v) {
@@ -141,18 +141,34 @@ void scan_triangle(BaseVertex<T> a, BaseVertex<T> b, BaseVertex<T> c, T one, int
       const W dea = -(W(c.v) - b.v) * one, deb = -(W(a.v) - c.v) * one, dec = -(W(b.v) - a.v) * one;
       const W D = 2 * area, dN = 2 * (dea * a.d + deb * b.d + dec * c.d);
       const W N = 2 * (ea * a.d + eb * b.d + ec * c.d) + area;
-      W q = raster::floor_div(N, D), r = N - q * D;
+      const W q = raster::floor_div(N, D), r = N - q * D;
       const W dq = raster::floor_div(dN, D), dr = dN - dq * D;
-      for (int u = u0, in = 0; u <= u1; ++u) {
-        if (covered(ea, eb, ec)) {
-          emit(u, v, static_cast<T>(q));  // rounded half up
-          in = 1;
-        } else if (in) {
-          break;  // the row's pixels are contiguous (see covered)
+      const auto row = [&](auto ea, auto eb, auto ec, auto dea, auto deb, auto dec, auto q, auto r, auto dq,
+                           auto dr, auto D) {
+        for (int u = u0, in = 0; u <= u1; ++u) {
+          if (covered(ea, eb, ec)) {
+            emit(u, v, static_cast<T>(q));  // rounded half up
+            in = 1;
+          } else if (in) {
+            break;  // the row's pixels are contiguous (see covered)
+          }
+          ea += dea, eb += deb, ec += dec;
+          q += dq, r += dr;
+          if (r >= D) ++q, r -= D;
         }
-        ea += dea, eb += deb, ec += dec;
-        q += dq, r += dr;
-        if (r >= D) ++q, r -= D;
+      };
+      // The same steps in 64 bits when no value of the row can leave them
+      // (each is linear in u, so its ends bound it): the usual case, and
+      // half the instructions of 128-bit steps.
+      const W steps = W(u1 - u0 + 1), lim = W(1) << 61;
+      const auto mag = [](W x) { return x < 0 ? -x : x; };
+      const auto fits = [&](W at, W most_per_step) { return mag(at) + steps * most_per_step < lim; };
+      // q moves by dq or dq + 1 a step; 0 <= r, dr < D.
+      if (fits(ea, mag(dea)) && fits(eb, mag(deb)) && fits(ec, mag(dec)) && fits(q, mag(dq) + 1) && D < lim) {
+        using I = int64_t;
+        row(I(ea), I(eb), I(ec), I(dea), I(deb), I(dec), I(q), I(r), I(dq), I(dr), I(D));
+      } else {
+        row(ea, eb, ec, dea, deb, dec, q, r, dq, dr, D);
       }
     } else {
       for (int u = u0; u <= u1; ++u) {

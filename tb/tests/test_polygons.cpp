@@ -422,6 +422,22 @@ TEST(Rasterise, DepthIsThePlaneAtThePixelCentre) {
                                  [&](int, int, int64_t) { ADD_FAILURE() << "an edge-on triangle covered a pixel"; });
 }
 
+TEST(Rasterise, VerticesFarOffTheBasePlaneGiveTheSamePlane) {
+  // A triangle whose corners lie 2^29 pixels away covers the whole 20 x 20
+  // base plane; its edge functions there pass 2^61, so its rows are stepped
+  // in 128 bits (the small triangle above: in 64). Both are the plane
+  // d = 3u - 2v + 40, exactly at pixel centres, with every pixel covered once.
+  const int64_t one = 256, far = int64_t{1} << 29;
+  auto vertex = [&](int64_t u, int64_t v) { return golden::BaseVertex<int64_t>{u * one, v * one, (3 * u - 2 * v + 40) * 256}; };
+  std::vector<int> count(20 * 20, 0);
+  golden::scan_triangle<int64_t>(vertex(-far, -far), vertex(far, -far), vertex(0, far), one, 20, 20,
+                                 [&](int u, int v, int64_t d) {
+                                   ++count[static_cast<size_t>(v) * 20 + u];
+                                   EXPECT_EQ(d, (3 * int64_t{u} - 2 * int64_t{v} + 40) * 256) << u << "," << v;
+                                 });
+  for (int i = 0; i < 20 * 20; ++i) EXPECT_EQ(count[static_cast<size_t>(i)], 1) << "pixel " << i;
+}
+
 // ---- the fixed renderer with polygons ----
 
 namespace {
