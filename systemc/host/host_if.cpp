@@ -309,10 +309,17 @@ void HostInterface::map_polygons(const golden::PolygonFrame& f, sc_core::sc_time
   // The checks the windows make word by word. START's of the slab lines
   // hold already: a SlabImage's lines are well formed by construction.
   const uint32_t channel_max = (uint32_t{1} << config_.hw.precision.alpha_bits) - 1;
+  // The largest channel and depth first (a loop without exits, which the
+  // compiler vectorises); the pixel to name only when one is out of range.
+  const auto largest = [](const golden::Pixel& px) { return std::max({px.r, px.g, px.b, px.a}); };
+  uint32_t channel = 0, depth = 0;
   for (size_t i = 0; i < pixels; ++i) {
-    for (const golden::Pixel& px : {f.front[i], f.back[i]})
-      if (px.r > channel_max || px.g > channel_max || px.b > channel_max || px.a > channel_max)
-        refuse("pixel " + std::to_string(i) + " has a channel above " + std::to_string(channel_max));
+    channel = std::max<uint32_t>({channel, largest(f.front[i]), largest(f.back[i])});
+    depth = std::max(depth, f.z[i]);
+  }
+  for (size_t i = 0; i < pixels && (channel > channel_max || depth > golden::kZNone); ++i) {
+    if (std::max(largest(f.front[i]), largest(f.back[i])) > channel_max)
+      refuse("pixel " + std::to_string(i) + " has a channel above " + std::to_string(channel_max));
     if (f.z[i] > golden::kZNone) refuse("pixel " + std::to_string(i) + " has a depth above kZNone");
   }
   polygons_.map(f, size);
