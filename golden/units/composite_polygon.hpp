@@ -92,7 +92,18 @@ constexpr RayAcc pixel_to_acc(const Pixel& x, const Precision& p) {
 // golden/units/compose.hpp. A blank pixel leaves the ray exactly as it is
 // (the node would too; the test saves the multiplies).
 constexpr RayAcc ray_over_pixel(const RayAcc& ray, const Pixel& px, const Precision& p) {
-  return blank(px) ? ray : compose_over(ray, pixel_to_acc(px, p), p);
+  if (blank(px)) return ray;
+  // Over an empty ray (nothing composited yet) the node gives the pixel
+  // exactly (mul_frac by full is exact, as in pixel_over), keeping the
+  // ray's other fields; the test saves the multiplies on the first
+  // fragment of most rays.
+  if ((ray.r | ray.g | ray.b | ray.a) == 0) {
+    RayAcc r = pixel_to_acc(px, p);
+    r.value = ray.value;
+    r.valid = ray.valid;
+    return r;
+  }
+  return compose_over(ray, pixel_to_acc(px, p), p);
 }
 
 // Cube-5 §5's double composition, restated for our front-to-back

@@ -134,6 +134,30 @@ TEST(PolygonUnits, BlankFrontSkipsANodeThatWouldGiveTheBackExactly) {
   }
 }
 
+TEST(PolygonUnits, EmptyRaySkipsANodeThatWouldGiveThePixelExactly) {
+  // ray_over_pixel's shortcut rests on mul_frac(full, f) = f at the
+  // accumulator's widths too (alpha_bits + acc_guard_bits, up to 24).
+  for (int bits = 17; bits <= 24; ++bits) {
+    const int64_t full = golden::max_unsigned(bits);
+    for (int64_t f = 0; f <= full; ++f) ASSERT_EQ(golden::mul_frac(full, f, bits), f) << bits << " bits, " << f;
+  }
+  std::mt19937 gen(5);
+  for (int alpha = 8; alpha <= 16; ++alpha)
+    for (int guard : {0, 4, 8}) {
+      golden::Precision p;
+      p.alpha_bits = alpha;
+      p.acc_guard_bits = guard;
+      for (int trial = 0; trial < 1000; ++trial) {
+        const Pixel px = random_pixel(gen, alpha);
+        RayAcc empty;
+        empty.value = static_cast<uint16_t>(trial);
+        empty.valid = trial % 2 == 1;
+        ASSERT_EQ(golden::ray_over_pixel(empty, px, p), golden::compose_over(empty, golden::pixel_to_acc(px, p), p))
+            << alpha << " + " << guard << " bits, trial " << trial;
+      }
+    }
+}
+
 TEST(Rle, RoundTripsAndCanonicalLines) {
   const golden::Precision p;
   std::mt19937 gen(11);
