@@ -1,7 +1,6 @@
 #include "golden/rle_buffer.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -240,8 +239,8 @@ void SlabImage::insert(int x, int y, const Pixel& px, const Precision& p) {
     slots_.resize(static_cast<size_t>(beams_) * lanes_);
     pool_.reserve(1024);
   }
-  // A division's latency per fragment is felt: a shift for the usual
-  // power-of-two pipeline counts.
+  // A shift, not a division per fragment, for the usual power-of-two
+  // pipeline counts.
   const int lane = lane_shift_ >= 0 ? x & (lanes_ - 1) : x % lanes_;
   const int at = lane_shift_ >= 0 ? x >> lane_shift_ : x / lanes_;
   Slot& s = slots_[static_cast<size_t>(y) * lanes_ + lane];
