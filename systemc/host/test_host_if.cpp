@@ -858,6 +858,26 @@ void start_polygon_frame(Env& e, const PolygonSetup& s, sc_time& delay) {
 
 }  // namespace
 
+// The bus time of a mapped load counts each slab's stream words from the
+// image's kept totals; they must be the words the windows would carry.
+TEST(HostInterface, SlabStreamWordsAreTheEncodedStreamsLength) {
+  const PolygonSetup s = polygon_setup();
+  std::mt19937 gen(3);
+  std::vector<golden::SlabImage> slabs = s.frame.slabs;
+  for (int width : {1, 6, 13})
+    for (int lanes : {1, 3, 4}) {
+      golden::SlabImage slab(width, 4, lanes);
+      const golden::Precision p;
+      for (int i = 0; i < 30; ++i) {
+        const auto c = static_cast<uint16_t>(std::uniform_int_distribution<int>(1, 65535)(gen));
+        slab.insert(std::uniform_int_distribution<int>(0, width - 1)(gen), i % 4, golden::Pixel{c, c, c, c}, p);
+      }
+      slabs.push_back(slab);
+    }
+  for (size_t k = 0; k < slabs.size(); ++k)
+    EXPECT_EQ(slab_stream_words(slabs[k]), encode_slab_stream(slabs[k]).size()) << "slab " << k;
+}
+
 // map_polygons, the DMI-style load: the frame START hands the backend is
 // the one the windows would have decoded, with the windows' bus time; a
 // window write after it makes the images the buffer's words (and lands);
