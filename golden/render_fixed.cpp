@@ -164,9 +164,6 @@ class Band {
   // slices: D(z + 1) of one voxel slice is D(z) of the next.
   void z_differences_of(const SliceControl& c) {
     const int z = c.z_voxel;
-    auto difference = [](const Plane& above, const Plane& below, Plane& out) {
-      for (size_t i = 0; i < out.v.size(); ++i) out.v[i] = voxel_z_difference(above.v[i], below.v[i]);
-    };
     if (z != zvox_z_) {
       if (z == zvox_z_ + 1) {
         std::swap(zvox_[0], zvox_[1]);
@@ -176,9 +173,9 @@ class Band {
         load_voxel_slice(f_.access, z + 2, zvox_[3]);
       } else {
         for (int i = 0; i < 4; ++i) load_voxel_slice(f_.access, z - 1 + i, zvox_[static_cast<size_t>(i)]);
-        difference(zvox_[2], zvox_[0], zdiff_lo_);
+        voxel_z_differences(zvox_[2], zvox_[0], zdiff_lo_);
       }
-      difference(zvox_[3], zvox_[1], zdiff_hi_);
+      voxel_z_differences(zvox_[3], zvox_[1], zdiff_hi_);
       zvox_z_ = z;
     }
     const Beams b = beams(c.k);

@@ -33,6 +33,12 @@ struct Plane {
 };
 
 void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out);
+// VolumePro's voxel z differences of whole slices, borders included:
+// out = voxel_z_difference(above, below) entry by entry.
+inline void voxel_z_differences(const Plane& above, const Plane& below, Plane& out) {
+  for (size_t i = 0; i < out.v.size(); ++i)
+    out.v[i] = voxel_z_difference(static_cast<uint32_t>(above.v[i]), static_cast<uint32_t>(below.v[i]));
+}
 // Beams y0 .. y1-1 of voxel slice z, beam y only over spans[y] (the rest of
 // the plane keeps what it held).
 void load_voxel_slice(const PermutedVolume& pv, int z, Plane& out, int y0, int y1, const Span* spans);

@@ -37,6 +37,12 @@
 //   SupersamplingBits - width of the supersampling factor port (4: S <= 15)
 //   HasPerspective    - the lateral scale of perspective's x and y
 //                       differences (two (V+1) x (V+3) multipliers in stage 1)
+//   HasVoxelZ         - VolumePro's z gradient: gz = C(zdiff_i), the sample's
+//                       interpolated voxel z difference (golden
+//                       gradient_voxel_z(); V+1 bits, two's complement, from
+//                       cube4_interp_zdiff); no ABC lerps are built and the
+//                       behind/ahead ports and S are ignored. Without it
+//                       zdiff_i is ignored.
 //   RecipBits         - (derived) the reciprocal's fraction, VoxelBits + 2
 //                       (golden lateral_recip_bits())
 `include "cube4_pkg.sv"
@@ -48,6 +54,7 @@ module cube4_gradient #(
   parameter int unsigned GradientShift     = cube4_pkg::GradientShift,
   parameter int unsigned SupersamplingBits = cube4_pkg::SupersamplingBits,
   parameter bit          HasPerspective    = 1'b0,
+  parameter bit          HasVoxelZ         = 1'b0,
   localparam int unsigned RecipBits        = VoxelBits + 2
 ) (
   input  logic                           clk_i,
@@ -65,6 +72,7 @@ module cube4_gradient #(
   input  logic [WeightBits:0]            ahead_wy_i,
   input  logic [SupersamplingBits-1:0]   supersampling_i,
   input  logic [RecipBits:0]             lateral_recip_i,
+  input  logic [VoxelBits:0]             zdiff_i,
   output logic                           valid_o,
   output logic signed [GradientBits-1:0] gx_o,
   output logic signed [GradientBits-1:0] gy_o,
@@ -118,6 +126,7 @@ module cube4_gradient #(
   assign dx = $signed({1'b0, right_i}) - $signed({1'b0, left_i});
   assign dy = $signed({1'b0, down_i}) - $signed({1'b0, up_i});
 
+  if (!HasVoxelZ) begin : g_abc_x_on
   for (genvar i = 0; i < 4; i++) begin : g_abc_x
     // i = 0, 1: behind rows; i = 2, 3: ahead rows.
     logic [VoxelBits-1:0] a, b;
@@ -136,6 +145,12 @@ module cube4_gradient #(
       .w_i(wx),
       .y_o(abc_x_d[i*VoxelBits +: VoxelBits])
     );
+  end
+  end else begin : g_abc_x_off
+    // Waiver: VolumePro's z takes no re-aligned samples.
+    logic unused_abc;
+    assign unused_abc = ^{behind_i, ahead_i, behind_wx_i, ahead_wx_i};
+    assign abc_x_d    = '0;
   end
 
   // What C() takes in x and y: the differences, or in perspective the
@@ -183,6 +198,7 @@ module cube4_gradient #(
   logic [GradientBits-1:0]      gx2_q, gy2_q;
   logic [SupersamplingBits-1:0] s2_q;
 
+  if (!HasVoxelZ) begin : g_abc_y_on
   for (genvar i = 0; i < 2; i++) begin : g_abc_y
     cube4_lerp #(
       .VoxelBits (VoxelBits),
@@ -194,6 +210,11 @@ module cube4_gradient #(
       .y_o(abc_d[i*VoxelBits +: VoxelBits])
     );
   end
+  end else begin : g_abc_y_off
+    logic unused_abc_x;
+    assign unused_abc_x = ^{abc_x_q, behind_wy_q, ahead_wy_q};
+    assign abc_d        = '0;
+  end
 
   always_ff @(posedge clk_i) begin
     abc_q <= abc_d;
@@ -202,15 +223,31 @@ module cube4_gradient #(
     s2_q  <= s1_q;
   end
 
-  // Stage 3: gz = C((ahead - behind) * S).
-  logic signed [DiffBits-1:0] dz;
-  logic signed [FullBits-1:0] dz_scaled, gz_rounded;
+  // Stage 3: gz = C((ahead - behind) * S), or C(zdiff) (HasVoxelZ: the
+  // difference waits beside stages 1 and 2).
+  logic signed [FullBits-1:0] gz_rounded;
   logic [GradientBits-1:0]    gx3_q, gy3_q, gz3_q;
 
-  assign dz        = $signed({1'b0, abc_q[2*VoxelBits-1:VoxelBits]}) -
-                     $signed({1'b0, abc_q[VoxelBits-1:0]});
-  assign dz_scaled = FullBits'(dz) * $signed({1'b0, s2_q});
-  assign gz_rounded = rounded(dz_scaled);
+  if (HasVoxelZ) begin : g_voxel_z
+    logic signed [VoxelBits:0] zdiff1_q, zdiff2_q;
+    always_ff @(posedge clk_i) begin
+      zdiff1_q <= zdiff_i;
+      zdiff2_q <= zdiff1_q;
+    end
+    assign gz_rounded = rounded(FullBits'(zdiff2_q));
+    // Waiver: the ABC samples and S are not built or used in this mode.
+    logic unused_abc_z;
+    assign unused_abc_z = ^{abc_q, s2_q};
+  end else begin : g_abc_z
+    logic signed [DiffBits-1:0] dz;
+    logic signed [FullBits-1:0] dz_scaled;
+    assign dz        = $signed({1'b0, abc_q[2*VoxelBits-1:VoxelBits]}) -
+                       $signed({1'b0, abc_q[VoxelBits-1:0]});
+    assign dz_scaled = FullBits'(dz) * $signed({1'b0, s2_q});
+    assign gz_rounded = rounded(dz_scaled);
+    logic unused_zdiff;
+    assign unused_zdiff = ^zdiff_i;
+  end
 
   always_ff @(posedge clk_i) begin
     gx3_q <= gx2_q;

@@ -32,6 +32,9 @@
 //   MaxDim                                         - largest nx and ny
 //   VoxelTagBits                                   - voxel tag width (bela
 //                                                    §III; 0: none, vtag_o 0)
+//   HasVoxelZ                                      - VolumePro's z gradient:
+//                                                    gz from each pipeline's
+//                                                    zdiff_i lane (the unit)
 //   CtrlBits, TagBits, DimBits, VTagPortBits       - (derived) as the unit
 `include "cube4_pkg.sv"
 
@@ -45,6 +48,7 @@ module cube4_gradient_ring #(
   parameter int unsigned  UserTagBits       = 8,
   parameter int unsigned  MaxDim            = cube4_pkg::MaxDim,
   parameter int unsigned  VoxelTagBits      = cube4_pkg::VoxelTagBits,
+  parameter bit           HasVoxelZ         = 1'b0,
   localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 2,
   localparam int unsigned TagBits           = CtrlBits + UserTagBits,
   localparam int unsigned DimBits           = $clog2(MaxDim + NumPipes),
@@ -62,6 +66,7 @@ module cube4_gradient_ring #(
   input  logic [NumPipes*VoxelBits-1:0]    sample_i,
   input  logic [NumPipes*TagBits-1:0]      tag_i,
   input  logic [NumPipes*VTagPortBits-1:0] vtag_i,
+  input  logic [NumPipes*(VoxelBits+1)-1:0] zdiff_i,
   // Gradient streams, pipeline k at bit k / [k*width +: width].
   output logic [NumPipes-1:0]              valid_o,
   output logic [NumPipes-1:0]              beam_start_o,
@@ -107,7 +112,8 @@ module cube4_gradient_ring #(
       .SupersamplingBits(SupersamplingBits),
       .UserTagBits      (UserTagBits),
       .MaxDim           (MaxDim),
-      .VoxelTagBits     (VoxelTagBits)
+      .VoxelTagBits     (VoxelTagBits),
+      .HasVoxelZ        (HasVoxelZ)
     ) u_unit (
       .clk_i        (clk_i),
       .rst_ni       (rst_ni),
@@ -119,6 +125,7 @@ module cube4_gradient_ring #(
       .sample_i     (sample_i[k*VoxelBits +: VoxelBits]),
       .tag_i        (tag_i[k*TagBits +: TagBits]),
       .vtag_i       (vtag_i[k*VTagPortBits +: VTagPortBits]),
+      .zdiff_i      (zdiff_i[k*(VoxelBits+1) +: VoxelBits+1]),
       .link_o       (link[k*LinkBits +: LinkBits]),
       .link_now_o   (link_now[k*LinkBits +: LinkBits]),
       .link_prev_o  (link_prev[k*LinkBits +: LinkBits]),

@@ -78,6 +78,15 @@
 // sample delays' control, so the tags stay in step with their samples. The
 // zero slice and the zero beam carry tag 0, as their samples carry 0. With VoxelTagBits = 0 there is none of it; vtag_o is 0.
 //
+// VolumePro's z gradient (HasVoxelZ): zdiff_i is each sample's
+// interpolated voxel z difference (cube4_interp_ring's zdiff_o, V+1 bits,
+// two's complement). It takes the voxel tag's way (the centre's) and gives
+// gz = C(zdiff) of the centre sample (cube4_gradient with HasVoxelZ; golden
+// gradient_voxel_z()): the difference waits a slice in the slice delay as
+// the centre sample does. The behind and ahead rows are still stored and
+// linked (the centre and the y neighbours come from them) but not
+// interpolated. Without HasVoxelZ zdiff_i is ignored.
+//
 // Output per gradient (valid_o): gx_o, gy_o, gz_o; sample_o = S(x, y, s)
 // (the centre sample, for the shader) and vtag_o its voxel tag;
 // x_o = j*p + k, y_o = y; flags beam_start_o / beam_end_o (j = 0 / B-1) and
@@ -115,6 +124,7 @@
 //   CtrlBits, TagBits     - (derived) slice-control part and whole tag width
 //   DimBits               - (derived) width of x_o, y_o
 //   VoxelTagBits          - voxel tag width (Precision::tag_bits, 0: none)
+//   HasVoxelZ             - VolumePro's z gradient (below)
 //   LinkBits              - (derived) link width: five samples, [0] current
 //                           row y, [1]/[2] ahead rows, [3]/[4] behind rows
 //   VTagPortBits          - (derived) vtag_i/vtag_o width, at least one bit
@@ -131,6 +141,7 @@ module cube4_gradient_unit #(
   parameter int unsigned  UserTagBits       = 8,
   parameter int unsigned  MaxDim            = cube4_pkg::MaxDim,
   parameter int unsigned  VoxelTagBits      = cube4_pkg::VoxelTagBits,
+  parameter bit           HasVoxelZ         = 1'b0,
   localparam int unsigned BeamDepth         = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth        = MaxDim * BeamDepth,
   localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 2,
@@ -150,6 +161,7 @@ module cube4_gradient_unit #(
   input  logic [VoxelBits-1:0]           sample_i,
   input  logic [TagBits-1:0]             tag_i,
   input  logic [VTagPortBits-1:0]        vtag_i,
+  input  logic [VoxelBits:0]             zdiff_i,   // HasVoxelZ: the sample's z difference
   // Near-neighbour links.
   output logic [LinkBits-1:0]            link_o,       // aligned column, to k-1 and k+1
   output logic [LinkBits-1:0]            link_now_o,   // this step's column (wrap, k = 0)
@@ -422,6 +434,13 @@ module cube4_gradient_unit #(
     assign link_prev_o = '0;
   end
 
+  // The centre's side data held with its column (below), and its z
+  // difference for cube4_gradient.
+  localparam int unsigned CentreBits = VoxelTagBits + (HasVoxelZ ? VoxelBits + 1 : 0);
+  localparam int unsigned CentrePortBits = CentreBits > 0 ? CentreBits : 1;
+  logic [CentrePortBits-1:0] col_side_q;
+  logic [V:0]                col_zdiff;
+
   // -------------------------------------------------------------------------
   // The 12-neighbourhood: own column (x), left (x-1), right (x+1).
   logic [LinkBits-1:0]  own, left, right;
@@ -447,7 +466,8 @@ module cube4_gradient_unit #(
     .WeightBits       (WeightBits),
     .GradientBits     (GradientBits),
     .GradientShift    (GradientShift),
-    .SupersamplingBits(SupersamplingBits)
+    .SupersamplingBits(SupersamplingBits),
+    .HasVoxelZ        (HasVoxelZ)
   ) u_gradient (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
@@ -464,6 +484,7 @@ module cube4_gradient_unit #(
     .ahead_wy_i     ({1'b0, ahead_wy}),
     .supersampling_i(supersampling),
     .lateral_recip_i('0),  // parallel projection: the ring carries no perspective yet
+    .zdiff_i        (col_zdiff),
     .valid_o        (valid_o),
     .gx_o           (gx_o),
     .gy_o           (gy_o),
@@ -487,21 +508,32 @@ module cube4_gradient_unit #(
       side_q[(GradLatency-1)*SideBits +: SideBits];
 
   // -------------------------------------------------------------------------
-  // The centre sample's voxel tag: the centre's way through the slice and
-  // beam delays (same control), then held with its column and delayed
-  // beside cube4_gradient.
-  if (VoxelTagBits > 0) begin : g_vtag
-    localparam int unsigned T = VoxelTagBits;
-    logic [T-1:0] ahead_tag, slice_tag_rdata, cur_tag, mid_tag, col_tag_q;
-    logic [GradLatency*T-1:0] vtag_q;
+  // The centre sample's side data: its voxel tag and (HasVoxelZ) its
+  // interpolated z difference take the centre's way through the slice and
+  // beam delays (same control), then are held with its column; the tag is
+  // delayed beside cube4_gradient, the difference goes into it.
+  if (CentreBits > 0) begin : g_centre
+    localparam int unsigned C = CentreBits;
+    logic [C-1:0] ahead_side, centre_in, slice_side_rdata, cur_side, mid_side;
 
-    assign ahead_tag = (zb_active || in_zero) ? '0 : vtag_i;
-    assign cur_tag   = (zb_active || first_q) ? '0 : slice_tag_rdata;
+    if (VoxelTagBits > 0 && HasVoxelZ) begin : g_both
+      assign centre_in = {zdiff_i, vtag_i};
+    end else if (HasVoxelZ) begin : g_z
+      logic unused_vtag;
+      assign unused_vtag = ^vtag_i;
+      assign centre_in   = zdiff_i;
+    end else begin : g_tag
+      logic unused_zdiff;
+      assign unused_zdiff = ^zdiff_i;
+      assign centre_in    = vtag_i;
+    end
+    assign ahead_side = (zb_active || in_zero) ? '0 : centre_in;
+    assign cur_side   = (zb_active || first_q) ? '0 : slice_side_rdata;
 
     cube4_delay_ram #(
-      .Width   (T),
+      .Width   (C),
       .MaxDepth(SliceDepth)
-    ) u_slice_tag_delay (
+    ) u_slice_side_delay (
       .clk_i    (clk_i),
       .rst_ni   (rst_ni),
       .depth_i  (SliceDepthBits'(SliceDepth)),
@@ -509,15 +541,15 @@ module cube4_gradient_unit #(
       .advance_i(step_in),
       .last_i   (slice_end_i && beam_end_i),
       .write_i  (1'b1),
-      .wdata_i  (ahead_tag),
-      .rdata_o  (slice_tag_rdata)
+      .wdata_i  (ahead_side),
+      .rdata_o  (slice_side_rdata)
     );
 
-    // Beam y+1's current tag in, beam y's (the centre row's) out.
+    // Beam y+1's current side data in, beam y's (the centre row's) out.
     cube4_delay_ram #(
-      .Width   (T),
+      .Width   (C),
       .MaxDepth(BeamDepth)
-    ) u_beam_tag_delay (
+    ) u_beam_side_delay (
       .clk_i    (clk_i),
       .rst_ni   (rst_ni),
       .depth_i  (BeamDepthBits'(BeamDepth)),
@@ -525,21 +557,35 @@ module cube4_gradient_unit #(
       .advance_i(step),
       .last_i   (s_beam_end),
       .write_i  (1'b1),
-      .wdata_i  (cur_tag),
-      .rdata_o  (mid_tag)
+      .wdata_i  (cur_side),
+      .rdata_o  (mid_side)
     );
 
     always_ff @(posedge clk_i) begin
       if (step) begin
-        col_tag_q <= mid_tag;
+        col_side_q <= mid_side;
       end
-      vtag_q <= {vtag_q[(GradLatency-1)*T-1:0], col_tag_q};
+    end
+  end else begin : g_no_centre
+    logic unused_centre;
+    assign unused_centre = ^{vtag_i, zdiff_i, col_side_q};
+    assign col_side_q    = '0;
+  end
+
+  if (VoxelTagBits > 0) begin : g_vtag
+    localparam int unsigned T = VoxelTagBits;
+    logic [GradLatency*T-1:0] vtag_q;
+    always_ff @(posedge clk_i) begin
+      vtag_q <= {vtag_q[(GradLatency-1)*T-1:0], col_side_q[0 +: T]};
     end
     assign vtag_o = vtag_q[GradLatency*T-1 -: T];
   end else begin : g_no_vtag
-    logic unused_vtag;
-    assign unused_vtag = ^vtag_i;
-    assign vtag_o      = '0;
+    assign vtag_o = '0;
+  end
+  if (HasVoxelZ) begin : g_col_zdiff
+    assign col_zdiff = col_side_q[CentreBits-1 -: V+1];
+  end else begin : g_no_col_zdiff
+    assign col_zdiff = '0;
   end
 
   // The output slice's ZeroSlice and FrameStart bits and the weights' base

@@ -24,6 +24,10 @@
 //   VoxelBits, WeightBits - widths (Precision defaults 12, 8)
 //   TagBits               - stream-control tag travelling with the data
 //   VoxelTagBits          - voxel tag width (bela §III; 0: none, vtag_o 0)
+//   HasZDiff              - VolumePro's z gradient: each pipeline's zdiff_o
+//                           lane beside its samples; the stream reads one
+//                           slice ahead after a priming pass (prime_i;
+//                           cube4_interp_unit, docs/rtl-interp-zdiff.md)
 //   MaxDim                - largest nx and ny the delay storage holds
 //   BeamDepth, SliceDepth - (derived) per-pipeline beam delay and slice store
 //                           entries: ceil(MaxDim / p) and MaxDim * that
@@ -37,6 +41,7 @@ module cube4_interp_ring #(
   parameter int unsigned  TagBits    = 8,
   parameter int unsigned  MaxDim     = cube4_pkg::MaxDim,
   parameter int unsigned  VoxelTagBits = cube4_pkg::VoxelTagBits,
+  parameter bit           HasZDiff   = 1'b0,
   localparam int unsigned BeamDepth  = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth = MaxDim * BeamDepth,
   localparam int unsigned WordBits     = VoxelBits + VoxelTagBits,
@@ -51,6 +56,7 @@ module cube4_interp_ring #(
   input  logic                          slice_start_i,
   input  logic                          slice_end_i,
   input  logic                          flush_i,
+  input  logic                          prime_i,
   input  logic [NumPipes*WordBits-1:0]  voxel_i,
   input  logic [WeightBits:0]           wx_i,
   input  logic [WeightBits:0]           wy_i,
@@ -65,10 +71,11 @@ module cube4_interp_ring #(
   output logic [NumPipes-1:0]           slice_end_o,
   output logic [NumPipes*VoxelBits-1:0] sample_o,
   output logic [NumPipes*VTagPortBits-1:0] vtag_o,
+  output logic [NumPipes*(VoxelBits+1)-1:0] zdiff_o,
   output logic [NumPipes*TagBits-1:0]   tag_o
 );
 
-  localparam int unsigned LinkBits = 4 * WordBits;
+  localparam int unsigned LinkBits = 4 * WordBits + (HasZDiff ? 4 * VoxelBits : 0);
 
   // Links as packed vectors (yosys 0.23: no unpacked wire arrays).
   logic [NumPipes*LinkBits-1:0] link, link_now;
@@ -90,7 +97,8 @@ module cube4_interp_ring #(
       .BeamDepth (BeamDepth),
       .SliceDepth(SliceDepth),
       .WrapIn    (Last),
-      .VoxelTagBits(VoxelTagBits)
+      .VoxelTagBits(VoxelTagBits),
+      .HasZDiff  (HasZDiff)
     ) u_unit (
       .clk_i        (clk_i),
       .rst_ni       (rst_ni),
@@ -100,6 +108,7 @@ module cube4_interp_ring #(
       .slice_start_i(slice_start_i),
       .slice_end_i  (slice_end_i),
       .flush_i      (flush_i),
+      .prime_i      (prime_i),
       .voxel_i      (voxel_i[k*WordBits +: WordBits]),
       .wx_i         (wx_i),
       .wy_i         (wy_i),
@@ -115,6 +124,7 @@ module cube4_interp_ring #(
       .slice_end_o  (slice_end_o[k]),
       .sample_o     (sample_o[k*VoxelBits +: VoxelBits]),
       .vtag_o       (vtag_o[k*VTagPortBits +: VTagPortBits]),
+      .zdiff_o      (zdiff_o[k*(VoxelBits+1) +: VoxelBits+1]),
       .tag_o        (tag_o[k*TagBits +: TagBits])
     );
   end

@@ -38,7 +38,7 @@ if [ ! -f "$dir/build.ninja" ]; then
   # A configure step that fails (a width out of range, say) leaves no
   # half-made build behind to be mistaken for one.
   if ! cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCUBE4_FORMAL=OFF \
-      "-DCUBE4_SYSTEM_WIDTHS=$widths" "-DCUBE4_SYSTEM_PIPES=$pipe_list" "-DCUBE4_SYSTEM_POLYGON_PIPES=$pipe_list" \
+      "-DCUBE4_SYSTEM_WIDTHS=$widths" "-DCUBE4_SYSTEM_PIPES=$pipe_list" "-DCUBE4_SYSTEM_POLYGON_PIPES=$pipe_list" "-DCUBE4_SYSTEM_ZDIFF_PIPES=$pipe_list" \
       -DCUBE4_SYSTEM_TAG_PIPES= >"$dir.configure.log" 2>&1; then
     grep -E 'CMake Error|CUBE4_SYSTEM_WIDTHS' -A3 "$dir.configure.log" >&2 || tail -20 "$dir.configure.log" >&2
     rm -rf "$dir"

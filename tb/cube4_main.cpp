@@ -424,11 +424,6 @@ int run_render(const RenderArgs& args) {
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
                      ": \"view.projection\": \"perspective\" renders with --model fixed, float, reference or tlm "
                      "so far (not " + a.model + "); the RTL follows (docs/perspective.md)");
-  if (l.scene.z_gradient != golden::ZGradient::Abc && system && parse_levels(a.model) != parse_levels("tlm"))
-    throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
-                     ": \"z_gradient\": \"voxel_differences\" renders at --model tlm (loosely timed), fixed or "
-                     "float so far, not " + a.model + ": the gradient unit's clocked model and RTL take \"abc\" "
-                     "(docs/fixed-point.md)");
   if (a.model == "splat" && !l.meshes.empty())
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
                      ": \"polygons\": the splat model draws the volume only (bela's voxel projection)");

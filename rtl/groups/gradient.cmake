@@ -42,6 +42,17 @@ cube4_rtl_variant(test_rtl_gradient cube4_gradient_ring Vcube4_gradient_ring_t4 
   PARAMS NumPipes=4 MaxDim=16 VoxelTagBits=4)
 cube4_rtl_variant(test_rtl_gradient cube4_interp_ring Vcube4_interp_ring_gt4 SOURCES ${_gradient_interp_sources}
   PARAMS NumPipes=4 MaxDim=16 TagBits=${_gradient_tag_bits} VoxelTagBits=4)
+# With VolumePro's z gradient (interpolation ring HasZDiff, gradient ring
+# HasVoxelZ), chained likewise at p = 4 and 1.
+foreach(_cfg "1;24" "4;16")
+  list(GET _cfg 0 _p)
+  list(GET _cfg 1 _dim)
+  cube4_rtl_variant(test_rtl_gradient cube4_gradient_ring Vcube4_gradient_ring_z${_p} SOURCES ${_gradient_sources}
+    PARAMS NumPipes=${_p} MaxDim=${_dim} HasVoxelZ=1'b1)
+  cube4_rtl_variant(test_rtl_gradient cube4_interp_ring Vcube4_interp_ring_gz${_p}
+    SOURCES ${_gradient_interp_sources} cube4_interp_zdiff.sv
+    PARAMS NumPipes=${_p} MaxDim=${_dim} TagBits=${_gradient_tag_bits} HasZDiff=1'b1)
+endforeach()
 # The datapath as a top, default and other widths (test_gradient.cpp holds the
 # same values).
 cube4_rtl_variant(test_rtl_gradient cube4_gradient Vcube4_gradient SOURCES cube4_lerp.sv)

@@ -17,11 +17,13 @@ struct BeamFlags {
   bool beam_start = false, beam_end = false;    // partial beam j = 0, j = B-1
   bool slice_start = false, slice_end = false;  // beam y = 0, last beam of the slice
   bool flush = false;  // voxel stream only: a beam of no voxels after a pass (docs/rtl-interp.md)
+  bool prime = false;  // voxel stream only: a frame's priming pass, VolumePro's z gradient (docs/rtl-interp-zdiff.md)
 };
 
 // Stream former -> interpolation: one pass per sample slice (plus the zero
-// pass when the gradient unit runs), beams 0 .. ny-1, and a flush beam
-// where FramePlan::beams() says.
+// pass when the gradient unit runs, and with VolumePro's z gradient a
+// priming pass first), beams 0 .. ny-1, and a flush beam where
+// FramePlan::beams() says.
 struct VoxelBeat {
   bool valid = false;
   BeamFlags f;
@@ -31,13 +33,16 @@ struct VoxelBeat {
 };
 
 // Interpolation -> gradient: samples S(j*p + k, y) of a pass, beams 0 .. ny-1.
-// vtag: each sample's voxel tag (bela §III), 0 without tags.
+// vtag: each sample's voxel tag (bela §III), 0 without tags. zdiff: with
+// VolumePro's z gradient each sample's interpolated voxel z difference
+// (golden interpolated_z_difference()), 0 otherwise.
 struct SampleBeat {
   bool valid = false;
   BeamFlags f;
   uint64_t tag = 0;
   std::array<uint16_t, kMaxLanes> sample{};
   std::array<uint8_t, kMaxLanes> vtag{};
+  std::array<int32_t, kMaxLanes> zdiff{};
 };
 
 // Gradient -> shading: the centre sample, its gradient and its position.

@@ -1,13 +1,16 @@
 // The cycles of a frame at one voxel per pipeline per clock
 // (docs/system.md, "Cycle accounting"):
 //   stream  = nz * S passes * ny beams * ceil(nx / p): the steady-state
-//             interval of frames back to back
+//             interval of frames back to back; with VolumePro's z gradient
+//             one pass more, the frame's priming pass (docs/rtl-interp-zdiff.md)
 //   flush   = what ends a stream after its last frame: the zero pass when
 //             the gradient unit runs (ny beams) and one flush beam, in
 //             beams of ceil(nx / p) (in a stream of frames the next frame's
 //             first pass and first beam do their work in the same cycles)
 //   latency = stream + flush + the drain after the last voxel beat (below),
-//             measured by the RTL run and asserted equal by the system tests.
+//             measured by the RTL run and asserted equal by the system tests;
+//             a frame another follows (latency_followed) waits with VolumePro's
+//             z gradient for the next frame's priming pass too
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/system.hpp"
 #include "systemc/tlm/tlm_shade.hpp"
@@ -17,7 +20,8 @@ namespace cube4::sysc {
 CycleCount frame_cycles(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1];
   const uint64_t B = static_cast<uint64_t>((nx + p - 1) / p);
-  const uint64_t passes = static_cast<uint64_t>(r.sample_slices());
+  const bool zdiff = r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences;
+  const uint64_t passes = static_cast<uint64_t>(r.sample_slices()) + (zdiff ? 1 : 0);
   CycleCount c;
   c.stream = passes * static_cast<uint64_t>(ny) * B;
   c.flush = (r.gradient ? static_cast<uint64_t>(ny) * B : 0) + B;
@@ -33,6 +37,7 @@ CycleCount frame_cycles(const golden::Registers& r, int p) {
   const uint64_t gradient = r.gradient ? kLink + B + 1 + kGradientStages : kLink;
   const uint64_t drain = kLink + kInterpLastBeat + gradient + kLink + shade + kLink + kComposite;
   c.latency = c.stream + c.flush + drain;
+  c.latency_followed = c.latency + (zdiff ? static_cast<uint64_t>(ny) * B : 0);
   return c;
 }
 

@@ -1,5 +1,6 @@
 #include "systemc/core/frame_plan.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -10,7 +11,8 @@ FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits
                      std::vector<golden::SliceControl> slice_controls)
     : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]),
       B(pipes > 0 ? (regs.dim[0] + pipes - 1) / pipes : 0),  // p < 1 is refused below
-      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)), user_tag_bits(user_tag_bits_),
+      K(regs.sample_slices()), passes(K + (regs.gradient ? 1 : 0)),
+      zdiff(regs.gradient && regs.z_gradient == golden::ZGradient::VoxelDifferences), user_tag_bits(user_tag_bits_),
       tag_base(tag_base_) {
   if (p < 1) throw std::invalid_argument("pipelines: " + std::to_string(p) + " (must be at least 1)");
   if (user_tag_bits < 1 || user_tag_bits > 32)
@@ -35,8 +37,9 @@ FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits
 
 int FramePlan::pass_voxel_slice(int pass) const {
   if (zero_pass(pass)) return nz;
+  if (prime_pass(pass)) return 0;
   const golden::SliceControl& c = slices[static_cast<size_t>(pass)];
-  return c.z_voxel + (c.wz != 0 ? 1 : 0);
+  return std::min(nz, c.z_voxel + (c.wz != 0 ? 1 : 0) + (zdiff ? 1 : 0));
 }
 
 PassStep FramePlan::step(int pass, int y, int j) const {
@@ -46,7 +49,8 @@ PassStep FramePlan::step(int pass, int y, int j) const {
   s.f.flush = y == ny;
   s.f.slice_start = y == 0 && !s.f.flush;
   s.f.slice_end = y == ny - 1;
-  if (!zero_pass(pass) && !s.f.flush) {
+  s.f.prime = prime_pass(pass) && !s.f.flush;
+  if (!zero_pass(pass) && !prime_pass(pass) && !s.f.flush) {
     const golden::SliceControl& c = slices[static_cast<size_t>(pass)];
     s.wx = c.wx;
     s.wy = c.wy;
@@ -58,6 +62,8 @@ PassStep FramePlan::step(int pass, int y, int j) const {
 }
 
 uint64_t FramePlan::pass_tag(int pass) const {
+  // The priming pass gives no samples: its tag never leaves the ring.
+  if (prime_pass(pass)) return 0;
   const golden::SliceControl* control = zero_pass(pass) ? nullptr : &slices[static_cast<size_t>(pass)];
   return rtl::gradient_tag(control, 0, static_cast<uint64_t>(r.supersampling), pass == 0, user_tag(pass), r.p.weight_bits,
                            user_tag_bits);

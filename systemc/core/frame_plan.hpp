@@ -48,15 +48,24 @@ struct FramePlan {
   int B;              // partial beams per beam, ceil(nx / p)
   int K;              // sample slices, nz * S
   int passes;         // interpolation passes: K, plus the zero pass when the gradient unit runs
-                      // (a stream's last frame; frames before it stream K: passes_in_stream())
+                      // (a stream's last frame; frames before it stream K: passes_in_stream()),
+                      // numbered 0 ..; with zdiff the priming pass -1 comes first (first_pass())
+  bool zdiff;         // VolumePro's z gradient (gradient on, z_gradient voxel_differences): the
+                      // stream reads one voxel slice ahead after a priming pass (docs/rtl-interp-zdiff.md)
   int user_tag_bits;
   uint64_t tag_base;
   std::vector<golden::SliceControl> slices;  // slice_control(k), k = 0 .. K (K: the next of the last)
 
   // The pass's voxel slice: z_voxel(k) when wz = 0, else z_voxel(k) + 1
-  // (docs/rtl-interp.md); nz for the zero pass (no memory read).
+  // (docs/rtl-interp.md); with zdiff one slice more, and 0 for the priming
+  // pass; nz for the zero pass (no memory read; nor of any slice past nz).
   int pass_voxel_slice(int pass) const;
   bool zero_pass(int pass) const { return pass >= K; }
+  // A frame's first pass: -1, the priming pass, with zdiff; 0 otherwise.
+  int first_pass() const { return zdiff ? -1 : 0; }
+  bool prime_pass(int pass) const { return pass < 0; }
+  // A frame's passes in a stream, the priming pass included (cycles).
+  int stream_passes(bool stream_last_frame) const { return passes_in_stream(stream_last_frame) - first_pass(); }
   // A frame's passes in a stream of frames: the zero pass only ends the
   // stream (the next frame's first slice is the zero slice ahead of this
   // frame's last, docs/rtl-gradient.md).

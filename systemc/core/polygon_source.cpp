@@ -23,7 +23,7 @@ const char* polygon_connection_name(golden::PolygonConnection c) {
 
 PolygonSource::PolygonSource(const FramePlan& plan, const golden::PolygonWork& work, const golden::PolygonEngine& e,
                              double clock_hz)
-    : kind_(e.connection), slices_(plan.K), lag_(plan.passes > plan.K ? 1 : 0) {
+    : kind_(e.connection), slices_(plan.K), lag_(plan.passes > plan.K ? 1 : 0), first_pass_(plan.first_pass()) {
   for (const golden::SlabLoad& l : work.slabs)
     draw_.push_back(cycles(kind_ == golden::PolygonConnection::Dual ? golden::dual_draw_seconds(l, e)
                                                                     : golden::rle_draw_seconds(l, e),
@@ -66,7 +66,7 @@ uint64_t PolygonSource::stalls_of_frame(uint64_t pass_cycles) {
   const uint64_t before = stalls_;
   const int passes = slices_ + lag_;
   uint64_t t = 0;
-  for (int pass = 0; pass < passes; ++pass) t = release(pass, t) + pass_cycles;
+  for (int pass = first_pass_; pass < passes; ++pass) t = release(pass, t) + pass_cycles;
   return stalls_ - before;
 }
 

@@ -60,6 +60,7 @@ class PolygonSource {
  private:
   golden::PolygonConnection kind_;
   int slices_, lag_;
+  int first_pass_;  // FramePlan::first_pass(): -1 with a priming pass
   std::vector<uint64_t> draw_;  // per slab, cycles (Rle: run-length buffer; Dual: shared buffer)
   uint64_t opaque_ = 0;         // Dual: the opaque polygons' cycles
   std::vector<uint64_t> drawn_;  // Rle: the cycle each slab is complete

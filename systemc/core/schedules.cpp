@@ -31,9 +31,10 @@ VoxelBeat former_edge(FrameUnits& u) {
     // A pass starts only once its slice's slab image is in the buffer: the
     // stream waits at its first beat (an invalid beat a cycle).
     const StreamFormer::Upcoming n = u.former->upcoming();
-    const int id = n.frame * u.former->passes() + n.pass;
+    // Passes are numbered from first_pass() (-1: a priming pass) in a frame.
+    const int id = n.frame * (u.former->passes() + 1) + n.pass + 1;
     if (n.first_of_pass && id != u.released_pass) {
-      if (n.pass == 0 && n.frame == 1) u.first_frame_stalls = u.polygons->stall_cycles();
+      if (n.pass == u.former->first_pass() && n.frame == 1) u.first_frame_stalls = u.polygons->stall_cycles();
       u.release_at = u.polygons->release(n.pass, u.cycle);
       u.released_pass = id;
     }

@@ -44,7 +44,7 @@ struct FrameUnits {
   int frames = 1;
 
   // Written by the front (stream former .. gradient unit).
-  int released_pass = -1;  // frame * passes + pass: the pass the source let start
+  int released_pass = -1;  // frame * (passes + 1) + pass + 1: the pass the source let start
   uint64_t release_at = 0;
   uint64_t first_frame_stalls = 0;
   uint64_t cycle = 0;

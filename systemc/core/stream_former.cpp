@@ -7,6 +7,7 @@ namespace cube4::sysc {
 
 StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, AddrIf& addr, int frames)
     : plan_(plan), mem_(mem), addr_(addr), frames_(frames) {
+  at_.pass = plan_.first_pass();
   // The first beat reads: issue it now, so its access arrives with it.
   const Pos first = next_read(at_);
   if (first.frame < frames_) {
@@ -22,7 +23,7 @@ StreamFormer::Pos StreamFormer::following(Pos p) const {
     if (++p.y == plan_.beams(p.frame + 1 == frames_ && p.pass + 1 == passes)) {
       p.y = 0;
       if (++p.pass == passes) {
-        p.pass = 0;
+        p.pass = plan_.first_pass();
         ++p.frame;
       }
     }

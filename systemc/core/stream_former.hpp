@@ -1,7 +1,8 @@
 // Address generation, voxel memory reads, de-skew and the weight generator:
 // the source of the pipelines' voxel stream, one partial beam per clock.
 // Pass order (docs/rtl-interp.md): for each pass, beams 0 .. ny-1, partial
-// beams 0 .. B-1, passes and frames back to back; after the last frame the
+// beams 0 .. B-1, passes and frames back to back (with VolumePro's z
+// gradient each frame starting with its priming pass, -1); after the last frame the
 // zero pass (gradient unit on; it reads nothing) and a flush beam (a time
 // slot, no read). The memory addresses come from
 // the address generator (AddrIf: TlmAddr, systemc/tlm/tlm_addr.hpp, at TLM;
@@ -33,6 +34,7 @@ class StreamFormer {
   };
   Upcoming upcoming() const { return {at_.frame, at_.pass, at_.y == 0 && at_.j == 0}; }
   int passes() const { return plan_.passes; }
+  int first_pass() const { return plan_.first_pass(); }
   uint64_t beats() const { return beats_; }
 
  private:

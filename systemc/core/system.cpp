@@ -115,16 +115,6 @@ void check_perspective_levels(const golden::Registers& r, const SystemConfig& cf
         "(docs/perspective.md)");
 }
 
-// VolumePro's z gradient is golden's so far: the gradient units' TLM and
-// RTL models take the 12-neighbourhood.
-void check_z_gradient_levels(const golden::Registers& r, const SystemConfig& cfg) {
-  if (r.gradient && r.z_gradient != golden::ZGradient::Abc && (!cfg.all_tlm() || cfg.cycle_level))
-    throw std::invalid_argument(
-        "z_gradient voxel_differences: the system model renders it loosely timed with every unit at transaction "
-        "level only (--model tlm); the gradient unit's clocked model and RTL take the 12-neighbourhood "
-        "(docs/fixed-point.md)");
-}
-
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress, const golden::PolygonFrame* polygons) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -140,7 +130,6 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   }
   if (polygons) check_polygon_levels(cfg);
   check_perspective_levels(r, cfg);
-  check_z_gradient_levels(*rs, cfg);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
@@ -192,8 +181,8 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   if (cfg.all_tlm() && !cfg.cycle_level) {
     res.plane = run_tlm_frame(plan, vol, progress, cfg.accumulators, polygons);
     if (source) res.polygon_stall_cycles = source->stalls_of_frame(plan.pass_beats());
-    res.frame_cycles = cc.latency + res.polygon_stall_cycles;
-    for (int pass = 0; pass < plan.passes; ++pass)
+    res.frame_cycles = (cfg.frames > 1 ? cc.latency_followed : cc.latency) + res.polygon_stall_cycles;
+    for (int pass = plan.first_pass(); pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
 #ifdef CUBE4_HAVE_RTL

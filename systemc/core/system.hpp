@@ -139,6 +139,11 @@ struct CycleCount {
   uint64_t stream = 0;   // voxel beats of a frame in a stream of frames: the steady-state interval
   uint64_t flush = 0;    // the flush beam's beats that end a stream after its last frame (0: in `stream`)
   uint64_t latency = 0;  // first-frame latency: stream + flush + the pipeline's drain
+  // The latency of a frame that another follows back to back (the first of
+  // a stream of frames): `latency`, except that with VolumePro's z gradient
+  // the next frame's priming pass streams before the samples that finish
+  // this frame's last slice of gradients, one pass (ny·B cycles) later.
+  uint64_t latency_followed = 0;
 };
 CycleCount frame_cycles(const golden::Registers& r, int p);
 

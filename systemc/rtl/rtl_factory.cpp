@@ -139,6 +139,31 @@ void require_rtl_polygons(int p) {
                               "; add it to CMake's CUBE4_SYSTEM_POLYGON_PIPES, or run the compositing unit at TLM)");
 }
 
+std::vector<int> rtl_zdiff_pipes() {
+  return {
+#define CUBE4_RTL_ZDIFF_P(p) p,
+#include "rtl_zdiff_variant_list.inc"
+#undef CUBE4_RTL_ZDIFF_P
+  };
+}
+
+void require_rtl_zdiff(int p, int tag_bits) {
+  if (tag_bits > 0)
+    throw std::invalid_argument(
+        "z_gradient voxel_differences with voxel tags: no RTL interpolation and gradient rings have both; run "
+        "those units at TLM (--model tlm, or mixed without interp and gradient)");
+  std::string list;
+  for (int q : rtl_zdiff_pipes()) {
+    if (q == p) return;
+    list += (list.empty() ? "" : ", ") + std::to_string(q);
+  }
+  throw std::invalid_argument("pipelines: " + std::to_string(p) +
+                              " has no RTL interpolation and gradient rings for z_gradient voxel_differences (built for "
+                              "p = " +
+                              (list.empty() ? std::string("none") : list) +
+                              "; add it to CMake's CUBE4_SYSTEM_ZDIFF_PIPES, or run those units at TLM)");
+}
+
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r, VerilatedContext& ctx) {
   return run_rtl_dda<Vsys_dda>(r, ctx);
 }
@@ -155,6 +180,15 @@ std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewL
 }
 
 std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+  if (plan.zdiff) {
+    require_rtl_zdiff(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_ZDIFF_P(p) \
+  case p: return std::make_unique<RtlInterp<Vsys_interp_zdiff_p##p>>(plan, ctx, trace);
+#include "rtl_zdiff_variant_list.inc"
+#undef CUBE4_RTL_ZDIFF_P
+    }
+  }
   if (plan.r.p.tag_bits > 0) {
     require_rtl_tags(plan.p, plan.r.p.tag_bits);
     switch (plan.p) {
@@ -174,6 +208,15 @@ std::unique_ptr<InterpIf> make_rtl_interp(const FramePlan& plan, VerilatedContex
 }
 
 std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace) {
+  if (plan.zdiff) {
+    require_rtl_zdiff(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_ZDIFF_P(p) \
+  case p: return std::make_unique<RtlGradient<Vsys_gradient_zdiff_p##p>>(plan, kRtlMaxDim, ctx, trace);
+#include "rtl_zdiff_variant_list.inc"
+#undef CUBE4_RTL_ZDIFF_P
+    }
+  }
   if (plan.r.p.tag_bits > 0) {
     require_rtl_tags(plan.p, plan.r.p.tag_bits);
     switch (plan.p) {

@@ -55,6 +55,12 @@ void require_rtl_tags(int p, int tag_bits);
 // (Cube-5; CMake CUBE4_SYSTEM_POLYGON_PIPES); throws, naming them, if p has none.
 std::vector<int> rtl_polygon_pipes();
 void require_rtl_polygons(int p);
+// The p values whose interpolation and gradient rings are verilated with
+// VolumePro's z gradient (HasZDiff, HasVoxelZ; CMake
+// CUBE4_SYSTEM_ZDIFF_PIPES); throws, naming them, if p has none, or if the
+// scene also has voxel tags (no ring has both).
+std::vector<int> rtl_zdiff_pipes();
+void require_rtl_zdiff(int p, int tag_bits);
 // The weight generator at RTL (cube4_dda, one for all pipelines): the
 // control of slices 0 .. K of a parallel-projection frame (FramePlan's
 // slice_controls), clocked through the frame's slices before it starts

@@ -1,6 +1,8 @@
 // Gradient unit at RTL: cube4_gradient_ring (p pipelines and their links).
 // With voxel tags (bela §III) M is a ring with kRtlVoxelTagBits of tag
-// hardware: each sample's tag goes in, the centre's comes out.
+// hardware: each sample's tag goes in, the centre's comes out. With
+// VolumePro's z gradient (plan.zdiff) M is a ring with HasVoxelZ, fed each
+// sample's interpolated z difference.
 #pragma once
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
@@ -14,7 +16,7 @@ class RtlGradient final : public GradientIf {
  public:
   RtlGradient(const FramePlan& plan, int max_dim, VerilatedContext& ctx, const TraceWindow& trace)
       : p_(plan.p), v_(plan.r.p.voxel_bits), g_(plan.r.p.gradient_bits), tag_bits_(plan.tag_bits()),
-        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), dim_bits_(clog2(max_dim + plan.p)),
+        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), dim_bits_(clog2(max_dim + plan.p)), zdiff_(plan.zdiff),
         m_(ctx, "gradient", trace, "gradient") {}
 
   void clock(const SampleBeat& in, GradientBeat& out) override {
@@ -32,6 +34,9 @@ class RtlGradient final : public GradientIf {
       put_bits(m.sample_i, k * v_, v_, in.sample[static_cast<size_t>(k)]);
       put_bits(m.tag_i, k * tag_bits_, tag_bits_, in.tag);
       if (vtag_bits_ > 0) put_bits(m.vtag_i, k * vtag_bits_, vtag_bits_, in.vtag[static_cast<size_t>(k)]);
+      if (zdiff_)
+        put_bits(m.zdiff_i, k * (v_ + 1), v_ + 1,
+                 static_cast<uint64_t>(in.zdiff[static_cast<size_t>(k)]) & ((uint64_t{1} << (v_ + 1)) - 1));
     }
     m_.settle();
     out.valid = m.valid_o & 1;
@@ -61,6 +66,7 @@ class RtlGradient final : public GradientIf {
     return b;
   }
   int p_, v_, g_, tag_bits_, vtag_bits_, dim_bits_;  // vtag_bits_: the model's VoxelTagBits
+  bool zdiff_;
   RtlModel<M> m_;
 };
 

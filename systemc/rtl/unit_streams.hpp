@@ -27,6 +27,7 @@ void drive_interp_stream(M& m, const sysc::VoxelBeat& b, int pipes, int word_bit
   m.slice_start_i = b.f.slice_start;
   m.slice_end_i = b.f.slice_end;
   m.flush_i = b.f.flush;
+  m.prime_i = b.f.prime;
   for (int k = 0; k < pipes; ++k) put_bits(m.voxel_i, k * word_bits, word_bits, b.voxel[static_cast<size_t>(k)]);
   m.wx_i = b.wx;
   m.wy_i = b.wy;

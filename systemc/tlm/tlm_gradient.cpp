@@ -7,7 +7,9 @@ TlmGradient::TlmGradient(const FramePlan& plan, bool skip_transparent, const Tlm
       skip_transparent_(skip_transparent),
       stops_(skip_transparent ? stops : nullptr),
       behind_(plan.nx, plan.ny, 1), current_(plan.nx, plan.ny, 1), ahead_(plan.nx, plan.ny, 1),
-      zeros_(plan.nx, plan.ny, 1), tags_current_(plan.nx, plan.ny, 1), tags_ahead_(plan.nx, plan.ny, 1) {}
+      zeros_(plan.nx, plan.ny, 1), tags_current_(plan.nx, plan.ny, 1), tags_ahead_(plan.nx, plan.ny, 1) {
+  if (plan.zdiff) zdiff_current_ = zdiff_ahead_ = golden::Plane(plan.nx, plan.ny, 1);
+}
 
 void TlmGradient::emit_current(const golden::Plane& ahead) {
   const golden::SliceControl& c = plan_.slices[static_cast<size_t>(current_slice_)];
@@ -31,6 +33,7 @@ void TlmGradient::emit_current(const golden::Plane& ahead) {
         if (skip_transparent_ && golden::sample_cannot_change_ray(plan_.r, centre, tag)) continue;
         if (stops_ && stops_->ray_stopped(frame_, static_cast<uint32_t>(current_slice_), x, y)) continue;
         golden::gather_neighbourhood(behind_, current_, ahead, c, x, y, n);
+        if (plan_.zdiff) n.z_difference = zdiff_current_.row(y)[x];
         const golden::Gradient g = golden::sample_gradient(plan_.r, c, n);
         b.gx[i] = static_cast<int16_t>(g.x);
         b.gy[i] = static_cast<int16_t>(g.y);
@@ -48,6 +51,7 @@ void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
       if (x >= plan_.nx) continue;
       row[x] = in.sample[static_cast<size_t>(k)];
       tags_ahead_.row(y_)[x] = in.vtag[static_cast<size_t>(k)];
+      if (plan_.zdiff) zdiff_ahead_.row(y_)[x] = in.zdiff[static_cast<size_t>(k)];
     }
     ++j_;
     if (in.f.beam_end) {
@@ -61,18 +65,21 @@ void TlmGradient::clock(const SampleBeat& in, GradientBeat& out) {
       if (zero) {
         ahead_.clear();
         tags_ahead_.clear();
+        if (plan_.zdiff) zdiff_ahead_.clear();
       }
       if (current_slice_ >= 0) emit_current(start ? zeros_ : ahead_);
       if (start) current_.clear();  // behind the new frame's first slice
       std::swap(behind_, current_);
       std::swap(current_, ahead_);
       std::swap(tags_current_, tags_ahead_);
+      std::swap(zdiff_current_, zdiff_ahead_);
       current_slice_ = static_cast<int>(plan_.tag_slice(in.tag));
       if (zero) {  // the frame's end: the next slice is the first of a frame
         current_slice_ = -1;
         behind_.clear();
         current_.clear();
         tags_current_.clear();
+        if (plan_.zdiff) zdiff_current_.clear();
       }
     }
   }

@@ -37,6 +37,9 @@ class TlmGradient final : public GradientIf {
   // The voxel tags of the current and ahead slices' samples (the centre's
   // tag travels with it; no tag of a neighbour is used).
   golden::Plane tags_current_, tags_ahead_;
+  // With VolumePro's z gradient (plan.zdiff): the interpolated z
+  // differences of those slices' samples (the centre's, like its tag).
+  golden::Plane zdiff_current_, zdiff_ahead_;
   int current_slice_ = -1;  // none yet in this frame
   int y_ = 0, j_ = 0;
   BeatQueue<GradientBeat> out_;

@@ -225,10 +225,11 @@ struct SampleCollect : golden::SampleProbe {
 // A noise volume of `size` seen along `dir`, unshaded, with the gradient
 // unit on or off: the scenes of the interpolation and gradient rings.
 // vtag_bits > 0: with voxel tags of that width (bela §III), labelled by
-// value bands and a box so that neighbouring voxels' tags differ.
+// value bands and a box so that neighbouring voxels' tags differ. voxel_z:
+// VolumePro's z gradient (z_gradient voxel_differences).
 inline const SampleFrame& sample_frame(const std::string& name, const std::array<int, 3>& size,
                                        const std::array<double, 3>& dir, const std::array<double, 3>& up, int S,
-                                       int seed, bool gradient, int vtag_bits = 0) {
+                                       int seed, bool gradient, int vtag_bits = 0, bool voxel_z = false) {
   std::ostringstream js;
   js << R"({"volume": {"synthetic": "noise", "size": [)" << size[0] << ", " << size[1] << ", " << size[2]
      << R"(], "seed": )" << seed << R"(}, "view": )" << direction_json(dir, up) << R"(, "supersampling": )" << S
@@ -240,6 +241,7 @@ inline const SampleFrame& sample_frame(const std::string& name, const std::array
        << R"({"tag": )" << top << R"(, "threshold": [0.3, 0.6]}, )"
        << R"({"tag": )" << (top + 1) / 2 << R"(, "box": {"min": [0, 0, 0], "max": [2, 3, 1]}}]})";
   }
+  if (voxel_z) js << R"(, "z_gradient": "voxel_differences")";
   js << "}";
   const std::string json = js.str();
   return cached_frame<SampleFrame>(json + (gradient ? " gradient" : ""), [&](SampleFrame& f) {
@@ -348,7 +350,7 @@ inline bool ends_stream(const std::vector<sysc::FramePlan>& plans, size_t fi) {
 
 // The frames back to back, frame i formed by plans[i] (its p, passes and
 // tags) from the voxels of frames[i]; tag(i, pass) is the tag its beats
-// carry. Passes and frames follow back to back; a frame that ends a stream
+// carry (pass >= 0: a priming pass's is 0, or junk). Passes and frames follow back to back; a frame that ends a stream
 // (ends_stream()) is followed by its zero pass (gradient unit on) and a
 // flush beam. A frame with shorter beams than the one before starts after
 // the difference in idle cycles (the next pass's beam 0 is the gradient
@@ -378,8 +380,12 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
     if (fi > 0) idle(plans[fi - 1].B - plan.B);
     const bool ends = ends_stream(plans, fi);
     const int passes = plan.passes_in_stream(ends);
-    for (int pass = 0; pass < passes; ++pass) {
-      const uint64_t pass_tag = tag(static_cast<int>(fi), pass);
+    for (int pass = plan.first_pass(); pass < passes; ++pass) {
+      // A priming pass (VolumePro's z gradient) gives no samples: its tag is
+      // never seen, and junk shows it.
+      const bool prime = plan.prime_pass(pass);
+      const uint64_t pass_tag =
+          prime ? (opt.junk ? rng.bits(tag_bits) : 0) : tag(static_cast<int>(fi), pass);
       const bool zero = plan.zero_pass(pass);
       const bool junk_weights = zero && opt.junk;
       const auto junk_wx = junk_weights ? static_cast<uint32_t>(rng.range(0, 256)) : 0u;
@@ -416,12 +422,12 @@ inline VoxelStream voxel_stream(const std::vector<const SampleFrame*>& frames,
               of.slice_end = true;
               due.push_back({s.beats.size() - 1, open.frame, open.pass, open.ny - 1, j, of, open.tag});
             }
-          } else {
+          } else if (!prime) {
             of.slice_start = y == 1;
             due.push_back({s.beats.size() - 1, static_cast<int>(fi), pass, y - 1, j, of, pass_tag});
           }
           if (st.f.beam_end && (y == 0 || y == plan.ny)) open.frame = -1;
-          if (st.f.beam_end && y == plan.ny - 1) open = {static_cast<int>(fi), pass, pass_tag, plan.ny};
+          if (st.f.beam_end && y == plan.ny - 1 && !prime) open = {static_cast<int>(fi), pass, pass_tag, plan.ny};
         }
     }
   }

@@ -34,11 +34,15 @@
 #include "Vcube4_gradient_ring_p2.h"
 #include "Vcube4_gradient_ring_p5.h"
 #include "Vcube4_gradient_ring_t4.h"
+#include "Vcube4_gradient_ring_z1.h"
+#include "Vcube4_gradient_ring_z4.h"
 #include "Vcube4_interp_ring_g1.h"
 #include "Vcube4_interp_ring_g2.h"
 #include "Vcube4_interp_ring_g4.h"
 #include "Vcube4_interp_ring_g5.h"
 #include "Vcube4_interp_ring_gt4.h"
+#include "Vcube4_interp_ring_gz1.h"
+#include "Vcube4_interp_ring_gz4.h"
 #include "golden/pipeline.hpp"
 #include "systemc/rtl/gradient_tag.hpp"
 #include "systemc/rtl/unit_streams.hpp"
@@ -72,8 +76,8 @@ constexpr RingParams kRingT4{4, 16};
 // Golden frames: every sample and its gradient (regs.gradient forced on).
 
 const SampleFrame& frame(const std::string& name, const std::array<int, 3>& size, const std::array<double, 3>& dir,
-                         const std::array<double, 3>& up, int S, int seed, int vtag_bits = 0) {
-  const SampleFrame& f = sample_frame(name, size, dir, up, S, seed, /*gradient=*/true, vtag_bits);
+                         const std::array<double, 3>& up, int S, int seed, int vtag_bits = 0, bool voxel_z = false) {
+  const SampleFrame& f = sample_frame(name, size, dir, up, S, seed, /*gradient=*/true, vtag_bits, voxel_z);
   EXPECT_EQ(f.regs.p.voxel_bits, kVoxelBits);
   EXPECT_EQ(f.regs.p.weight_bits, kWeightBits);
   EXPECT_EQ(f.regs.p.gradient_bits, kGradientBits);
@@ -83,6 +87,20 @@ const SampleFrame& frame(const std::string& name, const std::array<int, 3>& size
 // Frame fi's plan: the system's stream formation, with the ring's user tag
 // (61 apart from frame to frame).
 sysc::FramePlan plan_of(const SampleFrame& f, int p, size_t fi) { return sysc::FramePlan(f.regs, p, kUserTagBits, 61 * fi); }
+
+// VolumePro's z gradient: the interpolated voxel z difference of sample
+// (x, y) of slice k, from golden's functions on the frame's voxels (zero
+// outside the volume, as the stream reads them).
+bool voxel_z(const SampleFrame& f) { return f.regs.gradient && f.regs.z_gradient == g::ZGradient::VoxelDifferences; }
+int32_t expected_zdiff(const SampleFrame& f, int k, int y, int x) {
+  const g::SliceControl c = g::slice_control(f.regs, k);
+  std::array<int32_t, 8> d{};
+  for (int i = 0; i < 8; ++i) {
+    const int vx = x + (i & 1), vy = y + (i >> 1 & 1), z = c.z_voxel + (i >> 2);
+    d[static_cast<size_t>(i)] = g::voxel_z_difference(f.pv->at(vx, vy, z + 1), f.pv->at(vx, vy, z - 1));
+  }
+  return static_cast<int32_t>(g::interpolated_z_difference(d, c.wx, c.wy, c.wz, kWeightBits));
+}
 
 // The gradient ring's tag for input slice k: the plan's, except that the
 // zero slice (k = K), whose slice control the ring must not use, carries
@@ -112,6 +130,7 @@ struct SampleIn {
   uint64_t tag;
   std::vector<uint32_t> sample;  // direct mode: one per pipeline
   std::vector<uint32_t> vtag;    // direct mode: the samples' voxel tags
+  std::vector<int32_t> zdiff;    // direct mode: the samples' z differences (VolumePro's z gradient)
 };
 
 // A gradient every pipeline must emit in `cycle` (pipeline q: x = j*p + q).
@@ -159,13 +178,14 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
       const sysc::FramePlan& pl = plans[fi];
       const uint64_t beam = static_cast<uint64_t>(pl.B), slice = static_cast<uint64_t>(pl.ny) * beam;
       // K passes; a frame that ends a stream adds its zero pass and a flush beam.
-      s.expected_voxel_valid += slice * static_cast<uint64_t>(pl.K) + (ends_stream(plans, fi) ? slice + beam : 0);
+      s.expected_voxel_valid += slice * static_cast<uint64_t>(pl.K) + (ends_stream(plans, fi) ? slice + beam : 0) +
+                                (pl.zdiff ? slice : 0);  // the priming pass
     }
     s.last_voxel = v.last_input;
     s.beats = std::move(v.beats);
     for (const PassSample& e : v.samples)
       s.in.push_back({e.cycle, e.frame, e.k, e.y, e.j, e.f.beam_start, e.f.beam_end, e.f.slice_start, e.f.slice_end,
-                      e.tag, {}, {}});
+                      e.tag, {}, {}, {}});
   } else {
     uint64_t cycle = 0;
     for (size_t fi = 0; fi < frames.size(); ++fi) {
@@ -177,7 +197,7 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
         for (int y = 0; y < f.ny; ++y)
           for (int j = 0; j < B; ++j) {
             if (opt.stall > 0 && rng.chance(opt.stall)) cycle += rng.range(1, opt.max_gap);
-            SampleIn e{cycle++, static_cast<int>(fi), k, y, j, j == 0, j == B - 1, y == 0, y == f.ny - 1, tag, {}, {}};
+            SampleIn e{cycle++, static_cast<int>(fi), k, y, j, j == 0, j == B - 1, y == 0, y == f.ny - 1, tag, {}, {}, {}};
             for (int q = 0; q < p; ++q) {
               const int x = j * p + q;
               uint32_t v = 0;  // padding columns: zero (as the interpolation ring makes them)
@@ -190,8 +210,12 @@ Stream make_stream(const std::vector<const SampleFrame*>& frames, int p, const S
                 v = static_cast<uint32_t>(rng.bits(kVoxelBits));
                 if (opt.vtag_bits > 0) t = static_cast<uint32_t>(rng.bits(opt.vtag_bits));
               }
+              int32_t zd = 0;
+              if (voxel_z(f) && k < f.K && x < f.nx) zd = expected_zdiff(f, k, y, x);
+              if (voxel_z(f) && k == f.K && opt.junk) zd = static_cast<int32_t>(rng.bits(kVoxelBits + 1));
               e.sample.push_back(v);
               e.vtag.push_back(t);
+              e.zdiff.push_back(zd);
             }
             s.in.push_back(std::move(e));
           }
@@ -329,6 +353,7 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
       m.sample_i = v.sample_o;
       m.tag_i = v.tag_o;
       m.vtag_i = v.vtag_o;
+      m.zdiff_i = v.zdiff_o;
       // Its timing and samples, as docs/rtl-interp.md promises (checked here
       // only to tell an interpolation fault from a gradient one).
       for (int q = 0; q < p; ++q) {
@@ -347,6 +372,15 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
             fail(cycle, q, nullptr, "interpolation ring sample differs",
                  "x=" + std::to_string(x) + " y=" + std::to_string(in->y) + " k=" + std::to_string(in->k) +
                      " expected " + std::to_string(exp) + " got " + std::to_string(got));
+          if (voxel_z(f)) {
+            const int32_t zexp = expected_zdiff(f, in->k, in->y, x);
+            const auto zgot = static_cast<int32_t>(
+                cube4::rtl::sign_extend(get_bits(v.zdiff_o, q * (kVoxelBits + 1), kVoxelBits + 1), kVoxelBits + 1));
+            if (zexp != zgot)
+              fail(cycle, q, nullptr, "interpolation ring z difference differs",
+                   "x=" + std::to_string(x) + " y=" + std::to_string(in->y) + " k=" + std::to_string(in->k) +
+                       " expected " + std::to_string(zexp) + " got " + std::to_string(zgot));
+          }
         }
       }
     } else {
@@ -361,6 +395,9 @@ RunResult run(G& m, I* interp, int p, const RingParams& rp, const std::vector<co
         put_bits(m.sample_i, q * kVoxelBits, kVoxelBits, v ? in->sample[q] : rng.bits(kVoxelBits));
         put_bits(m.tag_i, q * kTagBits, kTagBits, v ? in->tag : rng.bits(kTagBits));
         if (vtag_bits > 0) put_bits(m.vtag_i, q * lane, lane, v ? in->vtag[q] : rng.bits(lane));
+        put_bits(m.zdiff_i, q * (kVoxelBits + 1), kVoxelBits + 1,
+                 v ? static_cast<uint64_t>(in->zdiff[q]) & ((uint64_t{1} << (kVoxelBits + 1)) - 1)
+                   : rng.bits(kVoxelBits + 1));
       }
     }
     if (in) {
@@ -532,6 +569,64 @@ TEST(RtlGradientRing, VoxelTagsTravelWithTheCentreSample) {
       }
     }
   std::printf("  %llu golden gradients and centre tags matched\n", static_cast<unsigned long long>(gradients));
+}
+
+// VolumePro's z gradient (z_gradient voxel_differences): the rings with
+// HasZDiff and HasVoxelZ, every view, S = 1, 2, 3, chained (the stream read
+// one slice ahead after its priming pass -> samples and their interpolated
+// z differences -> gradients with gz from them) without and with stalls
+// and junk, and direct, at p = 4 (padding columns) and p = 1. Every sample
+// and z difference of the interpolation ring and every gradient is
+// golden's; then frames back to back (each primed anew, some without a
+// zero pass between them).
+constexpr RingParams kRingZ4{4, 16}, kRingZ1{1, 24};  // rtl/groups/gradient.cmake
+
+template <class G, class I>
+uint64_t voxel_z_matrix(const RingParams& rp, int salt) {
+  uint64_t gradients = 0;
+  for (size_t v = 0; v < kViews.size(); ++v)
+    for (int S : {1, 2, 3}) {
+      const SampleFrame& f = frame(kViews[v].name, kSizes[(v + S) % kSizes.size()], kViews[v].dir, kViews[v].up, S,
+                                   static_cast<int>(80 + v), 0, /*voxel_z=*/true);
+      EXPECT_TRUE(voxel_z(f));
+      for (int mode = 0; mode < 3; ++mode) {
+        StreamOptions opt;
+        opt.chain = mode < 2;
+        opt.stall = mode == 0 ? 0 : 0.3;
+        opt.junk = mode > 0;
+        check_ring<G, I>(rp, {&f}, opt, salt + 10 * v + S + 100 * mode, &gradients);
+        if (::testing::Test::HasFailure()) return gradients;
+      }
+    }
+  return gradients;
+}
+
+TEST(RtlGradientRing, VoxelZDifferencesMatchGolden) {
+  Timer t("VolumePro's z gradient");
+  const uint64_t g4 = voxel_z_matrix<Vcube4_gradient_ring_z4, Vcube4_interp_ring_gz4>(kRingZ4, 9000);
+  if (::testing::Test::HasFailure()) return;
+  const uint64_t g1 = voxel_z_matrix<Vcube4_gradient_ring_z1, Vcube4_interp_ring_gz1>(kRingZ1, 9500);
+  if (::testing::Test::HasFailure()) return;
+  // The z differences must change the gradients (else the test proves little).
+  const SampleFrame& abc = frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 2, 95);
+  const SampleFrame& vz = frame("oblique", {7, 11, 10}, {0.7, -0.6, 1}, {0, 1, 0}, 2, 95, 0, true);
+  size_t differ = 0;
+  for (size_t i = 0; i < abc.gradients.size(); ++i) differ += abc.gradients[i].z != vz.gradients[i].z;
+  EXPECT_GT(differ, abc.gradients.size() / 4) << "the two z gradients hardly differ";
+  const std::vector<const SampleFrame*> frames = {
+      &frame("+z tilted", {9, 7, 6}, {0.35, -0.3, 1}, {0, 1, 0}, 2, 97, 0, true),
+      &frame("+z tilted again", {9, 7, 6}, {-0.2, 0.25, 1}, {0, 1, 0}, 1, 98, 0, true),
+      &frame("-y tilted", {12, 5, 8}, {-0.4, -1, -0.3}, {0, 0, 1}, 3, 99, 0, true)};
+  for (int mode = 0; mode < 2; ++mode) {
+    StreamOptions opt;
+    opt.stall = mode ? 0.3 : 0;
+    opt.junk = mode > 0;
+    check_ring<Vcube4_gradient_ring_z4, Vcube4_interp_ring_gz4>(kRingZ4, frames, opt, 9900 + mode);
+    check_ring<Vcube4_gradient_ring_z1, Vcube4_interp_ring_gz1>(kRingZ1, frames, opt, 9910 + mode);
+  }
+  std::printf("  %llu golden gradients (and their samples' z differences) matched; gz differs from the "
+              "12-neighbourhood's in %zu of %zu samples of one view\n",
+              static_cast<unsigned long long>(g4 + g1), differ, abc.gradients.size());
 }
 
 TEST(RtlGradientRing, P1MatchesGoldenGradients) {
