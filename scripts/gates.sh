@@ -74,6 +74,9 @@ extra=(
   "cube4_compose_node AlphaBits=8,AccGuardBits=0"
   "cube4_compose_node AlphaBits=12,AccGuardBits=0"
   "cube4_shade_unit HasShading=0,HasMagnitude=0"
+  "cube4_interp_unit HasZDiff=1"
+  "cube4_gradient HasVoxelZ=1"
+  "cube4_gradient_unit HasVoxelZ=1"
 )
 
 tmp=$(mktemp -d)
