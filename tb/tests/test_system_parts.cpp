@@ -2,7 +2,10 @@
 // the stream former's address generation and de-skew, the stream tag.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "golden/permuted_volume.hpp"
 #include "golden/pipeline.hpp"
@@ -13,6 +16,12 @@
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/voxel_memory.hpp"
 #include "systemc/tlm/tlm_addr.hpp"
+#include "systemc/tlm/tlm_gradient.hpp"
+#include "systemc/tlm/tlm_interp.hpp"
+#include "golden/host_driver.hpp"
+#include "golden/renderers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
 #if CUBE4_TEST_RTL
 // verilated.h calls sc_time_stamp() unqualified once SystemC is included.
 #include <systemc>
@@ -94,6 +103,100 @@ TEST(StreamFormer, DeskewedBeamsAreThePermutedVolume) {
         EXPECT_TRUE(former.done());
       }
   EXPECT_GT(checked, 100000);
+}
+
+// VolumePro's z gradient (docs/rtl-interp-zdiff.md): the stream former
+// primes each frame with voxel slice 0 and then reads one slice ahead
+// (z_voxel + 1 when wz = 0, z_voxel + 2 otherwise, zero past the volume),
+// and the clocked TLM interpolation and gradient units fed that stream give
+// every sample and gradient golden render_fixed() gives. In the unit label,
+// so that the sanitizer build runs the TLM units' z-difference path.
+struct GradientCollect : golden::SampleProbe {
+  int nx, ny;
+  std::vector<uint32_t> value;
+  std::vector<golden::Gradient> gradient;
+  GradientCollect(int x, int y, int K) : nx(x), ny(y), value(static_cast<size_t>(x) * y * K), gradient(value.size()) {}
+  size_t index(int k, int y, int x) const { return (static_cast<size_t>(k) * ny + y) * nx + x; }
+  void sample(int x, int y, const golden::SliceControl& c, uint32_t v, const golden::Gradient& g) override {
+    value[index(c.k, y, x)] = v;
+    gradient[index(c.k, y, x)] = g;
+  }
+};
+
+TEST(StreamFormer, VoxelZGradientPrimesAndReadsOneSliceAheadForTheClockedTlmUnits) {
+  for (int S : {1, 2, 3})
+    for (int p : {1, 3, 4}) {
+      SCOPED_TRACE("S = " + std::to_string(S) + ", p = " + std::to_string(p));
+      const golden::Scene scene = golden::parse_scene(
+          R"({"volume": {"synthetic": "noise", "size": [9, 7, 6], "seed": 5}, "view": {"direction": [0.3, -0.4, 1]},
+              "supersampling": )" + std::to_string(S) + R"(, "z_gradient": "voxel_differences"})",
+          "zdiff.json");
+      const golden::Volume vol = golden::load_volume(scene.volume, scene.precision.voxel_bits, ".");
+      golden::Registers r = golden::program_host(scene, vol).regs;
+      r.gradient = true;
+      const golden::PermutedVolume pv(vol, r.perm, r.flip);
+      const sysc::FramePlan plan(r, p);
+      ASSERT_TRUE(plan.zdiff);
+      ASSERT_EQ(plan.first_pass(), -1);
+      sysc::VoxelMemory mem(vol, p);
+      sysc::TlmAddr addr(mem.layout(), {r.perm, r.flip});
+      sysc::StreamFormer former(plan, mem, addr);
+      sysc::TlmInterp interp(plan);
+      sysc::TlmGradient grad(plan);
+      GradientCollect want(plan.nx, plan.ny, plan.K);
+      golden::FixedOptions o;
+      o.probe = &want;
+      golden::render_fixed(vol, r, o);
+      std::vector<int> seen(want.value.size(), 0);
+      auto collect = [&](const sysc::GradientBeat& g) {
+        if (!g.valid) return;
+        for (int k = 0; k < p; ++k) {
+          const int x = g.x + k;
+          if (x >= plan.nx) continue;
+          const size_t i = want.index(static_cast<int>(g.slice), g.y, x);
+          ++seen[i];
+          ASSERT_EQ(g.sample[static_cast<size_t>(k)], want.value[i]) << "slice " << g.slice << " (" << x << ", " << g.y << ")";
+          const golden::Gradient got{g.gx[static_cast<size_t>(k)], g.gy[static_cast<size_t>(k)], g.gz[static_cast<size_t>(k)]};
+          ASSERT_EQ(got, want.gradient[i]) << "slice " << g.slice << " (" << x << ", " << g.y << ")";
+        }
+      };
+      for (int pass = plan.first_pass(); pass < plan.passes; ++pass)
+        for (int y = 0; y < plan.beams(pass + 1 == plan.passes); ++y)
+          for (int j = 0; j < plan.B; ++j) {
+            const sysc::VoxelBeat b = former.next();
+            ASSERT_TRUE(b.valid);
+            ASSERT_EQ(b.f.prime, pass == -1 && y < plan.ny);
+            // Slice 0 first, then one ahead of the 12-neighbourhood's stream.
+            int z = plan.nz;
+            if (pass == -1) {
+              z = 0;
+            } else if (pass < plan.K) {
+              const golden::SliceControl c = golden::slice_control(r, pass);
+              z = std::min(plan.nz, c.z_voxel + (c.wz != 0 ? 2 : 1));
+            }
+            ASSERT_EQ(plan.pass_voxel_slice(pass), z);
+            for (int k = 0; k < p; ++k)
+              ASSERT_EQ(b.voxel[static_cast<size_t>(k)], y < plan.ny ? pv.at(j * p + k, y, z) : 0)
+                  << "pass " << pass << " (" << j * p + k << ", " << y << ")";
+            sysc::SampleBeat sb;
+            interp.clock(b, sb);
+            sysc::GradientBeat gb;
+            grad.clock(sb, gb);
+            collect(gb);
+            if (::testing::Test::HasFatalFailure()) return;
+          }
+      EXPECT_FALSE(former.next().valid);
+      // Drain the units' queues (their latency is a pass).
+      for (int i = 0; i < 4 * plan.ny * plan.B; ++i) {
+        sysc::SampleBeat sb;
+        interp.clock(sysc::VoxelBeat{}, sb);
+        sysc::GradientBeat gb;
+        grad.clock(sb, gb);
+        collect(gb);
+        if (::testing::Test::HasFatalFailure()) return;
+      }
+      for (size_t i = 0; i < seen.size(); ++i) ASSERT_EQ(seen[i], 1) << "sample " << i;
+    }
 }
 
 TEST(FramePlan, TagCarriesSliceZeroFlagAndRealignFields) {
