@@ -66,18 +66,27 @@ struct SkewAddress {
 };
 
 // A layout's word strides within a module: per row (y) and per slice (z).
+// shift: log2 p when p is a power of two, else -1.
 struct SkewStrides {
   int p = 1;
   int64_t row = 1, slice = 1;
+  int shift = -1;
 };
 constexpr SkewStrides skew_strides(const SkewLayout& l) {
-  return {l.p, l.blocks(0), int64_t{l.blocks(0)} * l.padded(1)};
+  int shift = -1;
+  if ((l.p & (l.p - 1)) == 0)
+    for (shift = 0; (1 << shift) < l.p;) ++shift;
+  return {l.p, l.blocks(0), int64_t{l.blocks(0)} * l.padded(1), shift};
 }
 
 // Where voxel (x, y, z) of the padded volume is stored (object coordinates,
 // 0 <= x < P_x, ...). The strides' form lets a caller that places many
 // voxels work them out once.
 constexpr SkewAddress skew_address(const SkewStrides& s, int x, int y, int z) {
+  // The coordinates are not negative, so for a power-of-two p a mask and a
+  // shift are the remainder and the quotient (the divisions were most of a
+  // clocked TLM frame's address generation).
+  if (s.shift >= 0) return {(x + y + z) & (s.p - 1), (x >> s.shift) + s.row * y + s.slice * z};
   return {(x + y + z) % s.p, x / s.p + s.row * y + s.slice * z};
 }
 constexpr SkewAddress skew_address(const SkewLayout& l, int x, int y, int z) {

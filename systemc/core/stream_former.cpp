@@ -8,11 +8,11 @@ namespace cube4::sysc {
 StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, AddrIf& addr, int frames)
     : plan_(plan), mem_(mem), addr_(addr), frames_(frames) {
   at_.pass = plan_.first_pass();
+  for (int pass = plan_.first_pass(); pass < plan_.passes; ++pass) slices_.push_back(plan_.pass_voxel_slice(pass));
   // The first beat reads: issue it now, so its access arrives with it.
   const Pos first = next_read(at_);
   if (first.frame < frames_) {
-    const int z = plan_.pass_voxel_slice(first.pass);
-    addr_.clock(request_for(first), first.j, first.y, z);
+    addr_.clock(request_for(first), first.j, first.y, slice(first.pass));
   }
 }
 
@@ -41,9 +41,9 @@ AddrRequest StreamFormer::request_for(const Pos& p) const {
   r.issue = true;
   if (p.y != plan_.ny - 1 || p.j != plan_.B - 1) return r;  // not a slice's last partial beam
   // The next pass that reads, in this frame: the same slice again?
-  const int z = plan_.pass_voxel_slice(p.pass);
+  const int z = slice(p.pass);
   for (int pass = p.pass + 1; pass < plan_.passes_in_stream(p.frame + 1 == frames_); ++pass) {
-    const int zn = plan_.pass_voxel_slice(pass);
+    const int zn = slice(pass);
     if (zn < plan_.nz) {
       r.repeat_slice = zn == z;
       return r;
@@ -73,14 +73,14 @@ VoxelBeat StreamFormer::next() {
     req = request_for(at_);
     nj = at_.j;
     ny = at_.y;
-    nz = plan_.pass_voxel_slice(at_.pass);
+    nz = slice(at_.pass);
   }
   const AddrResult& a = addr_.clock(req, nj, ny, nz);
   if (const AddrResult* soon = addr_.upcoming())
     for (int m = 0; m < plan_.p; ++m) mem_.prefetch(m, soon->access.module_index[static_cast<size_t>(m)]);
   mem_.begin_cycle();
   if (reads(cur)) {
-    const int z = plan_.pass_voxel_slice(cur.pass);
+    const int z = slice(cur.pass);
     if (!a.valid || a.j != cur.j || a.y != cur.y || a.z != z)
       throw std::logic_error("address generation (" + std::string(level_name(addr_.level())) + "): expected partial beam (j " +
                              std::to_string(cur.j) + ", y " + std::to_string(cur.y) + ", z " + std::to_string(z) +

@@ -10,6 +10,7 @@
 // ahead.
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include "systemc/core/beats.hpp"
 #include "systemc/core/frame_plan.hpp"
@@ -42,7 +43,10 @@ class StreamFormer {
     int frame = 0, pass = 0, y = 0, j = 0;
   };
   Pos following(Pos p) const;
-  bool reads(const Pos& p) const { return p.frame < frames_ && plan_.step(p.pass, p.y, p.j).reads; }
+  // FramePlan::pass_voxel_slice(pass), kept: a beat asks for it several times.
+  int slice(int pass) const { return slices_[static_cast<size_t>(pass - plan_.first_pass())]; }
+  // FramePlan::step(...).reads.
+  bool reads(const Pos& p) const { return p.frame < frames_ && p.y < plan_.ny && slice(p.pass) < plan_.nz; }
   // The walk's controls that go with issuing the read at p.
   AddrRequest request_for(const Pos& p) const;
   // The next position that reads, from p on (p itself included).
@@ -54,6 +58,7 @@ class StreamFormer {
   int frames_;
   Pos at_;
   uint64_t beats_ = 0;
+  std::vector<int> slices_;  // of passes first_pass() .. passes - 1
 };
 
 }  // namespace cube4::sysc
