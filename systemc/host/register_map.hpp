@@ -294,8 +294,8 @@ inline constexpr Register kListed[] = {
      "bit 0 `gradient`, 1 `magnitude`, 2 `shading`, 3 `specular`, 4 `gm_opacity`, 5 `gm_diffuse`, "
      "6 `gm_specular`, bits 9:8 `blend` (0 composite, 1 MIP, 2 MinIP; 3 is out of range), "
      "bit 12 `crop_enabled`, bit 13 `cut_enabled`, bit 14 `window_enabled` (a block of a partitioned volume), "
-     "bit 15 `z_gradient` (0 the 12-neighbourhood, 1 VolumePro's interpolated voxel differences: loosely timed "
-     "TLM only so far), bit 16 `perspective` (Cube-4's perspective projection: X_START … Y_STEP then give ray "
+     "bit 15 `z_gradient` (0 the 12-neighbourhood, 1 VolumePro's interpolated voxel differences: the rings "
+     "built with HasZDiff and HasVoxelZ, the stream primed each frame; docs/rtl-interp-zdiff.md), bit 16 `perspective` (Cube-4's perspective projection: X_START … Y_STEP then give ray "
      "0's position per slice; docs/perspective.md)"},
     // Perspective: the rays' spacing per sample slice (golden Registers::ray_spacing()).
     {"SCALE_START", 0x150, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width,
