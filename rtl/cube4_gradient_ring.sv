@@ -83,7 +83,7 @@ module cube4_gradient_ring #(
   output logic [NumPipes*UserTagBits-1:0]  tag_o
 );
 
-  localparam int unsigned LinkBits = 5 * VoxelBits;
+  localparam int unsigned LinkBits = HasVoxelZ ? VoxelBits : 5 * VoxelBits;
 
   // Links as packed vectors (yosys 0.23: no unpacked wire arrays).
   logic [NumPipes*LinkBits-1:0] link, link_now, link_prev;

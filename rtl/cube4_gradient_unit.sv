@@ -83,9 +83,10 @@
 // two's complement). It takes the voxel tag's way (the centre's) and gives
 // gz = C(zdiff) of the centre sample (cube4_gradient with HasVoxelZ; golden
 // gradient_voxel_z()): the difference waits a slice in the slice delay as
-// the centre sample does. The behind and ahead rows are still stored and
-// linked (the centre and the y neighbours come from them) but not
-// interpolated. Without HasVoxelZ zdiff_i is ignored.
+// the centre sample does. No behind or ahead row is kept or linked then:
+// the slice delay holds the ahead slice's samples alone (read a lap later
+// as the current slice's), a row and a link are the current sample, and
+// no ABC lerp is built. Without HasVoxelZ zdiff_i is ignored.
 //
 // Output per gradient (valid_o): gx_o, gy_o, gz_o; sample_o = S(x, y, s)
 // (the centre sample, for the shader) and vtag_o its voxel tag;
@@ -126,7 +127,8 @@
 //   VoxelTagBits          - voxel tag width (Precision::tag_bits, 0: none)
 //   HasVoxelZ             - VolumePro's z gradient (below)
 //   LinkBits              - (derived) link width: five samples, [0] current
-//                           row y, [1]/[2] ahead rows, [3]/[4] behind rows
+//                           row y, [1]/[2] ahead rows, [3]/[4] behind rows;
+//                           with HasVoxelZ the current row's sample alone
 //   VTagPortBits          - (derived) vtag_i/vtag_o width, at least one bit
 `include "cube4_pkg.sv"
 
@@ -147,7 +149,7 @@ module cube4_gradient_unit #(
   localparam int unsigned CtrlBits          = 4 * (WeightBits + 1) + SupersamplingBits + 2,
   localparam int unsigned TagBits           = CtrlBits + UserTagBits,
   localparam int unsigned DimBits           = $clog2(MaxDim + NumPipes),
-  localparam int unsigned LinkBits          = 5 * VoxelBits,
+  localparam int unsigned LinkBits          = HasVoxelZ ? VoxelBits : 5 * VoxelBits,
   localparam int unsigned VTagPortBits      = VoxelTagBits > 0 ? VoxelTagBits : 1
 ) (
   input  logic                           clk_i,
@@ -306,32 +308,46 @@ module cube4_gradient_unit #(
   // -------------------------------------------------------------------------
   // Storage. A row is {behind, current, ahead} = slices {s-1, s, s+1} of one
   // column x and one beam: [0 +: V] ahead, [V +: V] current, [2V +: V] behind.
-  logic [V-1:0]   cur_new, behind_new;
-  logic [2*V-1:0] slice_rdata;   // {behind, current} of (x, y+1)
-  logic [3*V-1:0] row0, row1, row2;  // beams y+1, y, y-1
-  logic [6*V-1:0] beam_rdata;    // {row2, row1}
+  // With HasVoxelZ only the current sample is kept (z needs no neighbour
+  // slice): a row is that sample, and the slice delay holds the ahead
+  // slice's samples alone, read one lap later as the current slice's.
+  localparam int unsigned RowBits   = HasVoxelZ ? V : 3 * V;
+  localparam int unsigned SliceBits = HasVoxelZ ? V : 2 * V;
+  logic [V-1:0]         cur_new;
+  logic [SliceBits-1:0] slice_rdata, slice_wdata;
+  logic [RowBits-1:0]   row_new;             // this step's row, beam y+1
+  logic [RowBits-1:0]   row0, row1, row2;    // beams y+1, y, y-1
+  logic [2*RowBits-1:0] beam_rdata;          // {row2, row1}
 
   // The zero slice and the zero beam carry zeros. A frame's first slice is
   // the zero slice ahead of the previous frame's last: its samples go
   // into the slice delay (as the slice current next) with a zero slice
   // behind them, but the column sees zeros ahead. After a reset or a zero
   // slice the current samples are the (zero) slice behind slice 0.
-  logic [V-1:0]   ahead_col, ahead_w, cur_w;
-  logic [3*V-1:0] row1_w;  // the row written above this step's (zero above beam 0)
-  assign ahead_w    = (zb_active || in_zero) ? '0 : sample_i;
-  assign ahead_col  = in_start ? '0 : ahead_w;
-  assign cur_new    = (zb_active || first_q) ? '0 : slice_rdata[0 +: V];
-  assign cur_w      = in_start ? '0 : cur_new;
-  assign behind_new = zb_active ? '0 : slice_rdata[V +: V];
+  logic [V-1:0]         ahead_w;
+  logic [RowBits-1:0]   row1_w;  // the row written above this step's (zero above beam 0)
+  assign ahead_w = (zb_active || in_zero) ? '0 : sample_i;
+  assign cur_new = (zb_active || first_q) ? '0 : slice_rdata[0 +: V];
+  if (HasVoxelZ) begin : g_rows_z
+    assign slice_wdata = ahead_w;
+    assign row_new     = cur_new;
+  end else begin : g_rows_abc
+    logic [V-1:0] ahead_col, cur_w, behind_new;
+    assign ahead_col   = in_start ? '0 : ahead_w;
+    assign cur_w       = in_start ? '0 : cur_new;
+    assign behind_new  = zb_active ? '0 : slice_rdata[V +: V];
+    assign slice_wdata = {cur_w, ahead_w};
+    assign row_new     = {behind_new, cur_new, ahead_col};
+  end
   // A draining step's column has the zero border for beam y+1.
-  assign row0       = drain ? '0 : {behind_new, cur_new, ahead_col};
-  assign row1_w     = (step_in && y_step == '0) ? '0 : row1;
+  assign row0   = drain ? '0 : row_new;
+  assign row1_w = (step_in && y_step == '0) ? '0 : row1;
 
   // Slice delay: one entry per sample of beams 0 .. ny-1, one lap per slice
   // (ended by the slice's last sample). Writing {current, ahead} and reading
   // one lap later gives {behind, current}: two slice FIFOs in one RAM.
   cube4_delay_ram #(
-    .Width   (2 * V),
+    .Width   (SliceBits),
     .MaxDepth(SliceDepth)
   ) u_slice_delay (
     .clk_i    (clk_i),
@@ -341,7 +357,7 @@ module cube4_gradient_unit #(
     .advance_i(step_in),
     .last_i   (slice_end_i && beam_end_i),
     .write_i  (1'b1),
-    .wdata_i  ({cur_w, ahead_w}),
+    .wdata_i  (slice_wdata),
     .rdata_o  (slice_rdata)
   );
 
@@ -350,7 +366,7 @@ module cube4_gradient_unit #(
   // FIFOs in one RAM. Beam 0 is written with a zero row above it, and a
   // draining step writes beam 0's own row, not its column's zero border.
   cube4_delay_ram #(
-    .Width   (6 * V),
+    .Width   (2 * RowBits),
     .MaxDepth(BeamDepth)
   ) u_beam_delay (
     .clk_i    (clk_i),
@@ -360,27 +376,40 @@ module cube4_gradient_unit #(
     .advance_i(step),
     .last_i   (s_beam_end),
     .write_i  (1'b1),
-    .wdata_i  ({row1_w, drain ? {behind_new, cur_new, ahead_col} : row0}),
+    .wdata_i  ({row1_w, drain ? row_new : row0}),
     .rdata_o  (beam_rdata)
   );
-  assign row1 = beam_rdata[0 +: 3*V];
-  assign row2 = beam_rdata[3*V +: 3*V];
+  assign row1 = beam_rdata[0 +: RowBits];
+  assign row2 = beam_rdata[RowBits +: RowBits];
 
   // This step's column for output beam y: the current sample of rows
   // y-1, y, y+1 and the ahead and behind row pairs of the re-aligned
   // position (rows y+base, y+base+1).
-  logic [V-1:0]          c_up, c_mid, c_down, a0, a1, b0, b1;
+  localparam int unsigned ColBits = LinkBits + 2 * V;
+  logic [V-1:0]          c_up, c_mid, c_down;
   logic [LinkBits-1:0]   link_d;
-  logic [7*V-1:0]        col_d;
+  logic [ColBits-1:0]    col_d;
 
-  assign c_up   = row2[V +: V];
-  assign c_mid  = row1[V +: V];
-  assign c_down = row0[V +: V];
-  assign a0     = ahead_my  ? row2[0 +: V]   : row1[0 +: V];
-  assign a1     = ahead_my  ? row1[0 +: V]   : row0[0 +: V];
-  assign b0     = behind_my ? row2[2*V +: V] : row1[2*V +: V];
-  assign b1     = behind_my ? row1[2*V +: V] : row0[2*V +: V];
-  assign link_d = {b1, b0, a1, a0, c_mid};
+  if (HasVoxelZ) begin : g_col_z
+    assign c_up   = row2;
+    assign c_mid  = row1;
+    assign c_down = row0;
+    assign link_d = c_mid;
+    // Waiver: the re-alignment's bases and a frame's start (zeros ahead,
+    // none behind) serve the 12-neighbourhood's ahead and behind rows only.
+    logic unused_abc_ctl;
+    assign unused_abc_ctl = ^{ahead_my, behind_my, ahead_mx, behind_mx, in_start};
+  end else begin : g_col_abc
+    logic [V-1:0] a0, a1, b0, b1;
+    assign c_up   = row2[V +: V];
+    assign c_mid  = row1[V +: V];
+    assign c_down = row0[V +: V];
+    assign a0     = ahead_my  ? row2[0 +: V]   : row1[0 +: V];
+    assign a1     = ahead_my  ? row1[0 +: V]   : row0[0 +: V];
+    assign b0     = behind_my ? row2[2*V +: V] : row1[2*V +: V];
+    assign b1     = behind_my ? row1[2*V +: V] : row0[2*V +: V];
+    assign link_d = {b1, b0, a1, a0, c_mid};
+  end
   assign col_d  = {c_down, c_up, link_d};
   assign link_now_o = link_d;
 
@@ -388,7 +417,7 @@ module cube4_gradient_unit #(
   // Alignment register: holds the column until its x+1 neighbour is
   // available (the next step), or one cycle if it ends a beam (x+1 = B*p).
   logic                  valid_q, valid_d, fire;
-  logic [7*V-1:0]        col_q;
+  logic [ColBits-1:0]    col_q;
   logic                  beam_start_q, beam_end_q, slice_start_q, slice_end_q, out_q;
   logic [BeamBits-1:0]   j_col_q;
   logic [DimBits-1:0]    y_col_q;
@@ -453,12 +482,17 @@ module cube4_gradient_unit #(
 
   // 2x2 packed [0] (base, base), [1] x+1, [2] y+1, [3] both; the x pair is
   // (x, x+1) for base 0 and (x-1, x) for base -1.
-  assign ahead_nb  = ahead_mx
-      ? {own[2*V +: V], left[2*V +: V], own[V +: V], left[V +: V]}
-      : {right[2*V +: V], own[2*V +: V], right[V +: V], own[V +: V]};
-  assign behind_nb = behind_mx
-      ? {own[4*V +: V], left[4*V +: V], own[3*V +: V], left[3*V +: V]}
-      : {right[4*V +: V], own[4*V +: V], right[3*V +: V], own[3*V +: V]};
+  if (HasVoxelZ) begin : g_nb_z
+    assign ahead_nb  = '0;
+    assign behind_nb = '0;
+  end else begin : g_nb_abc
+    assign ahead_nb  = ahead_mx
+        ? {own[2*V +: V], left[2*V +: V], own[V +: V], left[V +: V]}
+        : {right[2*V +: V], own[2*V +: V], right[V +: V], own[V +: V]};
+    assign behind_nb = behind_mx
+        ? {own[4*V +: V], left[4*V +: V], own[3*V +: V], left[3*V +: V]}
+        : {right[4*V +: V], own[4*V +: V], right[3*V +: V], own[3*V +: V]};
+  end
   assign grad_valid = fire && out_q;
 
   cube4_gradient #(
@@ -474,8 +508,8 @@ module cube4_gradient_unit #(
     .valid_i        (grad_valid),
     .left_i         (left[0 +: V]),
     .right_i        (right[0 +: V]),
-    .up_i           (col_q[5*V +: V]),
-    .down_i         (col_q[6*V +: V]),
+    .up_i           (col_q[LinkBits +: V]),
+    .down_i         (col_q[LinkBits + V +: V]),
     .behind_i       (behind_nb),
     .ahead_i        (ahead_nb),
     .behind_wx_i    ({1'b0, behind_wx}),
