@@ -252,7 +252,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
       u.shade = std::make_unique<TlmShade>(up, skip_transparent, stops);
     }
     if (rtl[3])
-      u.composite = make_rtl_composite(up, pixels, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, polygons);
+      u.composite = make_rtl_composite(up, pixels, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, polygons, cfg.frames);
     else
       u.composite = std::move(tlm_composite);
     u.checker = checker.get();

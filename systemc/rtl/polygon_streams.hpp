@@ -61,13 +61,15 @@ void drive_composite_polygons(M& m, const PolygonBeat& b, int pipes, int alpha_b
 
 // Pipeline `lane`'s slab lines in the order its decoder reads them: slice
 // by slice, beam by beam (an empty slab image as cleared lines, which
-// decode to its blank pixels). The window shows the five words at the read
+// decode to its blank pixels), and again for each of `frames` frames of
+// the view streamed back to back. The window shows the five words at the read
 // position; at each clock edge the position advances by the words the
 // decoder consumed, and moves to the next line's start at an edge that
 // ends a cycle with slab_line_o high.
 class SlabLineSource {
  public:
-  SlabLineSource(const golden::PolygonFrame& f, int lane, int pipes) : f_(f), lane_(lane) {
+  SlabLineSource(const golden::PolygonFrame& f, int lane, int pipes, int frames = 1)
+      : f_(f), lane_(lane), frames_(frames) {
     for (const golden::SlabImage& s : f.slabs)
       if (s.lanes() != pipes)
         throw std::logic_error("slab images of " + std::to_string(s.lanes()) + " lanes for a ring of " +
@@ -96,8 +98,12 @@ class SlabLineSource {
  private:
   void advance() {
     const int ny = f_.slabs.empty() ? 0 : f_.slabs.front().beams();
+    if (ny > 0 && k_ == static_cast<int>(f_.slabs.size()) && frame_ + 1 < frames_) {
+      k_ = 0;  // the next frame of the view: the same slab images
+      ++frame_;
+    }
     if (ny == 0 || k_ >= static_cast<int>(f_.slabs.size()))
-      throw std::logic_error("slab line source: the decoder started more lines than the frame has");
+      throw std::logic_error("slab line source: the decoder started more lines than the frames have");
     const golden::SlabImage& s = f_.slabs[static_cast<size_t>(k_)];
     if (s.empty()) {
       cleared_ = golden::rle_clear(s.lane_width(lane_));
@@ -114,8 +120,8 @@ class SlabLineSource {
   }
 
   const golden::PolygonFrame& f_;
-  int lane_;
-  int k_ = 0, y_ = 0;  // the next line's slice and beam
+  int lane_, frames_;
+  int k_ = 0, y_ = 0, frame_ = 0;  // the next line's slice, beam and frame
   golden::RleWords line_;  // none before the first line
   golden::RleLine cleared_;
   size_t at_ = 0, started_ = 0;

@@ -23,10 +23,11 @@ class RtlComposite final : public CompositeIf {
   static constexpr int kPosBits = golden::kPositionBits, kLatency = 7;
 
   // polygons: the frame's polygon images (Cube-5), for a ring verilated
-  // with HasPolygons; null for a frame without polygons.
+  // with HasPolygons; null for a frame without polygons. frames: how many
+  // frames of the view stream back to back (each reads the same slab lines).
   RtlComposite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx, const TraceWindow& trace,
-               const golden::PolygonFrame* polygons = nullptr)
-      : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite"), poly_(polygons) {
+               const golden::PolygonFrame* polygons = nullptr, int frames = 1)
+      : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite"), poly_(polygons), frames_(frames) {
     rtl::drive_composite_registers(*m_, plan.r, poly_ != nullptr);
     if (poly_) start_polygons();
   }
@@ -82,7 +83,7 @@ class RtlComposite final : public CompositeIf {
       bp.rgba[i * 4 + 2] = px.b;
       bp.rgba[i * 4 + 3] = px.a;
     }
-    for (int q = 0; q < plan_.p; ++q) slabs_.emplace_back(*poly_, q, plan_.p);
+    for (int q = 0; q < plan_.p; ++q) slabs_.emplace_back(*poly_, q, plan_.p, frames_);
     consumed_.assign(slabs_.size(), 0);
     next_line_.assign(slabs_.size(), false);
   }
@@ -109,6 +110,7 @@ class RtlComposite final : public CompositeIf {
   rtl::CompositeControl control_;
   int drain_ = 0;
   const golden::PolygonFrame* poly_;
+  int frames_;
   std::vector<rtl::SlabLineSource> slabs_;
   std::vector<int> consumed_;
   std::vector<bool> next_line_;

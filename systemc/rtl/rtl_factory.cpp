@@ -248,12 +248,12 @@ std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext&
 
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
                                                 const TraceWindow& trace, bool full,
-                                                const golden::PolygonFrame* polygons) {
+                                                const golden::PolygonFrame* polygons, int frames) {
   if (polygons) {
     require_rtl_polygons(plan.p);
     switch (plan.p) {
 #define CUBE4_RTL_POLY_P(p) \
-  case p: return std::make_unique<RtlComposite<Vsys_composite_poly_p##p>>(plan, pixels, ctx, trace, polygons);
+  case p: return std::make_unique<RtlComposite<Vsys_composite_poly_p##p>>(plan, pixels, ctx, trace, polygons, frames);
 #include "rtl_poly_variant_list.inc"
 #undef CUBE4_RTL_POLY_P
     }

@@ -81,10 +81,10 @@ std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext&
 // Scenes without a cut plane get the ring without cut-plane hardware
 // (HasCutPlane = 0): that logic is not simulated. A frame with polygons
 // gets the ring with polygon hardware (and cut plane), fed the frame's
-// polygon images.
+// polygon images once per frame of a stream of `frames`.
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
                                                 const TraceWindow& trace, bool full = false,
-                                                const golden::PolygonFrame* polygons = nullptr);
+                                                const golden::PolygonFrame* polygons = nullptr, int frames = 1);
 
 // The composition network's units (systemc/core/compose_network.hpp),
 // verilated once at rtl_precision(); `index` names the node.

@@ -33,7 +33,7 @@ std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, con
   unavailable();
 }
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, VerilatedContext&, const TraceWindow&,
-                                                bool, const golden::PolygonFrame*) {
+                                                bool, const golden::PolygonFrame*, int) {
   unavailable();
 }
 

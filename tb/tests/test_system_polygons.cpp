@@ -293,6 +293,32 @@ TEST(SystemPolygons, BrainProbeTranslucentRtlP4) {
   run_hybrid_rtl(scene_file("brain_probe_translucent.json"), 4, kRtl);
 }
 
+// Frames of the view back to back through the RTL compositing ring with
+// polygon hardware: each frame's decoders read the same slab lines again
+// (they ran out after the first frame until 2026-12-06, an internal error).
+// Every stream checked and the last frame's base plane golden's, with the
+// 12-neighbourhood and with VolumePro's z gradient (a priming pass before
+// each frame).
+TEST(SystemPolygons, FramesBackToBackRtl) {
+  if (!CUBE4_TEST_RTL) GTEST_SKIP() << "a build without RTL";
+  for (const bool voxel_z : {false, true}) {
+    SCOPED_TRACE(voxel_z ? "voxel-difference z gradient" : "12-neighbourhood");
+    const std::string d = kDirections[0];
+    std::string json = small_scene(d, up_for(d), kMeshes);
+    if (voxel_z) json.insert(json.size() - 1, R"(, "z_gradient": "voxel_differences")");
+    Hybrid h = hybrid(setup(json));
+    sysc::SystemConfig cfg;
+    cfg.p = 4;
+    cfg.levels = kRtl;
+    cfg.check = true;
+    cfg.frames = 3;
+    const sysc::SystemResult res = sysc::run_frame(h.s.host.regs, h.s.volume, cfg, {}, h.polygons());
+    EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
+    expect_same_plane(golden_plane(h, h.polygons()), res.plane);
+    EXPECT_GT(res.measured_interval, 0u);
+  }
+}
+
 // Through the host interface: registers (the margins too) and volume over
 // the bus, the polygon frame handed to the machine; the base plane read
 // back over the bus equals golden's with the polygons.
