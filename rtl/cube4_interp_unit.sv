@@ -71,8 +71,9 @@
 // Preconditions: every pass is complete (ny >= 1 beams of the same
 // ceil(nx/p) partial beams, and a flush beam has the pass's length);
 // ceil(nx/p) <= BeamDepth; ny * ceil(nx/p) <= SliceDepth; the stream carries
-// z_voxel whenever wz = 0 (and z_voxel + 1 otherwise): golden z_weight(k) = 0
-// for k mod S = 0, so every voxel slice pair starts with such a pass, which
+// z_voxel whenever wz = 0 (and z_voxel + 1 otherwise; with HasZDiff one
+// slice more, after the frame's priming pass): golden z_weight(k) = 0 for
+// k mod S = 0, so every voxel slice pair starts with such a pass, which
 // fills the store.
 //
 // Parameters:
