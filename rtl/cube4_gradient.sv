@@ -127,25 +127,25 @@ module cube4_gradient #(
   assign dy = $signed({1'b0, down_i}) - $signed({1'b0, up_i});
 
   if (!HasVoxelZ) begin : g_abc_x_on
-  for (genvar i = 0; i < 4; i++) begin : g_abc_x
-    // i = 0, 1: behind rows; i = 2, 3: ahead rows.
-    logic [VoxelBits-1:0] a, b;
-    logic [WeightBits:0]  wx;
-    assign a  = (i < 2) ? behind_i[(2*(i%2))*VoxelBits +: VoxelBits]
-                        : ahead_i[(2*(i%2))*VoxelBits +: VoxelBits];
-    assign b  = (i < 2) ? behind_i[(2*(i%2)+1)*VoxelBits +: VoxelBits]
-                        : ahead_i[(2*(i%2)+1)*VoxelBits +: VoxelBits];
-    assign wx = (i < 2) ? behind_wx_i : ahead_wx_i;
-    cube4_lerp #(
-      .VoxelBits (VoxelBits),
-      .WeightBits(WeightBits)
-    ) u_lerp_x (
-      .a_i(a),
-      .b_i(b),
-      .w_i(wx),
-      .y_o(abc_x_d[i*VoxelBits +: VoxelBits])
-    );
-  end
+    for (genvar i = 0; i < 4; i++) begin : g_abc_x
+      // i = 0, 1: behind rows; i = 2, 3: ahead rows.
+      logic [VoxelBits-1:0] a, b;
+      logic [WeightBits:0]  wx;
+      assign a  = (i < 2) ? behind_i[(2*(i%2))*VoxelBits +: VoxelBits]
+                          : ahead_i[(2*(i%2))*VoxelBits +: VoxelBits];
+      assign b  = (i < 2) ? behind_i[(2*(i%2)+1)*VoxelBits +: VoxelBits]
+                          : ahead_i[(2*(i%2)+1)*VoxelBits +: VoxelBits];
+      assign wx = (i < 2) ? behind_wx_i : ahead_wx_i;
+      cube4_lerp #(
+        .VoxelBits (VoxelBits),
+        .WeightBits(WeightBits)
+      ) u_lerp_x (
+        .a_i(a),
+        .b_i(b),
+        .w_i(wx),
+        .y_o(abc_x_d[i*VoxelBits +: VoxelBits])
+      );
+    end
   end else begin : g_abc_x_off
     // Waiver: VolumePro's z takes no re-aligned samples.
     logic unused_abc;
@@ -199,17 +199,17 @@ module cube4_gradient #(
   logic [SupersamplingBits-1:0] s2_q;
 
   if (!HasVoxelZ) begin : g_abc_y_on
-  for (genvar i = 0; i < 2; i++) begin : g_abc_y
-    cube4_lerp #(
-      .VoxelBits (VoxelBits),
-      .WeightBits(WeightBits)
-    ) u_lerp_y (
-      .a_i(abc_x_q[(2*i)*VoxelBits +: VoxelBits]),
-      .b_i(abc_x_q[(2*i+1)*VoxelBits +: VoxelBits]),
-      .w_i((i == 0) ? behind_wy_q : ahead_wy_q),
-      .y_o(abc_d[i*VoxelBits +: VoxelBits])
-    );
-  end
+    for (genvar i = 0; i < 2; i++) begin : g_abc_y
+      cube4_lerp #(
+        .VoxelBits (VoxelBits),
+        .WeightBits(WeightBits)
+      ) u_lerp_y (
+        .a_i(abc_x_q[(2*i)*VoxelBits +: VoxelBits]),
+        .b_i(abc_x_q[(2*i+1)*VoxelBits +: VoxelBits]),
+        .w_i((i == 0) ? behind_wy_q : ahead_wy_q),
+        .y_o(abc_d[i*VoxelBits +: VoxelBits])
+      );
+    end
   end else begin : g_abc_y_off
     logic unused_abc_x;
     assign unused_abc_x = ^{abc_x_q, behind_wy_q, ahead_wy_q};
