@@ -64,8 +64,6 @@ struct FramePlan {
   // A frame's first pass: -1, the priming pass, with zdiff; 0 otherwise.
   int first_pass() const { return zdiff ? -1 : 0; }
   bool prime_pass(int pass) const { return pass < 0; }
-  // A frame's passes in a stream, the priming pass included (cycles).
-  int stream_passes(bool stream_last_frame) const { return passes_in_stream(stream_last_frame) - first_pass(); }
   // A frame's passes in a stream of frames: the zero pass only ends the
   // stream (the next frame's first slice is the zero slice ahead of this
   // frame's last, docs/rtl-gradient.md).
