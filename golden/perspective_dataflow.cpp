@@ -51,11 +51,17 @@ PerspectiveReach perspective_reach(const Registers& r) {
   PerspectiveReach out;
   reach_along(r, [](const PerspectiveSlice& s) { return AxisFields{s.ray0_x, s.rays_x, s.behind_x, s.ahead_x}; }, out.x);
   reach_along(r, [](const PerspectiveSlice& s) { return AxisFields{s.ray0_y, s.rays_y, s.behind_y, s.ahead_y}; }, out.y);
+  out.samples = perspective_samples(r);
+  return out;
+}
+
+uint64_t perspective_samples(const Registers& r) {
+  uint64_t n = 0;
   for (int k = 0; k < r.sample_slices(); ++k) {
     const RayRange x = r.rays_in_slice(0, k), y = r.rays_in_slice(1, k);
-    if (!x.empty() && !y.empty()) out.samples += static_cast<uint64_t>(x.hi - x.lo) * static_cast<uint64_t>(y.hi - y.lo);
+    if (!x.empty() && !y.empty()) n += static_cast<uint64_t>(x.hi - x.lo) * static_cast<uint64_t>(y.hi - y.lo);
   }
-  return out;
+  return n;
 }
 
 }  // namespace cube4::golden

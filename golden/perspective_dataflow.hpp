@@ -38,8 +38,13 @@ struct AxisReach {
 };
 struct PerspectiveReach {
   AxisReach x, y;
-  uint64_t samples = 0;  // rays sampling a slice, summed over the slices
+  uint64_t samples = 0;  // perspective_samples()
 };
+
+// The samples of a perspective frame: the rays sampling each slice, summed
+// over the slices (a parallel frame has nx * ny per slice). Fewer than the
+// voxels the frame reads: the rays spread behind the first slice.
+uint64_t perspective_samples(const Registers& r);
 
 // Every offset of a perspective frame's registers, over all sample slices
 // and every ray that samples them (rays that miss a slice read zero and

@@ -11,6 +11,7 @@
 #include <thread>
 #include <systemc>
 
+#include "golden/perspective_dataflow.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/pixel_memory.hpp"
 #include "systemc/core/polygon_source.hpp"
@@ -166,7 +167,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   not_needed(r.window_enabled, Unit::Composite, "block-window logic (a partitioned volume's)");
   const CycleCount cc = frame_cycles(*rs, cfg.p);
   res.stream_cycles = cc.stream;
-  res.samples = static_cast<uint64_t>(plan.nx) * plan.ny * plan.K;
+  res.samples = r.perspective ? golden::perspective_samples(r) : static_cast<uint64_t>(plan.nx) * plan.ny * plan.K;
 
   std::unique_ptr<StreamChecker> checker;
   if (cfg.check) checker = std::make_unique<StreamChecker>(plan, vol);

@@ -87,7 +87,7 @@ struct SystemResult {
   uint64_t frame_cycles = 0;    // first voxel beat to last pixel written (first-frame latency)
   uint64_t measured_interval = 0;  // cycles between the last pixels of back-to-back frames (frames > 1)
   uint64_t stream_cycles = 0;   // voxel beats (and polygon waits) per frame: the steady-state interval of back-to-back frames
-  uint64_t samples = 0;         // nx * ny * K rays-slices composited
+  uint64_t samples = 0;         // rays-slices composited: nx * ny * K, perspective_samples() in perspective
   uint64_t voxel_reads = 0;     // voxel memory reads (one per module per read cycle)
   uint64_t simulated_cycles = 0;  // clock cycles simulated (cycle-level runs)
   // A hybrid frame: its connection ("rle", "dual", "ideal"; empty without
