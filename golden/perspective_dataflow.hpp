@@ -46,6 +46,18 @@ struct PerspectiveReach {
 // voxels the frame reads: the rays spread behind the first slice.
 uint64_t perspective_samples(const Registers& r);
 
+// The largest move of a ray's home from one slice to the next, along
+// either axis: the compositor's reach the frame needs (0 without moves).
+inline int64_t largest_home_move(const PerspectiveReach& r) {
+  int64_t m = 0;
+  for (const CellRange* d : {&r.x.drift, &r.y.drift})
+    if (!d->empty()) {
+      m = -d->lo > m ? -d->lo : m;
+      m = d->hi > m ? d->hi : m;
+    }
+  return m;
+}
+
 // Every offset of a perspective frame's registers, over all sample slices
 // and every ray that samples them (rays that miss a slice read zero and
 // have no home there).

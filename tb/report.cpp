@@ -3,12 +3,14 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 
 #include "golden/errors.hpp"
+#include "golden/perspective_dataflow.hpp"
 
 namespace cube4::tb {
 
@@ -64,8 +66,28 @@ nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& 
     // The rays' spacing on the last sample slice: the box filter's width there.
     j["last_slice_ray_spacing"] =
         std::ldexp(static_cast<double>(h.regs.ray_spacing(h.regs.sample_slices() - 1)), -h.regs.p.dda_frac_bits);
+    j["dataflow"] = describe_perspective_dataflow(golden::perspective_reach(h.regs));
   }
   return j;
+}
+
+// What the rings would need for this frame (docs/perspective.md, "The
+// dataflow"): how far each operand lies from a sample's home, in cells.
+nlohmann::json describe_perspective_dataflow(const golden::PerspectiveReach& r) {
+  auto range = [](const golden::CellRange& c) {
+    return c.empty() ? nlohmann::json("none") : nlohmann::json::array({c.lo, c.hi});
+  };
+  auto axis = [&](const golden::AxisReach& a) {
+    return nlohmann::json{{"box", range(a.box)},
+                          {"next_ray", range(a.next)},
+                          {"behind", range(a.behind)},
+                          {"ahead", range(a.ahead)},
+                          {"home_move", range(a.drift)}};
+  };
+  return {{"samples", r.samples},
+          {"x", axis(r.x)},
+          {"y", axis(r.y)},
+          {"compositor_reach_needed", golden::largest_home_move(r)}};
 }
 
 nlohmann::json describe_registers(const golden::Registers& r) {

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "golden/host_driver.hpp"
+#include "golden/perspective_dataflow.hpp"
 #include "golden/renderers.hpp"
 
 namespace cube4::tb {
@@ -17,6 +18,8 @@ std::string hex64(uint64_t v);
 nlohmann::json describe_volume(const golden::Volume& v);
 nlohmann::json describe_view(const golden::Scene& s, const golden::HostProgram& h);
 nlohmann::json describe_registers(const golden::Registers& r);
+// A perspective frame's offsets in the rings' dataflow (golden/perspective_dataflow.hpp).
+nlohmann::json describe_perspective_dataflow(const golden::PerspectiveReach& r);
 
 // Writes `text` (or `j`) to `path` (tb/output_files.hpp gives a temporary),
 // checking every write and the close; throws InputError naming `shown_as`.

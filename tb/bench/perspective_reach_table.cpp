@@ -37,13 +37,6 @@ void join(CellRange& into, const CellRange& r) {
 
 std::string show(const CellRange& r) { return "[" + std::to_string(r.lo) + ", " + std::to_string(r.hi) + "]"; }
 
-int64_t largest_move(const PerspectiveReach& r) {
-  int64_t m = 0;
-  for (const CellRange& d : {r.x.drift, r.y.drift})
-    if (!d.empty()) m = std::max({m, -d.lo, d.hi});
-  return m;
-}
-
 }  // namespace
 
 int main() {
@@ -69,7 +62,7 @@ int main() {
             join(behind, a->behind);
             join(ahead, a->ahead);
           }
-          const int64_t move = largest_move(r);
+          const int64_t move = cube4::golden::largest_home_move(r);
           largest = std::max(largest, move);
           for (int reach = 1; reach <= 3; ++reach) within[reach - 1] += move <= reach;
           ++views;

@@ -3,6 +3,7 @@
 // lateral scale, the camera's checks, and the renderers against each other.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -14,6 +15,7 @@
 
 #include "golden/errors.hpp"
 #include "golden/perspective.hpp"
+#include "golden/perspective_dataflow.hpp"
 #include "golden/units/dda.hpp"
 #include "golden/units/gradient.hpp"
 #include "tb/tests/cli_support.hpp"
@@ -331,6 +333,14 @@ TEST_F(PerspectiveCli, RendersAtTheGoldenLevelsAndRefusesTheOthersSayingWhy) {
                                   " --report " + path("r.json"));
     EXPECT_EQ(r.code, 0) << model << ": " << r.err;
     EXPECT_TRUE(test::fs::exists(path(std::string(model) + ".png"))) << model;
+    // The report says what the rings' dataflow would need for the frame
+    // (docs/perspective.md, "The dataflow"), the same at every level.
+    std::ifstream in(path("r.json"));
+    const nlohmann::json flow = nlohmann::json::parse(in)["view"]["dataflow"];
+    const golden::PerspectiveReach reach = golden::perspective_reach(test::setup_file(scene).host.regs);
+    EXPECT_EQ(flow["samples"], reach.samples) << model;
+    EXPECT_EQ(flow["x"]["box"], nlohmann::json::array({-1, 2})) << model;
+    EXPECT_EQ(flow["compositor_reach_needed"], golden::largest_home_move(reach)) << model;
   }
   for (const char* model : {"rtl", "mixed:shade", "splat"}) {
     const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("no.png"));

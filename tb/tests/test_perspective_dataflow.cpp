@@ -24,10 +24,6 @@ std::string view(const std::string& camera, int S = 1, const std::string& size =
          R"(, "view": {"projection": "perspective", )" + camera + "}}";
 }
 
-int64_t largest_move(const golden::PerspectiveReach& r) {
-  return std::max({-r.x.drift.lo, r.x.drift.hi, -r.y.drift.lo, r.y.drift.hi});
-}
-
 }  // namespace
 
 TEST(PerspectiveDataflow, TheBoxLiesWithinOneCellBeforeAndTwoAfterTheHome) {
@@ -83,7 +79,7 @@ TEST(PerspectiveDataflow, AlongAnAxisRaysMoveAtMostOneCellASliceWhateverTheField
   // With the eye on the axis the rays are under 45 degrees from it.
   for (const char* fov : {"10", "45", "89"}) {
     const auto s = test::setup(view(std::string(R"("fov": )") + fov));
-    EXPECT_EQ(largest_move(golden::perspective_reach(s.host.regs)), 1) << "fov " << fov;
+    EXPECT_EQ(golden::largest_home_move(golden::perspective_reach(s.host.regs)), 1) << "fov " << fov;
   }
 }
 
@@ -91,8 +87,8 @@ TEST(PerspectiveDataflow, ObliqueWideViewsMoveFurtherAndSupersamplingHalvesTheMo
   // A diagonal view with a wide field: the outer rays are far steeper than
   // 45 degrees from the principal axis (the table in docs/perspective.md).
   const std::string camera = R"("fov": 80, "rotate": [35, 45, 0])";
-  const int64_t s1 = largest_move(golden::perspective_reach(test::setup(view(camera, 1)).host.regs));
-  const int64_t s2 = largest_move(golden::perspective_reach(test::setup(view(camera, 2)).host.regs));
+  const int64_t s1 = golden::largest_home_move(golden::perspective_reach(test::setup(view(camera, 1)).host.regs));
+  const int64_t s2 = golden::largest_home_move(golden::perspective_reach(test::setup(view(camera, 2)).host.regs));
   EXPECT_GE(s1, 2);
   EXPECT_LT(s2, s1);
 }
