@@ -9,6 +9,8 @@
 #include <cstdint>
 
 #include "golden/registers.hpp"
+#include "golden/units/dda.hpp"
+#include "golden/units/dda_perspective.hpp"
 
 namespace cube4::golden {
 
@@ -16,6 +18,35 @@ namespace cube4::golden {
 // lies in. Rays at least one voxel apart have distinct homes, and a ray
 // that samples the slice (0 <= pos < n) has its home in the volume.
 constexpr int64_t home_cell(int64_t pos, int frac_bits) { return pos >> frac_bits; }
+
+// Which ray has its home in a given cell of one axis, the question the
+// rings' lanes ask (cube4_persp_lanes: lane k of step j holds cell
+// j * lanes + k; along x the steps are a beam's partial beams and the lanes
+// the p pipelines, along y the steps are a pass's beams, one lane). The
+// ray's box (box_axis()) starts at the home or one cell before it.
+struct HomeLane {
+  bool valid = false;     // a ray of `rays` has its home in the cell
+  int64_t ray = 0;        // that ray
+  bool box_left = false;  // its box starts at home - 1 (else at home)
+  BoxAxis box;            // box_axis() of its position
+  uint32_t weight = 0;    // its position's fraction, weight_bits (dda_split(): sample_place())
+};
+inline HomeLane home_lane(int64_t ray0, int64_t spacing, RayRange rays, int64_t cell, int frac_bits,
+                          int weight_bits) {
+  HomeLane h;
+  // The first ray at or after the cell's start (spacing >= 1: no earlier
+  // ray can have its home there).
+  const int64_t u = ceil_div(cell * (int64_t{1} << frac_bits) - ray0, spacing);
+  if (u < rays.lo || u >= rays.hi) return h;
+  const int64_t pos = ray_position(ray0, spacing, u);
+  if (home_cell(pos, frac_bits) != cell) return h;
+  h.valid = true;
+  h.ray = u;
+  h.box = box_axis(pos, spacing, frac_bits, weight_bits);
+  h.box_left = h.box.first < cell;
+  h.weight = dda_split(pos, frac_bits, weight_bits).weight;
+  return h;
+}
 
 // The range of cell offsets, relative to the sample's own home, at which
 // one kind of operand lies over a frame, along one axis. An empty range
