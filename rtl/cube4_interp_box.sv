@@ -3,9 +3,13 @@
 // wide as the rays are apart there.
 //
 // Function: bit-exact with golden box_filter() (golden/units/interp_box.hpp):
-//   row_j    = sum_i ox_i * v[j][i]          (exact)
-//   sum      = sum_j oy_j * row_j            (exact)
-//   sample_o = (sum * recip + 2^(Q-1)) >> Q  (the mean, rounded half up)
+//   col_i    = sum_j oy_j * v[j][i]          (exact; cube4_box_taps)
+//   sum      = sum_i ox_i * col_i            (exact; cube4_box_taps)
+//   sample_o = (sum * recip + 2^(Q-1)) >> Q  (the mean, rounded half up;
+//                                             cube4_box_mean)
+// The rings compute the same stages spread over the pipelines (a column's
+// sum at its own pipeline, the row and mean at the ray's home); this unit
+// is them in one place, for a 4 x 4 window.
 // v[j][i] = voxels_i[(4j+i)*VoxelBits +: VoxelBits] is voxel
 // (x.first + i, y.first + j) of the slice (0 outside it); ox_i =
 // ox_i[i*(W+1) +: W+1] and oy_j likewise are cube4_box_axis's overlaps;
@@ -23,7 +27,7 @@
 // wider than 3 voxels reaches a fifth cell).
 //
 // Latency: 3 cycles, fully pipelined (one new window per clock):
-//   stage 1 registers the four row sums, stage 2 the column sum, stage 3
+//   stage 1 registers the four column sums, stage 2 the row sum, stage 3
 //   the rounded product (sample_o is driven by the stage-3 register).
 // Handshake: valid-only. valid_i travels with the data and appears on
 //   valid_o 3 cycles later; only the valid pipeline is reset, data
@@ -32,7 +36,7 @@
 // Widths (V = VoxelBits, W = WeightBits, Q = V + 2W + 5), each the least
 // that holds its worst case for overlaps <= 2^W:
 //   recip_i  V+6 = Q-2W+1 bits: round(2^Q / E^2) <= 2^(Q-2W) at E = 2^W
-//   row_j    V+W+2 bits: 4 * 2^W * (2^V - 1) < 2^(V+W+2)
+//   col_i    V+W+2 bits: 4 * 2^W * (2^V - 1) < 2^(V+W+2)
 //   sum      V+2W+4 bits: 4 * 2^W * (2^(V+W+2) - 2^(W+2)) < 2^(V+2W+4);
 //            with the filter's sums (<= 3 * 2^W per axis) it is still
 //            above 2^(V+2W+3), so no bit can go
@@ -64,12 +68,9 @@ module cube4_interp_box #(
 
   localparam int unsigned Latency   = 3;
   localparam int unsigned OvBits    = WeightBits + 1;
-  localparam int unsigned RecipFrac = VoxelBits + 2 * WeightBits + 5;  // Q
   localparam int unsigned RecipBits = VoxelBits + 6;
-  localparam int unsigned RowBits   = VoxelBits + WeightBits + 2;
+  localparam int unsigned ColBits   = VoxelBits + WeightBits + 2;
   localparam int unsigned SumBits   = VoxelBits + 2 * WeightBits + 4;
-  localparam int unsigned ProdBits  = RecipFrac + VoxelBits;
-  localparam logic [ProdBits-1:0] Half = ProdBits'(1) << (RecipFrac - 1);
 
   // Valid pipeline: the only reset state.
   logic [Latency-1:0] valid_d, valid_q;
@@ -84,57 +85,68 @@ module cube4_interp_box #(
   end
   assign valid_o = valid_q[Latency-1];
 
-  // Stage 1: the four row sums along x.
+  // Stage 1: the four column sums along y (cube4_box_taps), as the
+  // rings form them, one per pipeline (docs/perspective.md, "The dataflow").
   // Packed vectors: unpacked-array assignment is not accepted by yosys 0.23.
-  logic [4*RowBits-1:0]   row_d, row_q;
-  logic [4*OvBits-1:0]    oy_q;
+  logic [4*ColBits-1:0]   col_d, col_q;
+  logic [4*OvBits-1:0]    ox_q;
   logic [RecipBits-1:0]   recip1_q;
 
-  always_comb begin
-    for (int j = 0; j < 4; j++) begin
-      row_d[j*RowBits +: RowBits] = '0;
-      for (int i = 0; i < 4; i++) begin
-        row_d[j*RowBits +: RowBits] = row_d[j*RowBits +: RowBits] +
-            RowBits'(ox_i[i*OvBits +: OvBits]) * RowBits'(voxels_i[(4*j+i)*VoxelBits +: VoxelBits]);
-      end
+  for (genvar i = 0; i < 4; i++) begin : g_column
+    logic [4*VoxelBits-1:0] column;
+    for (genvar j = 0; j < 4; j++) begin : g_cell
+      assign column[j*VoxelBits +: VoxelBits] = voxels_i[(4*j+i)*VoxelBits +: VoxelBits];
     end
+    cube4_box_taps #(
+      .DataBits  (VoxelBits),
+      .WeightBits(WeightBits)
+    ) u_column (
+      .data_i   (column),
+      .overlap_i(oy_i),
+      .sum_o    (col_d[i*ColBits +: ColBits])
+    );
   end
 
   always_ff @(posedge clk_i) begin
-    row_q    <= row_d;
-    oy_q     <= oy_i;
+    col_q    <= col_d;
+    ox_q     <= ox_i;
     recip1_q <= recip_i;
   end
 
-  // Stage 2: the column sum along y.
+  // Stage 2: the row sum along x (cube4_box_taps).
   logic [SumBits-1:0]   sum_d, sum_q;
   logic [RecipBits-1:0] recip2_q;
 
-  always_comb begin
-    sum_d = '0;
-    for (int j = 0; j < 4; j++) begin
-      sum_d = sum_d + SumBits'(oy_q[j*OvBits +: OvBits]) * SumBits'(row_q[j*RowBits +: RowBits]);
-    end
-  end
+  cube4_box_taps #(
+    .DataBits  (ColBits),
+    .WeightBits(WeightBits)
+  ) u_row (
+    .data_i   (col_q),
+    .overlap_i(ox_q),
+    .sum_o    (sum_d)
+  );
 
   always_ff @(posedge clk_i) begin
     sum_q    <= sum_d;
     recip2_q <= recip1_q;
   end
 
-  // Stage 3: times the reciprocal of the box's area, rounded half up.
-  logic [ProdBits-1:0] rounded;
-  logic [VoxelBits-1:0] sample_q;
+  // Stage 3: times the reciprocal of the box's area, rounded half up
+  // (cube4_box_mean).
+  logic [VoxelBits-1:0] mean, sample_q;
 
-  assign rounded = ProdBits'(sum_q) * ProdBits'(recip2_q) + Half;
+  cube4_box_mean #(
+    .VoxelBits (VoxelBits),
+    .WeightBits(WeightBits)
+  ) u_mean (
+    .sum_i   (sum_q),
+    .recip_i (recip2_q),
+    .sample_o(mean)
+  );
 
   always_ff @(posedge clk_i) begin
-    sample_q <= rounded[ProdBits-1:RecipFrac];
+    sample_q <= mean;
   end
   assign sample_o = sample_q;
-
-  // The product's fraction bits, dropped by the rounding shift.
-  logic unused_fraction;
-  assign unused_fraction = ^rounded[RecipFrac-1:0];
 
 endmodule

@@ -26,22 +26,37 @@ constexpr uint64_t box_reciprocal(int64_t extent, int recip_bits) {
   return static_cast<uint64_t>(((static_cast<unsigned __int128>(1) << recip_bits) + area / 2) / area);
 }
 
-// v[j][i] is voxel (x.first + i, y.first + j) of the slice (0 outside it).
-// T is the voxels' type: unsigned for the samples, signed for VolumePro's
-// voxel z differences (V + 1 bits), which the same stage filters with the
-// same weights for the voxel-difference z gradient (docs/fixed-point.md);
-// the rounding is half up (towards +infinity) either way.
+// The filter in two stages, as the rings compute it (docs/perspective.md,
+// "The dataflow"): each voxel column's four cells weighed by the y
+// overlaps (at the column's own pipeline), then the four column sums
+// weighed by the x overlaps (at the ray's home), both box_taps(), then the
+// mean (box_mean). Both sums are exact, so the order of the axes does not
+// change the sample. T is the voxels' type: unsigned for the samples,
+// signed for VolumePro's voxel z differences (V + 1 bits), which the same
+// stages filter with the same weights for the voxel-difference z gradient
+// (docs/fixed-point.md); the rounding is half up (towards +infinity)
+// either way.
+template <class T>
+constexpr int64_t box_taps(const std::array<T, 4>& d, const BoxAxis& axis) {
+  int64_t sum = 0;
+  for (size_t i = 0; i < 4; ++i) sum += static_cast<int64_t>(axis.overlap[i]) * d[i];
+  return sum;
+}
+// The weighted sum times the slice's reciprocal of the box's area, rounded.
+template <class T>
+constexpr T box_mean(int64_t sum, uint64_t reciprocal, int recip_bits) {
+  const __int128 half = static_cast<__int128>(1) << (recip_bits - 1);
+  return static_cast<T>((static_cast<__int128>(sum) * static_cast<__int128>(reciprocal) + half) >> recip_bits);
+}
+
+// The whole filter of a 4 x 4 window: v[j][i] is voxel (x.first + i,
+// y.first + j) of the slice.
 template <class T>
 constexpr T box_filter_t(const std::array<std::array<T, 4>, 4>& v, const BoxAxis& x, const BoxAxis& y,
                          uint64_t reciprocal, int recip_bits) {
-  __int128 sum = 0;
-  for (size_t j = 0; j < 4; ++j) {
-    int64_t row = 0;
-    for (size_t i = 0; i < 4; ++i) row += static_cast<int64_t>(x.overlap[i]) * v[j][i];
-    sum += static_cast<__int128>(y.overlap[j]) * row;
-  }
-  const __int128 half = static_cast<__int128>(1) << (recip_bits - 1);
-  return static_cast<T>((sum * static_cast<__int128>(reciprocal) + half) >> recip_bits);
+  std::array<int64_t, 4> col{};
+  for (size_t i = 0; i < 4; ++i) col[i] = box_taps<T>({v[0][i], v[1][i], v[2][i], v[3][i]}, y);
+  return box_mean<T>(box_taps(col, x), reciprocal, recip_bits);
 }
 constexpr uint32_t box_filter(const std::array<std::array<uint32_t, 4>, 4>& v, const BoxAxis& x, const BoxAxis& y,
                               uint64_t reciprocal, int recip_bits) {

@@ -1,0 +1,48 @@
+// cube4_box_mean: the perspective box filter's normalisation (Cube-4 §3;
+// docs/rtl-interp-box.md): the weighted sum of the box (cube4_box_taps' row stage) times
+// the slice's reciprocal of the box's area, rounded half up.
+//
+// Function: bit-exact with golden box_mean() (golden/units/interp_box.hpp):
+//   sample_o = (sum_i * recip_i + 2^(Q-1)) >> Q,  Q = V + 2W + 5
+// recip_i = golden box_reciprocal(E, Q) = round(2^Q / E^2) for the slice's
+// extent E (golden box_extent()).
+//
+// Latency: 0 (combinational). Handshake: none (pure function).
+//
+// Input range: the filter's own sums (overlaps of one box with the
+// reciprocal of its extent, 2^W <= E < 2^(W+2)): sum <= E^2 (2^V - 1), so
+// sum * recip + 2^(Q-1) < 2^Q (2^V - 1) + 2^Q (1/2 + 1/4) and the mean never
+// exceeds the largest voxel: sample_o needs no saturation, and the product
+// needs only Q+V bits (modulo 2^(Q+V): its bits above are never needed).
+//
+// Widths (V = VoxelBits, W = WeightBits): sum_i V+2W+4 bits (the row stage),
+// recip_i V+6 bits (round(2^Q / E^2) <= 2^(Q-2W) at E = 2^W).
+//
+// Parameters:
+//   VoxelBits  - voxel and sample width (golden Precision::voxel_bits, 12)
+//   WeightBits - overlap fraction bits (Precision::weight_bits, 8)
+`include "cube4_pkg.sv"
+
+module cube4_box_mean #(
+  parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
+  parameter int unsigned WeightBits = cube4_pkg::WeightBits,
+  localparam int unsigned SumBits   = VoxelBits + 2 * WeightBits + 4
+) (
+  input  logic [SumBits-1:0]     sum_i,
+  input  logic [VoxelBits+5:0]   recip_i,
+  output logic [VoxelBits-1:0]   sample_o
+);
+
+  localparam int unsigned RecipFrac = VoxelBits + 2 * WeightBits + 5;  // Q
+  localparam int unsigned ProdBits  = RecipFrac + VoxelBits;
+  localparam logic [ProdBits-1:0] Half = ProdBits'(1) << (RecipFrac - 1);
+
+  logic [ProdBits-1:0] rounded;
+  assign rounded  = ProdBits'(sum_i) * ProdBits'(recip_i) + Half;
+  assign sample_o = rounded[ProdBits-1:RecipFrac];
+
+  // The product's fraction bits, dropped by the rounding shift.
+  logic unused_fraction;
+  assign unused_fraction = ^rounded[RecipFrac-1:0];
+
+endmodule
