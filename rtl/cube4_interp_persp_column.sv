@@ -1,0 +1,248 @@
+// cube4_interp_persp_column: one pipeline's column stage of the perspective
+// interpolation unit (Cube-4 §3; docs/perspective.md, "The dataflow";
+// docs/rtl-interp-persp.md). For every voxel of the stream it weighs its
+// own column's four window rows with the beam's y overlaps, for both voxel
+// slices of the sample slice; a ray's home then takes four such column
+// sums (its own and its neighbours') for the row stage.
+//
+// Function: in the step of column x of beam b of a pass (b = 0 .. ny-1, and
+// the drain beams below), with the window rows r = b-3 .. b (cell row
+// Y = b - 2, its box's rows Y-1 .. Y+2):
+//   col_front_o = golden box_taps(v(x, b-3 .. b, z_voxel),     window oy)
+//   col_back_o  = golden box_taps(v(x, b-3 .. b, z_voxel + 1), window oy)
+// with rows outside 0 .. ny-1 of the pass reading zero. The window oy are
+// the y box's overlaps in window order: (o0, o1, o2, o3) when the box starts
+// at Y-1 (oy_left_i), else (0, o0, o1, o2), its fourth overlap being zero
+// then (docs/perspective.md: the box ends by home + 2).
+//
+// Passes back to back: a pass's last two cell rows (Y = ny-2, ny-1) need
+// rows ny and ny+1, the zero border, so they are formed in the two beams
+// after the pass: the next pass's beams 0 and 1, whose own cells start at
+// beam 2 (Y = 0), or flush beams at the stream's end. In those drain beams
+// the unit gives the finished pass's column sums: its rows still in the
+// row delay, and zero for the rows past it (the new pass's rows, which the
+// delay takes meanwhile). The beam's oy_i are then the finished pass's
+// (the weight generator's business, not this unit's).
+//
+// Where the rows come from: the current row from the stream (voxel slice
+// z_voxel + 1 in a pass with wz > 0, z_voxel when wz = 0) and the slice
+// store (z_voxel, written in the wz = 0 pass, as cube4_interp_unit's), rows
+// b-1 .. b-3 from the row delay: one entry per partial beam holding three
+// rows of (front, back) pairs, shifted by a row each lap.
+//
+// Stream format (valid_i cycles, any number of idle cycles between them):
+// cube4_interp_unit's (docs/rtl-interp.md), with the flush beams two:
+//   beam_start_i / beam_end_i  : first / last partial beam of a beam
+//   slice_start_i / slice_end_i: beam 0 / beam ny-1 of a pass
+//   flush_i                    : a beam of no voxels after the stream's
+//                                last pass (two of them drain it)
+//   wz_i                       : the sample slice's z weight (only whether
+//                                it is zero matters here)
+// Output: valid_o one cycle after each valid_i, with that step's sums.
+//
+// Preconditions: ny >= 2 (the drain must fit into the next pass's first two
+// beams); every pass is complete, with the same ceil(nx/p) <= BeamDepth
+// partial beams per beam; ny * ceil(nx/p) <= SliceDepth; the stream
+// carries z_voxel whenever wz = 0, which every voxel slice pair starts with.
+// Reset: control (valid, the drain count); data registers and RAMs are not
+// reset.
+//
+// Widths (V = VoxelBits, W = WeightBits): a column sum is V+W+2 bits
+// (cube4_box_taps).
+//
+// Parameters:
+//   VoxelBits, WeightBits - as cube4_box_taps (Precision defaults 12, 8)
+//   BeamDepth             - row delay entries: max partial beams per beam
+//   SliceDepth            - slice store entries: max ny * partial beams
+`include "cube4_pkg.sv"
+
+module cube4_interp_persp_column #(
+  parameter int unsigned  VoxelBits  = cube4_pkg::VoxelBits,
+  parameter int unsigned  WeightBits = cube4_pkg::WeightBits,
+  parameter int unsigned  BeamDepth  = 64,
+  parameter int unsigned  SliceDepth = 16384,
+  localparam int unsigned ColBits    = VoxelBits + WeightBits + 2
+) (
+  input  logic                          clk_i,
+  input  logic                          rst_ni,
+  // Voxel stream.
+  input  logic                          valid_i,
+  input  logic                          beam_start_i,
+  input  logic                          beam_end_i,
+  input  logic                          slice_start_i,
+  input  logic                          slice_end_i,
+  input  logic                          flush_i,
+  input  logic [VoxelBits-1:0]          voxel_i,
+  input  logic [WeightBits:0]           wz_i,
+  // The beam's y box (cube4_persp_lanes along y).
+  input  logic [4*(WeightBits+1)-1:0]   oy_i,
+  input  logic                          oy_left_i,
+  // Column sums.
+  output logic                          valid_o,
+  output logic [ColBits-1:0]            col_front_o,
+  output logic [ColBits-1:0]            col_back_o
+);
+
+  localparam int unsigned V              = VoxelBits;
+  localparam int unsigned OvBits         = WeightBits + 1;
+  localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
+  localparam int unsigned SliceDepthBits = $clog2(SliceDepth + 1);
+
+  // -------------------------------------------------------------------------
+  // The current row's pair (front = z_voxel, back = z_voxel + 1).
+  logic         on_slice, pass_last;
+  logic [V-1:0] vox, front_cur, back_cur, store_rdata;
+  assign on_slice  = wz_i == '0;
+  assign pass_last = slice_end_i && beam_end_i && !flush_i;
+  assign vox       = flush_i ? '0 : voxel_i;
+  assign front_cur = (on_slice || flush_i) ? vox : store_rdata;
+  assign back_cur  = vox;
+
+  cube4_delay_ram #(
+    .Width   (V),
+    .MaxDepth(SliceDepth)
+  ) u_slice_store (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .depth_i  (SliceDepthBits'(SliceDepth)),
+    .clear_i  (1'b0),
+    .advance_i(valid_i && !flush_i),
+    .last_i   (pass_last),
+    .write_i  (on_slice),
+    .wdata_i  (voxel_i),
+    .rdata_o  (store_rdata)
+  );
+
+  // Row delay: entry {pair b-1, pair b-2, pair b-3} of this column (b-3 in
+  // the low bits), each pair {back, front}; a step reads it and writes
+  // {b, b-1, b-2}.
+  logic [6*V-1:0] rows_rdata, rows_wdata;
+  assign rows_wdata = {back_cur, front_cur, rows_rdata[2*V +: 4*V]};
+  cube4_delay_ram #(
+    .Width   (6 * V),
+    .MaxDepth(BeamDepth)
+  ) u_row_delay (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .depth_i  (BeamDepthBits'(BeamDepth)),
+    .clear_i  (1'b0),
+    .advance_i(valid_i),
+    .last_i   (beam_end_i),
+    .write_i  (1'b1),
+    .wdata_i  (rows_wdata),
+    .rdata_o  (rows_rdata)
+  );
+
+  // -------------------------------------------------------------------------
+  // Which window rows belong to the cell's pass. depth d = 0 is the current
+  // row b, d = 1 .. 3 the delayed rows b-1 .. b-3.
+  //   - a drain beam (the first or second after a pass's last beam; drain_q
+  //     counts the beams still owed): only the finished pass's rows, those
+  //     deeper than the drain beams so far (depth > 0 in the first, > 1 in
+  //     the second) and not above its row 0 (in the first drain beam of a
+  //     pass of two beams, depth 3 is the pass before's);
+  //   - beam b < 3 of a pass: rows 0 .. b, depth <= b;
+  //   - later beams: all four.
+  logic [1:0] drain_q, drain_d;  // drain beams still owed
+  logic [1:0] beam_q, beam_d;    // beam of the pass, saturating at 3
+  logic [3:0] keep;              // bit d: window row at depth d is inside
+  logic       draining;
+  logic       short_q;  // the finished pass had two beams
+  assign draining = drain_q != 2'd0;
+
+  always_comb begin
+    if (draining) begin
+      // drain_q = 2: the first drain beam, keep depths 1..3; 1: depths 2..3.
+      keep = (drain_q == 2'd1) ? 4'b1100 : short_q ? 4'b0110 : 4'b1110;
+    end else begin
+      unique case (beam_d)
+        2'd0:    keep = 4'b0001;
+        2'd1:    keep = 4'b0011;
+        2'd2:    keep = 4'b0111;
+        default: keep = 4'b1111;
+      endcase
+    end
+  end
+
+  // The pass's beam count: this step's beam (0 at a pass's first beam).
+  always_comb begin
+    beam_d = beam_q;
+    if (slice_start_i && beam_start_i) beam_d = 2'd0;
+    else if (beam_start_i && beam_q != 2'd3) beam_d = beam_q + 2'd1;
+  end
+
+  always_comb begin
+    drain_d = drain_q;
+    if (valid_i && beam_end_i) begin
+      if (pass_last) drain_d = 2'd2;
+      else if (draining) drain_d = drain_q - 2'd1;
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      drain_q <= 2'd0;
+    end else begin
+      drain_q <= drain_d;
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (valid_i && !flush_i) beam_q <= beam_d;
+    if (valid_i && pass_last) short_q <= beam_d == 2'd1;
+  end
+
+  // -------------------------------------------------------------------------
+  // The window's four rows of each slice, row r = b-3+j at j (depth 3-j),
+  // zero where not kept; the box's overlaps in window order.
+  logic [4*V-1:0]      win_front, win_back;
+  logic [4*OvBits-1:0] oy_win;
+  for (genvar j = 0; j < 4; j++) begin : g_window
+    logic [2*V-1:0] pair;
+    if (j == 3) begin : g_current
+      assign pair = {back_cur, front_cur};
+    end else begin : g_delayed
+      assign pair = rows_rdata[j*2*V +: 2*V];
+    end
+    assign win_front[j*V +: V] = keep[3-j] ? pair[0 +: V] : '0;
+    assign win_back[j*V +: V]  = keep[3-j] ? pair[V +: V] : '0;
+  end
+  assign oy_win = oy_left_i ? oy_i : {oy_i[0 +: 3*OvBits], OvBits'(0)};
+
+  logic [ColBits-1:0] front_d, back_d, front_q, back_q;
+  cube4_box_taps #(
+    .DataBits  (V),
+    .WeightBits(WeightBits)
+  ) u_front (
+    .data_i   (win_front),
+    .overlap_i(oy_win),
+    .sum_o    (front_d)
+  );
+  cube4_box_taps #(
+    .DataBits  (V),
+    .WeightBits(WeightBits)
+  ) u_back (
+    .data_i   (win_back),
+    .overlap_i(oy_win),
+    .sum_o    (back_d)
+  );
+
+  logic valid_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      valid_q <= 1'b0;
+    end else begin
+      valid_q <= valid_i;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (valid_i) begin
+      front_q <= front_d;
+      back_q  <= back_d;
+    end
+  end
+  assign valid_o     = valid_q;
+  assign col_front_o = front_q;
+  assign col_back_o  = back_q;
+
+endmodule

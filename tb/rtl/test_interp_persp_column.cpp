@@ -1,0 +1,169 @@
+// RTL equivalence tests of the perspective interpolation unit's column
+// stage, cube4_interp_persp_column, against golden box_taps()
+// (golden/units/interp_box.hpp) over the volume's own columns: random
+// volumes streamed pass after pass as the system streams them (each pass's
+// voxel slice by its z weight, passes back to back, two flush beams at the
+// end, random idle cycles), random y boxes per beam; every step's two
+// column sums against the window rows of its cell's pass, the drain beams'
+// rows of the finished pass included, one cycle later.
+//
+// CUBE4_RTL_VECTORS overrides the step count (default 1,000,000).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "Vcube4_interp_persp_column.h"
+#include "golden/units/dda.hpp"
+#include "golden/units/interp_box.hpp"
+#include "tb/rtl/rtl_check.hpp"
+
+namespace {
+
+namespace g = cube4::golden;
+namespace rtl = cube4::rtl;
+using rtl::Fields;
+
+constexpr int kV = 12, kW = 8;
+constexpr int kBeamDepth = 32, kSliceDepth = 1024;  // rtl/groups/interp.cmake
+
+struct Volume {
+  int nx = 0, ny = 0, nz = 0;
+  std::vector<uint32_t> v;
+  uint32_t at(int x, int y, int z) const {
+    if (x < 0 || x >= nx || y < 0 || y >= ny || z < 0 || z >= nz) return 0;
+    return v[(static_cast<size_t>(z) * ny + y) * nx + x];
+  }
+};
+
+// One beam's y box: four overlaps and whether it starts a row before the home.
+struct BeamBox {
+  g::BoxAxis box;
+  bool left = false;
+};
+
+struct Expected {
+  bool check = false;
+  int64_t front = 0, back = 0;
+  Fields where;
+};
+
+// The window rows of cell row Y (rows Y-1 .. Y+2) in the box's order.
+int64_t column_sum(const Volume& vol, int x, int Y, int z, const BeamBox& b) {
+  std::array<uint32_t, 4> rows{};
+  for (int j = 0; j < 4; ++j) rows[static_cast<size_t>(j)] = vol.at(x, Y - 1 + j, z);
+  g::BoxAxis window{};
+  for (int j = 0; j < 4; ++j) {
+    const int from = b.left ? j : j - 1;
+    window.overlap[static_cast<size_t>(j)] = from < 0 ? 0u : b.box.overlap[static_cast<size_t>(from)];
+  }
+  return g::box_taps(rows, window);
+}
+
+TEST(RtlInterpPerspColumn, EveryStepOfRandomStreamsMatchesGolden) {
+  rtl::Random rng(71);
+  const auto dut = rtl::make_dut<Vcube4_interp_persp_column>();
+  Vcube4_interp_persp_column& m = *dut;
+  rtl::reset(m);
+  rtl::Checker c("cube4_interp_persp_column");
+  const long n = rtl::vector_count(1000000);
+  rtl::Timer t("cube4_interp_persp_column: " + std::to_string(n) + " steps");
+  uint64_t cycle = 0;
+  long steps = 0, checked = 0;
+  std::deque<Expected> due;  // the result of the step one cycle ago
+  auto clock = [&](bool valid) {
+    rtl::settle(m);
+    rtl::rise(m);
+    ++cycle;
+    rtl::settle(m);
+    if (m.valid_o) {
+      if (due.empty()) {
+        c.check(cycle, {{"unexpected valid_o", 1}}, {{"valid", 0}}, {{"valid", 1}});
+      } else {
+        const Expected e = due.front();
+        due.pop_front();
+        if (e.check) {
+          c.check(cycle, e.where, {{"front", e.front}, {"back", e.back}},
+                  {{"front", static_cast<int64_t>(m.col_front_o)}, {"back", static_cast<int64_t>(m.col_back_o)}});
+          ++checked;
+        }
+      }
+    } else if (!due.empty() && valid) {
+      c.check(cycle, due.front().where, {{"valid", 1}}, {{"valid", 0}});
+    }
+  };
+  while (steps < n && c.ok()) {
+    Volume vol;
+    vol.nx = static_cast<int>(rng.range(1, kBeamDepth));
+    vol.ny = static_cast<int>(rng.range(2, 12));
+    vol.nz = static_cast<int>(rng.range(1, 5));
+    if (vol.nx * vol.ny > kSliceDepth) continue;
+    vol.v.resize(static_cast<size_t>(vol.nx) * vol.ny * vol.nz);
+    for (uint32_t& x : vol.v) x = static_cast<uint32_t>(rng.chance(0.1) ? (rng.chance(0.5) ? 0 : 4095) : rng.bits(kV));
+    const int S = static_cast<int>(rng.range(1, 3)), K = vol.nz * S;
+    // Pass P's beams 0 .. ny-1, then two flush beams after the last pass.
+    for (int P = 0; P <= K && c.ok(); ++P) {
+      const bool flush = P == K;
+      const int beams = flush ? 2 : vol.ny;
+      const uint32_t wz = flush ? 0 : g::z_weight(P, S, kW);
+      const int zv = flush ? 0 : g::z_voxel_slice(P, S);
+      const int z_in = wz == 0 ? zv : zv + 1;
+      for (int b = 0; b < beams && c.ok(); ++b) {
+        BeamBox box;
+        for (uint32_t& o : box.box.overlap) o = static_cast<uint32_t>(rng.range(0, 1 << kW));
+        box.left = rng.chance(0.5);
+        // Whose cell this beam forms: its own pass's row b - 2, or in the
+        // first two beams (or the flush beams) the finished pass's last rows.
+        int cell_pass = P, Y = b - 2;
+        if (flush || b < 2) {
+          cell_pass = P - 1;
+          Y = vol.ny - 2 + b;
+        }
+        const bool has_cell = cell_pass >= 0;
+        const uint32_t cwz = has_cell ? g::z_weight(cell_pass, S, kW) : 0;
+        const int czv = has_cell ? g::z_voxel_slice(cell_pass, S) : 0;
+        for (int j = 0; j < vol.nx && c.ok(); ++j) {
+          while (rng.chance(0.2)) {  // idle cycles, junk inputs
+            m.valid_i = 0;
+            m.voxel_i = static_cast<uint16_t>(rng.bits(kV));
+            m.wz_i = static_cast<uint16_t>(rng.bits(kW + 1));
+            clock(false);
+          }
+          m.valid_i = 1;
+          m.beam_start_i = j == 0;
+          m.beam_end_i = j == vol.nx - 1;
+          m.slice_start_i = !flush && b == 0;
+          m.slice_end_i = !flush && b == vol.ny - 1;
+          m.flush_i = flush;
+          m.voxel_i = static_cast<uint16_t>(flush ? rng.bits(kV) : vol.at(j, b, z_in));
+          m.wz_i = static_cast<uint16_t>(wz);
+          uint64_t oy = 0;
+          for (int o = 0; o < 4; ++o) oy |= static_cast<uint64_t>(box.box.overlap[static_cast<size_t>(o)]) << (o * (kW + 1));
+          m.oy_i = oy;
+          m.oy_left_i = box.left;
+          Expected e;
+          e.check = has_cell;
+          if (has_cell) {
+            e.front = column_sum(vol, j, Y, czv, box);
+            e.back = column_sum(vol, j, Y, cwz == 0 ? czv : czv + 1, box);
+            e.where = {{"nx", vol.nx}, {"ny", vol.ny}, {"nz", vol.nz}, {"S", S}, {"pass", P}, {"beam", b},
+                       {"x", j}, {"cell pass", cell_pass}, {"cell row", Y}, {"box left", box.left}};
+          }
+          due.push_back(e);
+          clock(true);
+          ++steps;
+        }
+      }
+    }
+  }
+  m.valid_i = 0;
+  clock(false);
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_TRUE(due.empty());
+  EXPECT_GT(checked, n / 2);
+}
+
+}  // namespace
