@@ -8,7 +8,12 @@
 // Function: bit-exact with golden box_taps() (golden/units/interp_box.hpp):
 //   sum_o = sum_i o_i * d_i   (exact)
 // d_i = data_i[i*DataBits +: DataBits] (unsigned), o_i =
-// overlap_i[i*(W+1) +: W+1], cube4_box_axis's overlaps.
+// overlap_i[i*(W+1) +: W+1], cube4_box_axis's overlaps, when the box starts
+// at the data's first cell (shift_i = 0). In the rings the four data are a
+// home's window, cells home-1 .. home+2, and a box may start at the home
+// instead (shift_i = 1): its overlaps then weigh d_1 .. d_3 and d_0 weighs
+// nothing (its fourth overlap, zero as the box ends by home + 2, is not
+// used; docs/perspective.md, "The dataflow").
 //
 // Latency: 0 (combinational). Handshake: none (pure function).
 //
@@ -29,15 +34,20 @@ module cube4_box_taps #(
 ) (
   input  logic [4*DataBits-1:0]        data_i,
   input  logic [4*(WeightBits+1)-1:0]  overlap_i,
+  input  logic                         shift_i,
   output logic [SumBits-1:0]           sum_o
 );
 
   localparam int unsigned OvBits = WeightBits + 1;
 
+  // The overlaps in the data's order.
+  logic [4*OvBits-1:0] weight;
+  assign weight = shift_i ? {overlap_i[0 +: 3*OvBits], OvBits'(0)} : overlap_i;
+
   always_comb begin
     sum_o = '0;
     for (int i = 0; i < 4; i++) begin
-      sum_o = sum_o + SumBits'(overlap_i[i*OvBits +: OvBits]) * SumBits'(data_i[i*DataBits +: DataBits]);
+      sum_o = sum_o + SumBits'(weight[i*OvBits +: OvBits]) * SumBits'(data_i[i*DataBits +: DataBits]);
     end
   end
 

@@ -103,6 +103,7 @@ module cube4_interp_box #(
     ) u_column (
       .data_i   (column),
       .overlap_i(oy_i),
+      .shift_i  (1'b0),
       .sum_o    (col_d[i*ColBits +: ColBits])
     );
   end
@@ -123,6 +124,7 @@ module cube4_interp_box #(
   ) u_row (
     .data_i   (col_q),
     .overlap_i(ox_q),
+    .shift_i  (1'b0),
     .sum_o    (sum_d)
   );
 

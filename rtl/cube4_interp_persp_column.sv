@@ -84,7 +84,6 @@ module cube4_interp_persp_column #(
 );
 
   localparam int unsigned V              = VoxelBits;
-  localparam int unsigned OvBits         = WeightBits + 1;
   localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
   localparam int unsigned SliceDepthBits = $clog2(SliceDepth + 1);
 
@@ -194,9 +193,9 @@ module cube4_interp_persp_column #(
 
   // -------------------------------------------------------------------------
   // The window's four rows of each slice, row r = b-3+j at j (depth 3-j),
-  // zero where not kept; the box's overlaps in window order.
-  logic [4*V-1:0]      win_front, win_back;
-  logic [4*OvBits-1:0] oy_win;
+  // zero where not kept; the box weighs them from row 1 when it starts at
+  // the home row (cube4_box_taps' shift_i).
+  logic [4*V-1:0] win_front, win_back;
   for (genvar j = 0; j < 4; j++) begin : g_window
     logic [2*V-1:0] pair;
     if (j == 3) begin : g_current
@@ -207,15 +206,14 @@ module cube4_interp_persp_column #(
     assign win_front[j*V +: V] = keep[3-j] ? pair[0 +: V] : '0;
     assign win_back[j*V +: V]  = keep[3-j] ? pair[V +: V] : '0;
   end
-  assign oy_win = oy_left_i ? oy_i : {oy_i[0 +: 3*OvBits], OvBits'(0)};
-
   logic [ColBits-1:0] front_d, back_d, front_q, back_q;
   cube4_box_taps #(
     .DataBits  (V),
     .WeightBits(WeightBits)
   ) u_front (
     .data_i   (win_front),
-    .overlap_i(oy_win),
+    .overlap_i(oy_i),
+    .shift_i  (!oy_left_i),
     .sum_o    (front_d)
   );
   cube4_box_taps #(
@@ -223,7 +221,8 @@ module cube4_interp_persp_column #(
     .WeightBits(WeightBits)
   ) u_back (
     .data_i   (win_back),
-    .overlap_i(oy_win),
+    .overlap_i(oy_i),
+    .shift_i  (!oy_left_i),
     .sum_o    (back_d)
   );
 

@@ -22,3 +22,8 @@ cube4_rtl_variant(test_rtl_interp_box cube4_interp_box Vcube4_interp_box_w10 PAR
 cube4_rtl_variant(test_rtl_interp_box cube4_interp_persp_column Vcube4_interp_persp_column
   SOURCES cube4_delay_ram.sv cube4_box_taps.sv PARAMS BeamDepth=32 SliceDepth=1024)
 target_sources(test_rtl_interp_box PRIVATE ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_column.cpp)
+# And its home stage (cube4_interp_persp_home: the row stage, the means and
+# the z lerp).
+cube4_rtl_variant(test_rtl_interp_box cube4_interp_persp_home Vcube4_interp_persp_home
+  SOURCES cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv)
+target_sources(test_rtl_interp_box PRIVATE ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_home.cpp)
