@@ -80,7 +80,12 @@ module cube4_interp_persp_column #(
   // Column sums.
   output logic                          valid_o,
   output logic [ColBits-1:0]            col_front_o,
-  output logic [ColBits-1:0]            col_back_o
+  output logic [ColBits-1:0]            col_back_o,
+  // The step's place in the stream, for the ring's control (combinational):
+  // its beam drains the finished pass, and the beam of its pass (0, 1, 2,
+  // then 3 for any later beam).
+  output logic                          draining_o,
+  output logic [1:0]                    beam_o
 );
 
   localparam int unsigned V              = VoxelBits;
@@ -240,6 +245,8 @@ module cube4_interp_persp_column #(
       back_q  <= back_d;
     end
   end
+  assign draining_o  = draining;
+  assign beam_o      = beam_d;
   assign valid_o     = valid_q;
   assign col_front_o = front_q;
   assign col_back_o  = back_q;

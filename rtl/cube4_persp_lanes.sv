@@ -21,8 +21,9 @@
 //
 // Latency: 1. In the cycle after start_i (step 0, from ray rays_lo_i) or
 // advance_i (the next step) the outputs describe that step; they hold
-// otherwise. start_i takes precedence. The slice's constants must hold
-// from start_i to the last step (cube4_persp_slice holds them).
+// otherwise. start_i takes precedence. The slice's constants are taken at
+// start_i and kept for the walk, so a ring may start a walk on one slice
+// while it still shows the last step of another's.
 //
 // Widths (P = PosBits, F = FracBits, W = WeightBits, R = RayBits):
 //   spacing_i, ray0_i  P bits, signed, F fraction (the slice's m_k, c_k)
@@ -70,20 +71,20 @@ module cube4_persp_lanes #(
   localparam int unsigned LaneBits = $clog2(Pipes + 1);
   localparam int unsigned IntBits  = PosBits - FracBits;  // a position's cell, signed
 
+  // The walk's state: the first ray not yet placed, its position, and the
+  // step's first cell; the walk's slice: the spacing and the rays' end.
+  logic signed [RayBits-1:0] u_q, u_d, hi_q;
+  logic signed [PosBits-1:0] pos_q, pos_d, spacing_q;
+  logic signed [IntBits-1:0] base_q, base_d;
+
   // i * spacing for i = 0 .. Pipes: the candidates' offsets and the
   // advances (constant multiples: shifts and adds). Flat vectors: yosys
   // 0.23 reads no multi-dimensional packed arrays and warns on unpacked
   // ones written in always_comb; the fields are two's complement.
   logic [(Pipes+1)*PosBits-1:0] multiple;
   for (genvar i = 0; i <= Pipes; i++) begin : g_multiple
-    assign multiple[i*PosBits +: PosBits] = PosBits'(i) * spacing_i;
+    assign multiple[i*PosBits +: PosBits] = PosBits'(i) * spacing_q;
   end
-
-  // The walk's state: the first ray not yet placed, its position, and the
-  // step's first cell.
-  logic signed [RayBits-1:0] u_q, u_d;
-  logic signed [PosBits-1:0] pos_q, pos_d;
-  logic signed [IntBits-1:0] base_q, base_d;
 
   // Candidates: ray u_q + i, placed if a ray of the slice homed in the step.
   logic [Pipes-1:0]         placed;
@@ -97,7 +98,7 @@ module cube4_persp_lanes #(
       cand_pos[i*PosBits +: PosBits]  = pos_q + multiple[i*PosBits +: PosBits];
       cand_ray[i*RayBits +: RayBits]  = u_q + RayBits'(i);
       cand_lane[i*IntBits +: IntBits] = IntBits'($signed(cand_pos[i*PosBits +: PosBits]) >>> FracBits) - base_q;
-      placed[i] = $signed(cand_ray[i*RayBits +: RayBits]) < rays_hi_i &&
+      placed[i] = $signed(cand_ray[i*RayBits +: RayBits]) < hi_q &&
                   $signed(cand_lane[i*IntBits +: IntBits]) < $signed(IntBits'(Pipes));
       // Homes rise with the ray: the placed candidates are a prefix.
       if (placed[i]) count = LaneBits'(i + 1);
@@ -137,6 +138,13 @@ module cube4_persp_lanes #(
     end
   end
 
+  always_ff @(posedge clk_i) begin
+    if (start_i) begin
+      spacing_q <= spacing_i;
+      hi_q      <= rays_hi_i;
+    end
+  end
+
   // Lane k takes the candidate homed in its cell (at most one: homes differ).
   for (genvar k = 0; k < Pipes; k++) begin : g_lane
     logic                      hit;
@@ -162,7 +170,7 @@ module cube4_persp_lanes #(
       .WeightBits(WeightBits)
     ) u_box (
       .pos_i    (pos),
-      .spacing_i(spacing_i[FracBits+1:0]),
+      .spacing_i(spacing_q[FracBits+1:0]),
       .first_o  (first),
       .overlap_o(overlap_o[k*4*(WeightBits+1) +: 4*(WeightBits+1)])
     );

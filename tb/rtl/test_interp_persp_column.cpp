@@ -20,6 +20,7 @@
 #include "golden/units/dda.hpp"
 #include "golden/units/interp_box.hpp"
 #include "tb/rtl/rtl_check.hpp"
+#include "tb/rtl/voxel_grid.hpp"
 
 namespace {
 
@@ -28,16 +29,9 @@ namespace rtl = cube4::rtl;
 using rtl::Fields;
 
 constexpr int kV = 12, kW = 8;
-constexpr int kBeamDepth = 32, kSliceDepth = 1024;  // rtl/groups/interp.cmake
+constexpr int kBeamDepth = 32, kSliceDepth = 1024;  // rtl/groups/interp_persp.cmake
 
-struct Volume {
-  int nx = 0, ny = 0, nz = 0;
-  std::vector<uint32_t> v;
-  uint32_t at(int x, int y, int z) const {
-    if (x < 0 || x >= nx || y < 0 || y >= ny || z < 0 || z >= nz) return 0;
-    return v[(static_cast<size_t>(z) * ny + y) * nx + x];
-  }
-};
+using Volume = rtl::VoxelGrid;
 
 // One beam's y box: four overlaps and whether it starts a row before the home.
 struct BeamBox {
@@ -97,11 +91,9 @@ TEST(RtlInterpPerspColumn, EveryStepOfRandomStreamsMatchesGolden) {
   };
   while (steps < n && c.ok()) {
     Volume vol;
-    vol.nx = static_cast<int>(rng.range(1, kBeamDepth));
-    vol.ny = static_cast<int>(rng.range(2, 12));
-    vol.nz = static_cast<int>(rng.range(1, 5));
-    if (vol.nx * vol.ny > kSliceDepth) continue;
-    vol.v.resize(static_cast<size_t>(vol.nx) * vol.ny * vol.nz);
+    const int nx = static_cast<int>(rng.range(1, kBeamDepth)), ny = static_cast<int>(rng.range(2, 12));
+    if (nx * ny > kSliceDepth) continue;
+    vol.resize(nx, ny, static_cast<int>(rng.range(1, 5)));
     for (uint32_t& x : vol.v) x = static_cast<uint32_t>(rng.chance(0.1) ? (rng.chance(0.5) ? 0 : 4095) : rng.bits(kV));
     const int S = static_cast<int>(rng.range(1, 3)), K = vol.nz * S;
     // Pass P's beams 0 .. ny-1, then two flush beams after the last pass.

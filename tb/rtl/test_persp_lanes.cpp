@@ -1,8 +1,9 @@
 // RTL equivalence tests of the perspective lane assignment, cube4_persp_lanes,
 // against golden home_lane() (golden/perspective_dataflow.hpp): for random
 // frames, slices and axes, every lane of every step of a walk (with random
-// pauses) holds the golden ray, box and weight of its cell, at p = 1, 4, 5
-// and 16; and over a walk every ray of the slice is placed exactly once.
+// pauses, the slice's inputs scrambled once the walk has started) holds the
+// golden ray, box and weight of its cell, at p = 1, 4, 5 and 16; and over a
+// walk every ray of the slice is placed exactly once.
 //
 // CUBE4_RTL_VECTORS overrides the random lane count (default 1,000,000).
 #include <gtest/gtest.h>
@@ -86,6 +87,13 @@ void walk_random_slices(int pipes, uint64_t salt) {
       rtl::settle(m);
       rtl::rise(m);
       ++cycle;
+      if (m.start_i) {
+        // The walk keeps the slice it started on: the inputs may move on.
+        m.spacing_i = word(static_cast<int64_t>(rng.bits(kPosBits)));
+        m.ray0_i = word(static_cast<int64_t>(rng.bits(kPosBits)));
+        m.rays_lo_i = static_cast<uint16_t>(rng.bits(kRayBits));
+        m.rays_hi_i = static_cast<uint16_t>(rng.bits(kRayBits));
+      }
       m.start_i = 0;
       rtl::settle(m);
       for (int lane = 0; lane < pipes; ++lane) {

@@ -1,0 +1,23 @@
+# The perspective interpolation unit (`interp_persp`, docs/rtl-interp-persp.md):
+# its column stage (cube4_interp_persp_column), its home stage
+# (cube4_interp_persp_home) and the ring of them (cube4_interp_persp_ring,
+# with its walks cube4_persp_lanes). One executable, test_rtl_interp_persp.
+# Small delays (BeamDepth 32, SliceDepth 1024; rings of MaxDim 24) so that
+# the tests fill them; the test files hold the same values.
+cube4_rtl_test(test_rtl_interp_persp
+  TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_column.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_home.cpp
+        ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_ring.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_column Vcube4_interp_persp_column
+  SOURCES cube4_delay_ram.sv cube4_box_taps.sv PARAMS BeamDepth=32 SliceDepth=1024)
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_home Vcube4_interp_persp_home
+  SOURCES cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv)
+set(_persp_ring_sources cube4_delay_ram.sv cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv cube4_box_axis.sv
+    cube4_persp_lanes.sv cube4_interp_persp_column.sv cube4_interp_persp_home.sv)
+foreach(p 4 1 5 8)
+  set(_prefix Vcube4_interp_persp_ring_p${p})
+  if(p EQUAL 4)
+    set(_prefix Vcube4_interp_persp_ring)
+  endif()
+  cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring ${_prefix} SOURCES ${_persp_ring_sources}
+    PARAMS NumPipes=${p} MaxDim=24)
+endforeach()

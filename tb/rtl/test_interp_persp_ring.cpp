@@ -1,0 +1,237 @@
+// RTL equivalence tests of the perspective interpolation ring,
+// cube4_interp_persp_ring, against golden perspective_sample()
+// (golden/perspective.hpp): random volumes and cameras (random registers as
+// the host makes them, and the cameras of random perspective scenes),
+// streamed as the system streams a frame (pass after pass, three flush
+// beams at the end; sometimes two frames back to back), with random idle cycles.
+// Every ray of every slice must leave exactly once, with golden's sample,
+// on the lane and in the cycle the dataflow says: the stream position two
+// columns after its home in the beam two after its home row, 4 cycles
+// after that step (docs/rtl-interp-persp.md).
+//
+// CUBE4_RTL_VECTORS overrides the sample count per ring (default 300,000).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "Vcube4_interp_persp_ring.h"
+#include "Vcube4_interp_persp_ring_p1.h"
+#include "Vcube4_interp_persp_ring_p5.h"
+#include "Vcube4_interp_persp_ring_p8.h"
+#include "golden/errors.hpp"
+#include "golden/host_driver.hpp"
+#include "golden/perspective.hpp"
+#include "golden/perspective_dataflow.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
+#include "tb/rtl/persp_registers.hpp"
+#include "tb/rtl/rtl_check.hpp"
+#include "tb/rtl/voxel_grid.hpp"
+
+namespace {
+
+namespace g = cube4::golden;
+namespace rtl = cube4::rtl;
+
+constexpr int kV = 12, kF = 20, kPos = 48, kRay = 16, kTag = 8;
+constexpr int kMaxDim = 24;  // rtl/groups/interp_persp.cmake
+
+uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_t{1} << bits) - 1); }
+
+using Volume = rtl::VoxelGrid;
+
+// A perspective camera from a random scene over a volume of these sizes.
+g::Registers scene_registers(rtl::Random& rng, std::array<int, 3> size) {
+  for (;;) {
+    const std::string json =
+        R"({"volume": {"synthetic": "sphere", "size": [)" + std::to_string(size[0]) + "," + std::to_string(size[1]) +
+        "," + std::to_string(size[2]) + R"(]}, "supersampling": )" + std::to_string(rng.range(1, 3)) +
+        R"(, "view": {"projection": "perspective", "fov": )" + std::to_string(rng.range(10, 89)) +
+        R"(, "rotate": [)" + std::to_string(rng.range(-180, 179)) + "," + std::to_string(rng.range(-180, 179)) + "," +
+        std::to_string(rng.range(-180, 179)) + "]}}";
+    try {
+      const g::Scene s = g::parse_scene(json, "ring.json");
+      const g::Volume vol = g::load_volume(s.volume, s.precision.voxel_bits, ".");
+      return g::program_host(s, vol).regs;
+    } catch (const g::InputError&) {
+      // A camera too close for the volume's depth: another one.
+    }
+  }
+}
+
+struct Want {
+  uint32_t sample = 0;
+  int lane = 0;
+  uint64_t cycle = 0;
+  bool seen = false;
+};
+
+template <class M>
+void test_ring(int p, uint64_t salt) {
+  rtl::Random rng(salt);
+  const auto dut = rtl::make_dut<M>();
+  M& m = *dut;
+  rtl::reset(m);
+  rtl::Checker c("cube4_interp_persp_ring p=" + std::to_string(p));
+  const long n = rtl::vector_count(300000);
+  rtl::Timer t("cube4_interp_persp_ring p=" + std::to_string(p) + ": " + std::to_string(n) + " samples");
+  uint64_t cycle = 0;
+  long samples = 0;
+  int frames_run = 0;
+  while (samples < n && c.ok()) {
+    const bool from_scene = rng.chance(0.5);
+    g::Registers r;
+    if (from_scene) {
+      std::array<int, 3> size{};
+      for (int& d : size) d = static_cast<int>(rng.range(2, kMaxDim));
+      r = scene_registers(rng, size);
+    } else {
+      r = rtl::random_perspective_registers(rng, kF, {kMaxDim, kMaxDim, 24}, {1, 2, 1}, 3);
+    }
+    if (r.dim[1] < 2 || r.dim[0] > kMaxDim || r.dim[1] > kMaxDim) continue;
+    const int K = r.sample_slices();
+    const int frames = rng.chance(0.3) ? 2 : 1;
+    if (frames * K > 255) continue;
+    Volume vol;
+    vol.resize(r.dim[0], r.dim[1], r.dim[2]);
+    for (uint32_t& x : vol.v) x = static_cast<uint32_t>(rng.edgy((1 << kV) - 1, 0.1));
+    const int B = (vol.nx + p - 1) / p;
+    const int64_t Bp = int64_t{B} * p;
+
+    std::vector<g::PerspectiveSlice> slices;
+    for (int k = 0; k < K; ++k) slices.push_back(g::perspective_slice(r, k));
+    // Golden: every ray of every slice of every frame, by (tag, u, v); its
+    // lane and the index of the step that forms it.
+    std::map<std::tuple<int, int64_t, int64_t>, Want> want;
+    std::vector<std::pair<std::tuple<int, int64_t, int64_t>, int64_t>> forming;  // key, step index
+    for (int f = 0; f < frames; ++f)
+      for (int k = 0; k < K; ++k) {
+        const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
+        auto voxel = [&](int x, int y, int dz) { return vol.at(x, y, s.z_voxel + dz); };
+        for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+          for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+            const int64_t hx = g::home_cell(g::ray_position(s.ray0_x, s.spacing, u), kF);
+            const int64_t hy = g::home_cell(g::ray_position(s.ray0_y, s.spacing, v), kF);
+            // The stream position two columns after the home, two beams below.
+            const int64_t pass = int64_t{f} * K + k;
+            const int64_t pos = (pass * vol.ny + hy + 2) * Bp + hx + 2;
+            const auto key = std::make_tuple(f * K + k, u, v);
+            want[key] = {g::perspective_sample(r, s, u, v, voxel), static_cast<int>(pos % p), 0, false};
+            forming.push_back({key, pos / p});
+          }
+      }
+
+    // The stream, recording each step's cycle.
+    std::vector<uint64_t> step_cycle;
+    auto observe = [&] {
+      for (int lane = 0; lane < p; ++lane) {
+        if (!rtl::get_bits(m.valid_o, lane, 1)) continue;
+        const int tag = static_cast<int>(rtl::get_bits(m.tag_o, lane * kTag, kTag));
+        const int64_t u = rtl::sign_extend(rtl::get_bits(m.ray_u_o, lane * kRay, kRay), kRay);
+        const int64_t v = rtl::sign_extend(rtl::get_bits(m.ray_v_o, lane * kRay, kRay), kRay);
+        const int64_t got = static_cast<int64_t>(rtl::get_bits(m.sample_o, lane * kV, kV));
+        const auto it = want.find(std::make_tuple(tag, u, v));
+        const rtl::Fields where{{"frame pass", tag}, {"u", u}, {"v", v}, {"lane", lane}, {"nx", vol.nx},
+                                {"ny", vol.ny}, {"nz", vol.nz}, {"S", r.supersampling}};
+        if (it == want.end() || it->second.seen) {
+          c.check(cycle, where, {{"expected", 0}}, {{"sample out", 1}});
+          continue;
+        }
+        it->second.seen = true;
+        c.check(cycle, where, {{"sample", it->second.sample}, {"lane", it->second.lane}, {"cycle", static_cast<int64_t>(it->second.cycle)}},
+                {{"sample", got}, {"lane", lane}, {"cycle", static_cast<int64_t>(cycle)}});
+        ++samples;
+      }
+    };
+    auto clock = [&] {
+      rtl::settle(m);
+      rtl::rise(m);
+      ++cycle;
+      rtl::settle(m);
+      observe();
+    };
+    // The forming steps' cycles are known once the step is driven; the
+    // check of a sample needs them before it leaves (4 cycles later).
+    size_t next_forming = 0;
+    auto note_cycles = [&] {
+      while (next_forming < forming.size() &&
+             static_cast<size_t>(forming[next_forming].second) < step_cycle.size()) {
+        want[forming[next_forming].first].cycle = step_cycle[static_cast<size_t>(forming[next_forming].second)] + 4;
+        ++next_forming;
+      }
+    };
+    std::sort(forming.begin(), forming.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    const int passes = frames * K;
+    for (int pass = 0; pass <= passes && c.ok(); ++pass) {
+      const bool flush = pass == passes;
+      const int k = pass % K;
+      const g::PerspectiveSlice& s = slices[static_cast<size_t>(flush ? 0 : k)];
+      const int z_in = s.wz == 0 ? s.z_voxel : s.z_voxel + 1;
+      for (int b = 0; b < (flush ? 3 : vol.ny) && c.ok(); ++b)
+        for (int j = 0; j < B && c.ok(); ++j) {
+          while (rng.chance(0.15)) {
+            m.valid_i = 0;
+            clock();
+          }
+          m.valid_i = 1;
+          m.beam_start_i = j == 0;
+          m.beam_end_i = j == B - 1;
+          m.slice_start_i = !flush && b == 0;
+          m.slice_end_i = !flush && b == vol.ny - 1;
+          m.flush_i = flush;
+          for (int lane = 0; lane < p; ++lane)
+            rtl::put_bits(m.voxels_i, lane * kV, kV, flush ? rng.bits(kV) : vol.at(j * p + lane, b, z_in));
+          m.wz_i = static_cast<uint16_t>(flush ? rng.bits(9) : s.wz);
+          m.tag_i = static_cast<uint8_t>(flush ? rng.bits(kTag) : pass);
+          m.spacing_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.spacing, kPos);
+          m.ray0_x_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.ray0_x, kPos);
+          m.ray0_y_i = word(s.ray0_y, kPos);
+          m.rays_x_lo_i = static_cast<uint16_t>(word(s.rays_x.lo, kRay));
+          m.rays_x_hi_i = static_cast<uint16_t>(word(s.rays_x.hi, kRay));
+          m.rays_y_lo_i = static_cast<uint16_t>(word(s.rays_y.lo, kRay));
+          m.rays_y_hi_i = static_cast<uint16_t>(word(s.rays_y.hi, kRay));
+          m.recip_i = static_cast<uint32_t>(flush ? rng.bits(kV + 6) : s.box_reciprocal);
+          step_cycle.push_back(cycle);  // the cycle it is driven in
+          note_cycles();
+          clock();
+        }
+    }
+    m.valid_i = 0;
+    for (int i = 0; i < 6; ++i) clock();
+    for (const auto& [key, w] : want)
+      if (!w.seen && c.ok()) {
+        const g::PerspectiveSlice& s = slices[static_cast<size_t>(std::get<0>(key) % K)];
+        c.check(cycle,
+                {{"frame pass", std::get<0>(key)}, {"passes", frames * K}, {"u", std::get<1>(key)},
+                 {"v", std::get<2>(key)}, {"nx", vol.nx}, {"ny", vol.ny}, {"p", p},
+                 {"home x", g::home_cell(g::ray_position(s.ray0_x, s.spacing, std::get<1>(key)), kF)},
+                 {"home y", g::home_cell(g::ray_position(s.ray0_y, s.spacing, std::get<2>(key)), kF)},
+                 {"due in cycle", static_cast<int64_t>(w.cycle)}},
+                {{"left", 1}}, {{"left", 0}});
+      }
+    ++frames_run;
+  }
+  EXPECT_TRUE(c.ok()) << c.report();
+  std::printf("  %d streams, %ld samples\n", frames_run, samples);
+}
+
+TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSaysAtP4) {
+  test_ring<Vcube4_interp_persp_ring>(4, 91);
+}
+TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSaysAtP1) {
+  test_ring<Vcube4_interp_persp_ring_p1>(1, 92);
+}
+TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSaysAtP5) {
+  test_ring<Vcube4_interp_persp_ring_p5>(5, 93);
+}
+TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSaysAtP8) {
+  test_ring<Vcube4_interp_persp_ring_p8>(8, 94);
+}
+
+}  // namespace
