@@ -1,6 +1,6 @@
 // cube4_interp_persp_ring: NumPipes perspective interpolation pipelines in a
 // ring (Cube-4 §3; docs/perspective.md, "The dataflow";
-// docs/rtl-interp-persp.md, "The ring").
+// docs/rtl-interp-persp.md, "cube4_interp_persp_ring").
 //
 // Function: for every sample slice k of the stream and every ray (u, v)
 // that samples it, golden perspective_sample(regs, perspective_slice(k), u,
