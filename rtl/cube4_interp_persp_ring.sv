@@ -220,7 +220,11 @@ module cube4_interp_persp_ring #(
   logic unused_y_weight;
   assign unused_y_weight = ^y_weight;  // the sample's place: the cut plane's, not this unit's
 
-  // The walk along x: one step per partial beam, from each beam's first.
+  // The walk along x: one step per partial beam, from each beam's first;
+  // not restarted by the third flush beam, which forms no cells of its own
+  // and brings no slice (its wrapped cells are the history's).
+  logic x_start;
+  assign x_start = valid_i && beam_start_i && !(flush_i && !draining);
   logic [P-1:0]          x_valid, x_left;
   logic [P*RayBits-1:0]  x_ray;
   logic [P*BoxBits-1:0]  x_box;
@@ -238,8 +242,8 @@ module cube4_interp_persp_ring #(
     .ray0_i    (cell_ray0_x),
     .rays_lo_i (cell_x_lo),
     .rays_hi_i (cell_x_hi),
-    .start_i   (valid_i && beam_start_i),
-    .advance_i (valid_i && !beam_start_i),
+    .start_i   (x_start),
+    .advance_i (valid_i && !x_start),
     .valid_o   (x_valid),
     .ray_o     (x_ray),
     .box_left_o(x_left),

@@ -6,7 +6,8 @@
 # the tests fill them; the test files hold the same values.
 cube4_rtl_test(test_rtl_interp_persp
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_column.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_home.cpp
-        ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_ring.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
+        ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_ring.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_sva.cpp
+        ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_column Vcube4_interp_persp_column
   SOURCES cube4_delay_ram.sv cube4_box_taps.sv PARAMS BeamDepth=32 SliceDepth=1024)
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_home Vcube4_interp_persp_home
@@ -21,3 +22,5 @@ foreach(p 4 1 5 8)
   cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring ${_prefix} SOURCES ${_persp_ring_sources}
     PARAMS NumPipes=${p} MaxDim=24)
 endforeach()
+# The lane walk alone, for its assertion's test (test_interp_persp_sva.cpp).
+cube4_rtl_variant(test_rtl_interp_persp cube4_persp_lanes Vcube4_persp_lanes_p4 SOURCES cube4_box_axis.sv PARAMS Pipes=4)

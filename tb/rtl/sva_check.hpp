@@ -88,4 +88,17 @@ void expect_quiet(SvaBench<M>& b) {
   EXPECT_EQ(out.find("Assertion failed"), std::string::npos) << out;
 }
 
+// Runs `stream` on a fresh model M, reset first; expects assertion `label`
+// with `parts` in its message, or (label empty) no assertion.
+template <class M, class Stream>
+void run_expecting(Stream&& stream, const std::string& label, std::initializer_list<std::string> parts) {
+  SvaBench<M> b;
+  reset(*b);
+  stream(*b);
+  if (label.empty())
+    expect_quiet(b);
+  else
+    expect_fired(b, label, parts);
+}
+
 }  // namespace cube4::rtl

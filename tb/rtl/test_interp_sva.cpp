@@ -62,13 +62,7 @@ void pass(M& m, int ny, int b, int wz, const Edit& edit = nullptr, bool flush = 
 // in its message, or (label empty) no assertion.
 template <class M>
 void run(const std::function<void(M&)>& stream, const std::string& label, std::initializer_list<std::string> parts) {
-  SvaBench<M> b;
-  reset(*b);
-  stream(*b);
-  if (label.empty())
-    expect_quiet(b);
-  else
-    expect_fired(b, label, parts);
+  run_expecting<M>(stream, label, parts);
 }
 
 using P2 = Vcube4_interp_ring_p2;  // MaxDim 16: beam delay 8, slice store 128 entries
