@@ -47,11 +47,23 @@
 // Reset: control (valid, the drain count); data registers and RAMs are not
 // reset.
 //
+// Voxel tags (bela §III; VoxelTagBits > 0): voxel_i is the memory word
+// {tag, value}, kept whole in the store and the row delay, so a tag moves as
+// its value does. col_tag_o is the tag of the column's voxel nearest the
+// cell's sample along y and z: window row 1 + y_near_i (the sample's row
+// weight at least half: row Y+1, else Y) of voxel slice z_voxel + z_upper_i
+// (its z weight at least half; golden upper_corner()), zero where that row
+// lies outside the pass, as golden's tag_at() outside the volume. Both
+// inputs belong to the cell's pass, as oy_i does. Without tags col_tag_o is
+// 0 and none of it is built.
+//
 // Widths (V = VoxelBits, W = WeightBits): a column sum is V+W+2 bits
 // (cube4_box_taps).
 //
 // Parameters:
 //   VoxelBits, WeightBits - as cube4_box_taps (Precision defaults 12, 8)
+//   VoxelTagBits          - voxel tag width (0: none)
+//   WordBits, TagPortBits - (derived) voxel word and col_tag_o widths
 //   BeamDepth             - row delay entries: max partial beams per beam
 //   SliceDepth            - slice store entries: max ny * partial beams
 `include "cube4_pkg.sv"
@@ -61,7 +73,10 @@ module cube4_interp_persp_column #(
   parameter int unsigned  WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned  BeamDepth  = 64,
   parameter int unsigned  SliceDepth = 16384,
-  localparam int unsigned ColBits    = VoxelBits + WeightBits + 2
+  parameter int unsigned  VoxelTagBits = 0,
+  localparam int unsigned ColBits    = VoxelBits + WeightBits + 2,
+  localparam int unsigned WordBits   = VoxelBits + VoxelTagBits,
+  localparam int unsigned TagPortBits = VoxelTagBits > 0 ? VoxelTagBits : 1
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
@@ -72,15 +87,19 @@ module cube4_interp_persp_column #(
   input  logic                          slice_start_i,
   input  logic                          slice_end_i,
   input  logic                          flush_i,
-  input  logic [VoxelBits-1:0]          voxel_i,
+  input  logic [WordBits-1:0]           voxel_i,
   input  logic [WeightBits:0]           wz_i,
   // The beam's y box (cube4_persp_lanes along y).
   input  logic [4*(WeightBits+1)-1:0]   oy_i,
   input  logic                          oy_left_i,
+  // The cell's nearest voxel along y and z (tags only).
+  input  logic                          y_near_i,
+  input  logic                          z_upper_i,
   // Column sums.
   output logic                          valid_o,
   output logic [ColBits-1:0]            col_front_o,
   output logic [ColBits-1:0]            col_back_o,
+  output logic [TagPortBits-1:0]        col_tag_o,
   // The step's place in the stream, for the ring's control (combinational):
   // its beam drains the finished pass, and the beam of its pass (0, 1, 2,
   // then 3 for any later beam).
@@ -88,7 +107,8 @@ module cube4_interp_persp_column #(
   output logic [1:0]                    beam_o
 );
 
-  localparam int unsigned V              = VoxelBits;
+  localparam int unsigned V              = WordBits;  // storage holds whole words
+  localparam int unsigned VB             = VoxelBits;
   localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
   localparam int unsigned SliceDepthBits = $clog2(SliceDepth + 1);
 
@@ -200,7 +220,8 @@ module cube4_interp_persp_column #(
   // The window's four rows of each slice, row r = b-3+j at j (depth 3-j),
   // zero where not kept; the box weighs them from row 1 when it starts at
   // the home row (cube4_box_taps' shift_i).
-  logic [4*V-1:0] win_front, win_back;
+  logic [4*V-1:0]  win_front_w, win_back_w;  // words
+  logic [4*VB-1:0] win_front, win_back;      // values
   for (genvar j = 0; j < 4; j++) begin : g_window
     logic [2*V-1:0] pair;
     if (j == 3) begin : g_current
@@ -208,12 +229,29 @@ module cube4_interp_persp_column #(
     end else begin : g_delayed
       assign pair = rows_rdata[j*2*V +: 2*V];
     end
-    assign win_front[j*V +: V] = keep[3-j] ? pair[0 +: V] : '0;
-    assign win_back[j*V +: V]  = keep[3-j] ? pair[V +: V] : '0;
+    assign win_front_w[j*V +: V] = keep[3-j] ? pair[0 +: V] : '0;
+    assign win_back_w[j*V +: V]  = keep[3-j] ? pair[V +: V] : '0;
+    assign win_front[j*VB +: VB] = win_front_w[j*V +: VB];
+    assign win_back[j*VB +: VB]  = win_back_w[j*V +: VB];
+  end
+
+  // The tag of the cell's nearest voxel of the column: window row 1 or 2.
+  logic [TagPortBits-1:0] tag_d, tag_q;
+  if (VoxelTagBits > 0) begin : g_tag
+    assign tag_d = z_upper_i ? (y_near_i ? win_back_w[2*V+VB +: VoxelTagBits] : win_back_w[V+VB +: VoxelTagBits])
+                             : (y_near_i ? win_front_w[2*V+VB +: VoxelTagBits] : win_front_w[V+VB +: VoxelTagBits]);
+    // Window rows 0 and 3 are never the nearest (the sample lies in row 1).
+    logic unused_far_tags;
+    assign unused_far_tags = ^{win_front_w[VB +: VoxelTagBits], win_front_w[3*V+VB +: VoxelTagBits],
+                               win_back_w[VB +: VoxelTagBits], win_back_w[3*V+VB +: VoxelTagBits]};
+  end else begin : g_no_tag
+    logic unused_tag;
+    assign unused_tag = ^{y_near_i, z_upper_i, win_front_w, win_back_w};
+    assign tag_d = '0;
   end
   logic [ColBits-1:0] front_d, back_d, front_q, back_q;
   cube4_box_taps #(
-    .DataBits  (V),
+    .DataBits  (VB),
     .WeightBits(WeightBits)
   ) u_front (
     .data_i   (win_front),
@@ -222,7 +260,7 @@ module cube4_interp_persp_column #(
     .sum_o    (front_d)
   );
   cube4_box_taps #(
-    .DataBits  (V),
+    .DataBits  (VB),
     .WeightBits(WeightBits)
   ) u_back (
     .data_i   (win_back),
@@ -243,6 +281,7 @@ module cube4_interp_persp_column #(
     if (valid_i) begin
       front_q <= front_d;
       back_q  <= back_d;
+      tag_q   <= tag_d;
     end
   end
   assign draining_o  = draining;
@@ -250,5 +289,6 @@ module cube4_interp_persp_column #(
   assign valid_o     = valid_q;
   assign col_front_o = front_q;
   assign col_back_o  = back_q;
+  assign col_tag_o   = tag_q;
 
 endmodule

@@ -40,6 +40,13 @@
 // and tag_o, 4 cycles after the step that forms it (the column stage's
 // register, then cube4_interp_persp_home's three stages).
 //
+// Voxel tags (bela §III; VoxelTagBits > 0): voxels_i holds the memory words
+// {tag, value}; vtag_o is each sample's tag, that of the voxel nearest it
+// (golden render_perspective(): nearest_voxel() in x and y, upper_corner()
+// of wz in z): each column stage picks its column's nearest row and slice,
+// the forming pipeline the nearest of the window's columns X and X+1.
+// Without tags vtag_o is 0 and none of it is built.
+//
 // Preconditions: as cube4_interp_persp_column's (ny >= 2, complete passes,
 // nx <= MaxDim, ny * ceil(nx/p) <= SliceDepth); spacing in [1, 3] voxels.
 //
@@ -49,6 +56,7 @@
 //   VoxelBits, WeightBits - datapath widths (cube4_pkg)
 //   FracBits, PosBits, RayBits - the walks' (cube4_persp_lanes)
 //   TagBits               - the pass tag's width
+//   VoxelTagBits          - voxel tag width (0: none)
 `include "cube4_pkg.sv"
 
 module cube4_interp_persp_ring #(
@@ -60,6 +68,9 @@ module cube4_interp_persp_ring #(
   parameter int unsigned  PosBits    = 48,
   parameter int unsigned  RayBits    = 16,
   parameter int unsigned  TagBits    = 8,
+  parameter int unsigned  VoxelTagBits = 0,
+  localparam int unsigned WordBits   = VoxelBits + VoxelTagBits,
+  localparam int unsigned VTagPortBits = VoxelTagBits > 0 ? VoxelTagBits : 1,
   localparam int unsigned BeamDepth  = (MaxDim + NumPipes - 1) / NumPipes,
   localparam int unsigned SliceDepth = MaxDim * BeamDepth,
   localparam int unsigned RecipBits  = VoxelBits + 6
@@ -73,7 +84,7 @@ module cube4_interp_persp_ring #(
   input  logic                            slice_start_i,
   input  logic                            slice_end_i,
   input  logic                            flush_i,
-  input  logic [NumPipes*VoxelBits-1:0]   voxels_i,
+  input  logic [NumPipes*WordBits-1:0]    voxels_i,
   input  logic [WeightBits:0]             wz_i,
   input  logic [TagBits-1:0]              tag_i,
   // The step's pass's constants.
@@ -90,7 +101,8 @@ module cube4_interp_persp_ring #(
   output logic [NumPipes*VoxelBits-1:0]   sample_o,
   output logic [NumPipes*RayBits-1:0]     ray_u_o,
   output logic [NumPipes*RayBits-1:0]     ray_v_o,
-  output logic [NumPipes*TagBits-1:0]     tag_o
+  output logic [NumPipes*TagBits-1:0]     tag_o,
+  output logic [NumPipes*VTagPortBits-1:0] vtag_o
 );
 
   localparam int unsigned P       = NumPipes;
@@ -98,7 +110,8 @@ module cube4_interp_persp_ring #(
   localparam int unsigned OvBits  = WeightBits + 1;
   localparam int unsigned BoxBits = 4 * OvBits;
   localparam int unsigned ColBits = V + WeightBits + 2;
-  localparam int unsigned PairBits = 2 * ColBits;  // {back, front} column sums
+  localparam int unsigned T        = VTagPortBits;
+  localparam int unsigned PairBits = 2 * ColBits + T;  // {tag, back, front} of a column
   // How many steps back the formation reaches: the window's first column
   // lies three stream positions back, the cell two.
   localparam int unsigned ColDepth  = (3 + P - 1) / P;
@@ -131,7 +144,8 @@ module cube4_interp_persp_ring #(
   // Column stages. Every pipeline's control is the same; pipeline 0's says
   // where the step is.
   logic [P-1:0]          col_valid;
-  logic [P*PairBits-1:0] col_live;  // this step's {back, front} per pipeline
+  logic [P*PairBits-1:0] col_live;  // this step's {tag, back, front} per pipeline
+  logic                  y_near, z_upper;  // the cell's nearest row and slice (tags)
   logic                  draining;
   logic [1:0]            beam;
   logic [BoxBits-1:0]    y_box;
@@ -145,7 +159,8 @@ module cube4_interp_persp_ring #(
       .VoxelBits (V),
       .WeightBits(WeightBits),
       .BeamDepth (BeamDepth),
-      .SliceDepth(SliceDepth)
+      .SliceDepth(SliceDepth),
+      .VoxelTagBits(VoxelTagBits)
     ) u_column (
       .clk_i        (clk_i),
       .rst_ni       (rst_ni),
@@ -155,13 +170,16 @@ module cube4_interp_persp_ring #(
       .slice_start_i(slice_start_i),
       .slice_end_i  (slice_end_i),
       .flush_i      (flush_i),
-      .voxel_i      (voxels_i[k*V +: V]),
+      .voxel_i      (voxels_i[k*WordBits +: WordBits]),
       .wz_i         (wz_i),
       .oy_i         (y_box),
       .oy_left_i    (y_left),
+      .y_near_i     (y_near),
+      .z_upper_i    (z_upper),
       .valid_o      (col_valid[k]),
       .col_front_o  (col_live[k*PairBits +: ColBits]),
       .col_back_o   (col_live[k*PairBits + ColBits +: ColBits]),
+      .col_tag_o    (col_live[k*PairBits + 2*ColBits +: T]),
       .draining_o   (draining_k),
       .beam_o       (beam_k)
     );
@@ -217,8 +235,12 @@ module cube4_interp_persp_ring #(
   assign y_valid = y_valid_bits[0];
   assign y_left  = y_left_bits[0];
   assign y_ray   = $signed(y_ray_bits);
+  // The nearest row (the position's fraction at least half) and slice of
+  // the cell, for the tags; the rest of the weight is the cut plane's.
+  assign y_near  = y_weight[WeightBits-1];
+  assign z_upper = (draining ? old_wz_q : wz_i) >= (WeightBits+1)'(1 << (WeightBits - 1));
   logic unused_y_weight;
-  assign unused_y_weight = ^y_weight;  // the sample's place: the cut plane's, not this unit's
+  assign unused_y_weight = ^y_weight[WeightBits-2:0];
 
   // The walk along x: one step per partial beam, from each beam's first;
   // not restarted by the third flush beam, which forms no cells of its own
@@ -250,6 +272,10 @@ module cube4_interp_persp_ring #(
     .overlap_o (x_box),
     .weight_o  (x_weight)
   );
+  logic [P-1:0] x_near;  // the nearest of the window's columns X and X+1
+  for (genvar k = 0; k < P; k++) begin : g_x_near
+    assign x_near[k] = x_weight[k*WeightBits + WeightBits - 1];
+  end
   logic unused_x_weight;
   assign unused_x_weight = ^x_weight;
 
@@ -290,7 +316,7 @@ module cube4_interp_persp_ring #(
   // Histories, shifted at each formation (the cycle after a step): the
   // column sums of the last ColDepth steps (with their beam's parity), and
   // the lanes and context of the last CellDepth steps. Index 0 is live.
-  localparam int unsigned LaneBits = 1 + 1 + RayBits + BoxBits;  // valid, left, ray, box
+  localparam int unsigned LaneBits = 1 + 1 + 1 + RayBits + BoxBits;  // valid, left, near, ray, box
   logic form;
   assign form = col_valid[0];
 
@@ -304,7 +330,7 @@ module cube4_interp_persp_ring #(
   for (genvar k = 0; k < P; k++) begin : g_live
     assign col_hist[k*(PairBits+1) +: PairBits+1] = {ctx_q[CtxBits-1], col_live[k*PairBits +: PairBits]};
     assign lane_hist[k*LaneBits +: LaneBits] =
-        {x_valid[k], x_left[k], x_ray[k*RayBits +: RayBits], x_box[k*BoxBits +: BoxBits]};
+        {x_valid[k], x_left[k], x_near[k], x_ray[k*RayBits +: RayBits], x_box[k*BoxBits +: BoxBits]};
   end
   assign ctx_hist[0 +: CtxBits] = ctx_q;
   assign col_hist[P*(PairBits+1) +: ColDepth*P*(PairBits+1)] = col_hist_q;
@@ -350,14 +376,15 @@ module cube4_interp_persp_ring #(
     logic [RecipBits-1:0]  cell_recip;
     assign {cell_parity, cell_forms, cell_row_valid, cell_v, cell_tag, cell_wz, cell_recip} = ctx;
 
-    logic                  lane_valid, lane_left;
+    logic                  lane_valid, lane_left, lane_near;
     logic [RayBits-1:0]    lane_ray;
     logic [BoxBits-1:0]    lane_box;
-    assign {lane_valid, lane_left, lane_ray, lane_box} = lane;
+    assign {lane_valid, lane_left, lane_near, lane_ray, lane_box} = lane;
 
     // The window's four columns (position s - 3 + i at i), zero where they
     // belong to another beam than the cell's.
     logic [4*ColBits-1:0] front, back;
+    logic [4*T-1:0]       tags;
     for (genvar i = 0; i < 4; i++) begin : g_col
       localparam int unsigned Back    = 3 - i;  // stream positions back
       localparam int unsigned SrcPipe = (k + 4 * P - Back) % P;
@@ -368,7 +395,13 @@ module cube4_interp_persp_ring #(
       assign same  = entry[PairBits] == cell_parity;
       assign front[i*ColBits +: ColBits] = same ? entry[0 +: ColBits] : '0;
       assign back[i*ColBits +: ColBits]  = same ? entry[ColBits +: ColBits] : '0;
+      assign tags[i*T +: T]              = same ? entry[2*ColBits +: T] : '0;
     end
+    // The nearest column's tag: window column 1 (X) or 2 (X+1).
+    logic [T-1:0] vtag;
+    assign vtag = lane_near ? tags[2*T +: T] : tags[T +: T];
+    logic unused_far_tags;  // columns X-1 and X+2 are never the nearest
+    assign unused_far_tags = ^{tags[0 +: T], tags[3*T +: T]};
 
     logic home_valid;
     cube4_interp_persp_home #(
@@ -390,13 +423,13 @@ module cube4_interp_persp_ring #(
     assign valid_o[k] = home_valid;
 
     // The ray and tag beside the home stage.
-    localparam int unsigned SideBits = 2 * RayBits + TagBits;
+    localparam int unsigned SideBits = 2 * RayBits + TagBits + T;
     logic [HomeLatency*SideBits-1:0] side_q;
     always_ff @(posedge clk_i) begin
-      side_q <= {side_q[0 +: (HomeLatency-1)*SideBits], lane_ray, cell_v, cell_tag};
+      side_q <= {side_q[0 +: (HomeLatency-1)*SideBits], lane_ray, cell_v, cell_tag, vtag};
     end
-    assign {ray_u_o[k*RayBits +: RayBits], ray_v_o[k*RayBits +: RayBits], tag_o[k*TagBits +: TagBits]} =
-        side_q[(HomeLatency-1)*SideBits +: SideBits];
+    assign {ray_u_o[k*RayBits +: RayBits], ray_v_o[k*RayBits +: RayBits], tag_o[k*TagBits +: TagBits],
+            vtag_o[k*T +: T]} = side_q[(HomeLatency-1)*SideBits +: SideBits];
   end
 
 endmodule

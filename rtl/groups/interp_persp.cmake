@@ -22,5 +22,8 @@ foreach(p 4 1 5 8)
   cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring ${_prefix} SOURCES ${_persp_ring_sources}
     PARAMS NumPipes=${p} MaxDim=24)
 endforeach()
+# With 4-bit voxel tags (bela §III): the words {tag, value}, a tag per sample.
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring Vcube4_interp_persp_ring_t4
+  SOURCES ${_persp_ring_sources} PARAMS NumPipes=4 MaxDim=24 VoxelTagBits=4)
 # The lane walk alone, for its assertion's test (test_interp_persp_sva.cpp).
 cube4_rtl_variant(test_rtl_interp_persp cube4_persp_lanes Vcube4_persp_lanes_p4 SOURCES cube4_box_axis.sv PARAMS Pipes=4)

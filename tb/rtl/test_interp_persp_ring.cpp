@@ -24,6 +24,7 @@
 #include "Vcube4_interp_persp_ring_p1.h"
 #include "Vcube4_interp_persp_ring_p5.h"
 #include "Vcube4_interp_persp_ring_p8.h"
+#include "Vcube4_interp_persp_ring_t4.h"
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
 #include "golden/perspective.hpp"
@@ -66,14 +67,15 @@ g::Registers scene_registers(rtl::Random& rng, std::array<int, 3> size) {
 }
 
 struct Want {
-  uint32_t sample = 0;
+  uint32_t sample = 0, vtag = 0;
   int lane = 0;
   uint64_t cycle = 0;
   bool seen = false;
 };
 
+// vtag_bits: the model's VoxelTagBits (0: none).
 template <class M>
-void test_ring(int p, uint64_t salt) {
+void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
   rtl::Random rng(salt);
   const auto dut = rtl::make_dut<M>();
   M& m = *dut;
@@ -101,6 +103,10 @@ void test_ring(int p, uint64_t salt) {
     Volume vol;
     vol.resize(r.dim[0], r.dim[1], r.dim[2]);
     for (uint32_t& x : vol.v) x = static_cast<uint32_t>(rng.edgy((1 << kV) - 1, 0.1));
+    Volume tags;  // the voxels' tags, the memory words' upper bits
+    tags.resize(r.dim[0], r.dim[1], r.dim[2]);
+    if (vtag_bits > 0)
+      for (uint32_t& x : tags.v) x = static_cast<uint32_t>(rng.bits(vtag_bits));
     const int B = (vol.nx + p - 1) / p;
     const int64_t Bp = int64_t{B} * p;
 
@@ -122,7 +128,11 @@ void test_ring(int p, uint64_t salt) {
             const int64_t pass = int64_t{f} * K + k;
             const int64_t pos = (pass * vol.ny + hy + 2) * Bp + hx + 2;
             const auto key = std::make_tuple(f * K + k, u, v);
-            want[key] = {g::perspective_sample(r, s, u, v, voxel), static_cast<int>(pos % p), 0, false};
+            // The tag of the voxel nearest the sample (golden render_perspective()).
+            const uint32_t vtag = tags.at(g::nearest_voxel(g::ray_position(s.ray0_x, s.spacing, u), kF),
+                                          g::nearest_voxel(g::ray_position(s.ray0_y, s.spacing, v), kF),
+                                          s.z_voxel + g::upper_corner(s.wz, r.p.weight_bits));
+            want[key] = {g::perspective_sample(r, s, u, v, voxel), vtag, static_cast<int>(pos % p), 0, false};
             forming.push_back({key, pos / p});
           }
       }
@@ -144,8 +154,12 @@ void test_ring(int p, uint64_t salt) {
           continue;
         }
         it->second.seen = true;
-        c.check(cycle, where, {{"sample", it->second.sample}, {"lane", it->second.lane}, {"cycle", static_cast<int64_t>(it->second.cycle)}},
-                {{"sample", got}, {"lane", lane}, {"cycle", static_cast<int64_t>(cycle)}});
+        const int64_t got_vtag =
+            vtag_bits > 0 ? static_cast<int64_t>(rtl::get_bits(m.vtag_o, lane * vtag_bits, vtag_bits)) : 0;
+        c.check(cycle, where,
+                {{"sample", it->second.sample}, {"vtag", it->second.vtag}, {"lane", it->second.lane},
+                 {"cycle", static_cast<int64_t>(it->second.cycle)}},
+                {{"sample", got}, {"vtag", got_vtag}, {"lane", lane}, {"cycle", static_cast<int64_t>(cycle)}});
         ++samples;
       }
     };
@@ -185,8 +199,12 @@ void test_ring(int p, uint64_t salt) {
           m.slice_start_i = !flush && b == 0;
           m.slice_end_i = !flush && b == vol.ny - 1;
           m.flush_i = flush;
-          for (int lane = 0; lane < p; ++lane)
-            rtl::put_bits(m.voxels_i, lane * kV, kV, flush ? rng.bits(kV) : vol.at(j * p + lane, b, z_in));
+          const int word_bits = kV + vtag_bits;
+          for (int lane = 0; lane < p; ++lane) {
+            const int x = j * p + lane;
+            rtl::put_bits(m.voxels_i, lane * word_bits, word_bits,
+                          flush ? rng.bits(word_bits) : vol.at(x, b, z_in) | tags.at(x, b, z_in) << kV);
+          }
           m.wz_i = static_cast<uint16_t>(flush ? rng.bits(9) : s.wz);
           m.tag_i = static_cast<uint8_t>(flush ? rng.bits(kTag) : pass);
           m.spacing_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.spacing, kPos);
@@ -232,6 +250,10 @@ TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSays
 }
 TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSaysAtP8) {
   test_ring<Vcube4_interp_persp_ring_p8>(8, 94);
+}
+// With 4-bit voxel tags (bela §III): each sample's tag is its nearest voxel's.
+TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleAndTagAtP4WithVoxelTags) {
+  test_ring<Vcube4_interp_persp_ring_t4>(4, 95, 4);
 }
 
 }  // namespace
