@@ -25,5 +25,9 @@ endforeach()
 # With 4-bit voxel tags (bela §III): the words {tag, value}, a tag per sample.
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring Vcube4_interp_persp_ring_t4
   SOURCES ${_persp_ring_sources} PARAMS NumPipes=4 MaxDim=24 VoxelTagBits=4)
+# As large as the MRI head (brainsmall, 128 x 128 x 84), for its frame.
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring Vcube4_interp_persp_ring_m128
+  SOURCES ${_persp_ring_sources} PARAMS NumPipes=4 MaxDim=128)
+target_compile_definitions(test_rtl_interp_persp PRIVATE CUBE4_BRAINSMALL="${CUBE4_BRAINSMALL}")
 # The lane walk alone, for its assertion's test (test_interp_persp_sva.cpp).
 cube4_rtl_variant(test_rtl_interp_persp cube4_persp_lanes Vcube4_persp_lanes_p4 SOURCES cube4_box_axis.sv PARAMS Pipes=4)

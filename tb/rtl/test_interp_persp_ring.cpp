@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <array>
 #include <cstdint>
 #include <map>
@@ -24,10 +25,12 @@
 #include "Vcube4_interp_persp_ring_p1.h"
 #include "Vcube4_interp_persp_ring_p5.h"
 #include "Vcube4_interp_persp_ring_p8.h"
+#include "Vcube4_interp_persp_ring_m128.h"
 #include "Vcube4_interp_persp_ring_t4.h"
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
 #include "golden/perspective.hpp"
+#include "golden/permuted_volume.hpp"
 #include "golden/perspective_dataflow.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
@@ -73,6 +76,144 @@ struct Want {
   bool seen = false;
 };
 
+// Streams `frames` frames of registers r over the volume (values, and the
+// tags in the words' upper bits) through ring m, checking every sample
+// against golden: its value, tag, lane and cycle, each ray once. Returns
+// the samples checked.
+template <class M>
+long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const Volume& tags, int frames, int vtag_bits,
+                   rtl::Random& rng, rtl::Checker& c, uint64_t& cycle) {
+  const int K = r.sample_slices();
+  long samples = 0;
+  const int B = (vol.nx + p - 1) / p;
+  const int64_t Bp = int64_t{B} * p;
+
+  std::vector<g::PerspectiveSlice> slices;
+  for (int k = 0; k < K; ++k) slices.push_back(g::perspective_slice(r, k));
+  // Golden: every ray of every slice of every frame, by (tag, u, v); its
+  // lane and the index of the step that forms it.
+  std::map<std::tuple<int, int64_t, int64_t>, Want> want;
+  std::vector<std::pair<std::tuple<int, int64_t, int64_t>, int64_t>> forming;  // key, step index
+  for (int f = 0; f < frames; ++f)
+    for (int k = 0; k < K; ++k) {
+      const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
+      auto voxel = [&](int x, int y, int dz) { return vol.at(x, y, s.z_voxel + dz); };
+      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+          const int64_t hx = g::home_cell(g::ray_position(s.ray0_x, s.spacing, u), kF);
+          const int64_t hy = g::home_cell(g::ray_position(s.ray0_y, s.spacing, v), kF);
+          // The stream position two columns after the home, two beams below.
+          const int64_t pass = int64_t{f} * K + k;
+          const int64_t pos = (pass * vol.ny + hy + 2) * Bp + hx + 2;
+          const auto key = std::make_tuple(f * K + k, u, v);
+          // The tag of the voxel nearest the sample (golden render_perspective()).
+          const uint32_t vtag = tags.at(g::nearest_voxel(g::ray_position(s.ray0_x, s.spacing, u), kF),
+                                        g::nearest_voxel(g::ray_position(s.ray0_y, s.spacing, v), kF),
+                                        s.z_voxel + g::upper_corner(s.wz, r.p.weight_bits));
+          want[key] = {g::perspective_sample(r, s, u, v, voxel), vtag, static_cast<int>(pos % p), 0, false};
+          forming.push_back({key, pos / p});
+        }
+    }
+
+  // The stream, recording each step's cycle.
+  std::vector<uint64_t> step_cycle;
+  auto observe = [&] {
+    for (int lane = 0; lane < p; ++lane) {
+      if (!rtl::get_bits(m.valid_o, lane, 1)) continue;
+      const int tag = static_cast<int>(rtl::get_bits(m.tag_o, lane * kTag, kTag));
+      const int64_t u = rtl::sign_extend(rtl::get_bits(m.ray_u_o, lane * kRay, kRay), kRay);
+      const int64_t v = rtl::sign_extend(rtl::get_bits(m.ray_v_o, lane * kRay, kRay), kRay);
+      const int64_t got = static_cast<int64_t>(rtl::get_bits(m.sample_o, lane * kV, kV));
+      const auto it = want.find(std::make_tuple(tag, u, v));
+      const rtl::Fields where{{"frame pass", tag}, {"u", u}, {"v", v}, {"lane", lane}, {"nx", vol.nx},
+                              {"ny", vol.ny}, {"nz", vol.nz}, {"S", r.supersampling}};
+      if (it == want.end() || it->second.seen) {
+        c.check(cycle, where, {{"expected", 0}}, {{"sample out", 1}});
+        continue;
+      }
+      it->second.seen = true;
+      const int64_t got_vtag =
+          vtag_bits > 0 ? static_cast<int64_t>(rtl::get_bits(m.vtag_o, lane * vtag_bits, vtag_bits)) : 0;
+      c.check(cycle, where,
+              {{"sample", it->second.sample}, {"vtag", it->second.vtag}, {"lane", it->second.lane},
+               {"cycle", static_cast<int64_t>(it->second.cycle)}},
+              {{"sample", got}, {"vtag", got_vtag}, {"lane", lane}, {"cycle", static_cast<int64_t>(cycle)}});
+      ++samples;
+    }
+  };
+  auto clock = [&] {
+    rtl::settle(m);
+    rtl::rise(m);
+    ++cycle;
+    rtl::settle(m);
+    observe();
+  };
+  // The forming steps' cycles are known once the step is driven; the
+  // check of a sample needs them before it leaves (4 cycles later).
+  size_t next_forming = 0;
+  auto note_cycles = [&] {
+    while (next_forming < forming.size() &&
+           static_cast<size_t>(forming[next_forming].second) < step_cycle.size()) {
+      want[forming[next_forming].first].cycle = step_cycle[static_cast<size_t>(forming[next_forming].second)] + 4;
+      ++next_forming;
+    }
+  };
+  std::sort(forming.begin(), forming.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  const int passes = frames * K;
+  for (int pass = 0; pass <= passes && c.ok(); ++pass) {
+    const bool flush = pass == passes;
+    const int k = pass % K;
+    const g::PerspectiveSlice& s = slices[static_cast<size_t>(flush ? 0 : k)];
+    const int z_in = s.wz == 0 ? s.z_voxel : s.z_voxel + 1;
+    for (int b = 0; b < (flush ? 3 : vol.ny) && c.ok(); ++b)
+      for (int j = 0; j < B && c.ok(); ++j) {
+        while (rng.chance(0.15)) {
+          m.valid_i = 0;
+          clock();
+        }
+        m.valid_i = 1;
+        m.beam_start_i = j == 0;
+        m.beam_end_i = j == B - 1;
+        m.slice_start_i = !flush && b == 0;
+        m.slice_end_i = !flush && b == vol.ny - 1;
+        m.flush_i = flush;
+        const int word_bits = kV + vtag_bits;
+        for (int lane = 0; lane < p; ++lane) {
+          const int x = j * p + lane;
+          rtl::put_bits(m.voxels_i, lane * word_bits, word_bits,
+                        flush ? rng.bits(word_bits) : vol.at(x, b, z_in) | tags.at(x, b, z_in) << kV);
+        }
+        m.wz_i = static_cast<uint16_t>(flush ? rng.bits(9) : s.wz);
+        m.tag_i = static_cast<uint8_t>(flush ? rng.bits(kTag) : pass);
+        m.spacing_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.spacing, kPos);
+        m.ray0_x_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.ray0_x, kPos);
+        m.ray0_y_i = word(s.ray0_y, kPos);
+        m.rays_x_lo_i = static_cast<uint16_t>(word(s.rays_x.lo, kRay));
+        m.rays_x_hi_i = static_cast<uint16_t>(word(s.rays_x.hi, kRay));
+        m.rays_y_lo_i = static_cast<uint16_t>(word(s.rays_y.lo, kRay));
+        m.rays_y_hi_i = static_cast<uint16_t>(word(s.rays_y.hi, kRay));
+        m.recip_i = static_cast<uint32_t>(flush ? rng.bits(kV + 6) : s.box_reciprocal);
+        step_cycle.push_back(cycle);  // the cycle it is driven in
+        note_cycles();
+        clock();
+      }
+  }
+  m.valid_i = 0;
+  for (int i = 0; i < 6; ++i) clock();
+  for (const auto& [key, w] : want)
+    if (!w.seen && c.ok()) {
+      const g::PerspectiveSlice& s = slices[static_cast<size_t>(std::get<0>(key) % K)];
+      c.check(cycle,
+              {{"frame pass", std::get<0>(key)}, {"passes", frames * K}, {"u", std::get<1>(key)},
+               {"v", std::get<2>(key)}, {"nx", vol.nx}, {"ny", vol.ny}, {"p", p},
+               {"home x", g::home_cell(g::ray_position(s.ray0_x, s.spacing, std::get<1>(key)), kF)},
+               {"home y", g::home_cell(g::ray_position(s.ray0_y, s.spacing, std::get<2>(key)), kF)},
+               {"due in cycle", static_cast<int64_t>(w.cycle)}},
+              {{"left", 1}}, {{"left", 0}});
+    }
+  return samples;
+}
+
 // vtag_bits: the model's VoxelTagBits (0: none).
 template <class M>
 void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
@@ -107,132 +248,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
     tags.resize(r.dim[0], r.dim[1], r.dim[2]);
     if (vtag_bits > 0)
       for (uint32_t& x : tags.v) x = static_cast<uint32_t>(rng.bits(vtag_bits));
-    const int B = (vol.nx + p - 1) / p;
-    const int64_t Bp = int64_t{B} * p;
-
-    std::vector<g::PerspectiveSlice> slices;
-    for (int k = 0; k < K; ++k) slices.push_back(g::perspective_slice(r, k));
-    // Golden: every ray of every slice of every frame, by (tag, u, v); its
-    // lane and the index of the step that forms it.
-    std::map<std::tuple<int, int64_t, int64_t>, Want> want;
-    std::vector<std::pair<std::tuple<int, int64_t, int64_t>, int64_t>> forming;  // key, step index
-    for (int f = 0; f < frames; ++f)
-      for (int k = 0; k < K; ++k) {
-        const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
-        auto voxel = [&](int x, int y, int dz) { return vol.at(x, y, s.z_voxel + dz); };
-        for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
-          for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
-            const int64_t hx = g::home_cell(g::ray_position(s.ray0_x, s.spacing, u), kF);
-            const int64_t hy = g::home_cell(g::ray_position(s.ray0_y, s.spacing, v), kF);
-            // The stream position two columns after the home, two beams below.
-            const int64_t pass = int64_t{f} * K + k;
-            const int64_t pos = (pass * vol.ny + hy + 2) * Bp + hx + 2;
-            const auto key = std::make_tuple(f * K + k, u, v);
-            // The tag of the voxel nearest the sample (golden render_perspective()).
-            const uint32_t vtag = tags.at(g::nearest_voxel(g::ray_position(s.ray0_x, s.spacing, u), kF),
-                                          g::nearest_voxel(g::ray_position(s.ray0_y, s.spacing, v), kF),
-                                          s.z_voxel + g::upper_corner(s.wz, r.p.weight_bits));
-            want[key] = {g::perspective_sample(r, s, u, v, voxel), vtag, static_cast<int>(pos % p), 0, false};
-            forming.push_back({key, pos / p});
-          }
-      }
-
-    // The stream, recording each step's cycle.
-    std::vector<uint64_t> step_cycle;
-    auto observe = [&] {
-      for (int lane = 0; lane < p; ++lane) {
-        if (!rtl::get_bits(m.valid_o, lane, 1)) continue;
-        const int tag = static_cast<int>(rtl::get_bits(m.tag_o, lane * kTag, kTag));
-        const int64_t u = rtl::sign_extend(rtl::get_bits(m.ray_u_o, lane * kRay, kRay), kRay);
-        const int64_t v = rtl::sign_extend(rtl::get_bits(m.ray_v_o, lane * kRay, kRay), kRay);
-        const int64_t got = static_cast<int64_t>(rtl::get_bits(m.sample_o, lane * kV, kV));
-        const auto it = want.find(std::make_tuple(tag, u, v));
-        const rtl::Fields where{{"frame pass", tag}, {"u", u}, {"v", v}, {"lane", lane}, {"nx", vol.nx},
-                                {"ny", vol.ny}, {"nz", vol.nz}, {"S", r.supersampling}};
-        if (it == want.end() || it->second.seen) {
-          c.check(cycle, where, {{"expected", 0}}, {{"sample out", 1}});
-          continue;
-        }
-        it->second.seen = true;
-        const int64_t got_vtag =
-            vtag_bits > 0 ? static_cast<int64_t>(rtl::get_bits(m.vtag_o, lane * vtag_bits, vtag_bits)) : 0;
-        c.check(cycle, where,
-                {{"sample", it->second.sample}, {"vtag", it->second.vtag}, {"lane", it->second.lane},
-                 {"cycle", static_cast<int64_t>(it->second.cycle)}},
-                {{"sample", got}, {"vtag", got_vtag}, {"lane", lane}, {"cycle", static_cast<int64_t>(cycle)}});
-        ++samples;
-      }
-    };
-    auto clock = [&] {
-      rtl::settle(m);
-      rtl::rise(m);
-      ++cycle;
-      rtl::settle(m);
-      observe();
-    };
-    // The forming steps' cycles are known once the step is driven; the
-    // check of a sample needs them before it leaves (4 cycles later).
-    size_t next_forming = 0;
-    auto note_cycles = [&] {
-      while (next_forming < forming.size() &&
-             static_cast<size_t>(forming[next_forming].second) < step_cycle.size()) {
-        want[forming[next_forming].first].cycle = step_cycle[static_cast<size_t>(forming[next_forming].second)] + 4;
-        ++next_forming;
-      }
-    };
-    std::sort(forming.begin(), forming.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-    const int passes = frames * K;
-    for (int pass = 0; pass <= passes && c.ok(); ++pass) {
-      const bool flush = pass == passes;
-      const int k = pass % K;
-      const g::PerspectiveSlice& s = slices[static_cast<size_t>(flush ? 0 : k)];
-      const int z_in = s.wz == 0 ? s.z_voxel : s.z_voxel + 1;
-      for (int b = 0; b < (flush ? 3 : vol.ny) && c.ok(); ++b)
-        for (int j = 0; j < B && c.ok(); ++j) {
-          while (rng.chance(0.15)) {
-            m.valid_i = 0;
-            clock();
-          }
-          m.valid_i = 1;
-          m.beam_start_i = j == 0;
-          m.beam_end_i = j == B - 1;
-          m.slice_start_i = !flush && b == 0;
-          m.slice_end_i = !flush && b == vol.ny - 1;
-          m.flush_i = flush;
-          const int word_bits = kV + vtag_bits;
-          for (int lane = 0; lane < p; ++lane) {
-            const int x = j * p + lane;
-            rtl::put_bits(m.voxels_i, lane * word_bits, word_bits,
-                          flush ? rng.bits(word_bits) : vol.at(x, b, z_in) | tags.at(x, b, z_in) << kV);
-          }
-          m.wz_i = static_cast<uint16_t>(flush ? rng.bits(9) : s.wz);
-          m.tag_i = static_cast<uint8_t>(flush ? rng.bits(kTag) : pass);
-          m.spacing_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.spacing, kPos);
-          m.ray0_x_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.ray0_x, kPos);
-          m.ray0_y_i = word(s.ray0_y, kPos);
-          m.rays_x_lo_i = static_cast<uint16_t>(word(s.rays_x.lo, kRay));
-          m.rays_x_hi_i = static_cast<uint16_t>(word(s.rays_x.hi, kRay));
-          m.rays_y_lo_i = static_cast<uint16_t>(word(s.rays_y.lo, kRay));
-          m.rays_y_hi_i = static_cast<uint16_t>(word(s.rays_y.hi, kRay));
-          m.recip_i = static_cast<uint32_t>(flush ? rng.bits(kV + 6) : s.box_reciprocal);
-          step_cycle.push_back(cycle);  // the cycle it is driven in
-          note_cycles();
-          clock();
-        }
-    }
-    m.valid_i = 0;
-    for (int i = 0; i < 6; ++i) clock();
-    for (const auto& [key, w] : want)
-      if (!w.seen && c.ok()) {
-        const g::PerspectiveSlice& s = slices[static_cast<size_t>(std::get<0>(key) % K)];
-        c.check(cycle,
-                {{"frame pass", std::get<0>(key)}, {"passes", frames * K}, {"u", std::get<1>(key)},
-                 {"v", std::get<2>(key)}, {"nx", vol.nx}, {"ny", vol.ny}, {"p", p},
-                 {"home x", g::home_cell(g::ray_position(s.ray0_x, s.spacing, std::get<1>(key)), kF)},
-                 {"home y", g::home_cell(g::ray_position(s.ray0_y, s.spacing, std::get<2>(key)), kF)},
-                 {"due in cycle", static_cast<int64_t>(w.cycle)}},
-                {{"left", 1}}, {{"left", 0}});
-      }
+    samples += stream_frames(m, p, r, vol, tags, frames, vtag_bits, rng, c, cycle);
     ++frames_run;
   }
   EXPECT_TRUE(c.ok()) << c.report();
@@ -254,6 +270,34 @@ TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSays
 // With 4-bit voxel tags (bela §III): each sample's tag is its nearest voxel's.
 TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleAndTagAtP4WithVoxelTags) {
   test_ring<Vcube4_interp_persp_ring_t4>(4, 95, 4);
+}
+
+// The MRI head (VolPack's brainsmall, 128 x 128 x 84) in perspective, a
+// ring as large as the volume (MaxDim 128, p = 4): real data, a whole
+// frame, every sample and cycle checked as above.
+TEST(RtlInterpPerspRing, BrainsmallInPerspectiveAtP4) {
+  if (!std::filesystem::exists(CUBE4_BRAINSMALL)) GTEST_SKIP() << "brainsmall.den not installed (libvolpack1-dev)";
+  const g::Scene s = g::parse_scene(R"({"volume": {"file": ")" CUBE4_BRAINSMALL R"("},
+      "view": {"projection": "perspective", "fov": 40, "rotate": [20, 30, 0]}})", "brainsmall.json");
+  const g::Volume head = g::load_volume(s.volume, s.precision.voxel_bits, ".");
+  const g::Registers r = g::program_host(s, head).regs;
+  ASSERT_TRUE(r.perspective);
+  Volume vol, tags;
+  vol.resize(r.dim[0], r.dim[1], r.dim[2]);
+  tags.resize(r.dim[0], r.dim[1], r.dim[2]);
+  const g::PermutedVolume pv(head, r.perm, r.flip);
+  for (int z = 0; z < vol.nz; ++z)
+    for (int y = 0; y < vol.ny; ++y) pv.load_beam(y, z, &vol.v[(static_cast<size_t>(z) * vol.ny + y) * vol.nx]);
+  rtl::Random rng(96);
+  const auto dut = rtl::make_dut<Vcube4_interp_persp_ring_m128>();
+  rtl::reset(*dut);
+  rtl::Checker c("cube4_interp_persp_ring brainsmall");
+  rtl::Timer t("cube4_interp_persp_ring: brainsmall in perspective");
+  uint64_t cycle = 0;
+  const long samples = stream_frames(*dut, 4, r, vol, tags, 1, 0, rng, c, cycle);
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_GT(samples, 100000);
+  std::printf("  %ld samples in %llu cycles\n", samples, static_cast<unsigned long long>(cycle));
 }
 
 }  // namespace
