@@ -1,7 +1,7 @@
 // RTL equivalence tests of the perspective interpolation unit's home stage,
 // cube4_interp_persp_home, against golden perspective_sample()
-// (golden/perspective.hpp): random rays (spacings 1 to 3 voxels, their ends
-// often; positions anywhere in their cells, on cell edges often; z weights,
+// (golden/perspective.hpp): random rays (spacings 1 to 3 voxels, exactly 1, 2
+// and 3 often; positions anywhere in their cells, on cell edges often; z weights,
 // zero often) over random voxels, the unit fed the column sums golden
 // box_taps() makes of the ray's window (what cube4_interp_persp_column
 // gives) and the ray's x box; every sample 3 cycles later, with random
@@ -66,7 +66,10 @@ TEST(RtlInterpPerspHome, RandomRaysMatchGoldenPerspectiveSample) {
   };
   auto gen = [&](long i) {
     HomeIn in;
-    in.spacing = i % 5 == 0 ? one : i % 5 == 1 ? 3 * one : one + static_cast<int64_t>(rng.range(0, 2 * one));
+    // Extents of exactly 1, 2 and 3 voxels, and anything between (i < 0:
+    // a junk cycle's inputs, any).
+    const long kind = i < 0 ? 4 : i % 5;
+    in.spacing = kind < 3 ? (1 + kind) * one : one + static_cast<int64_t>(rng.range(0, 2 * one));
     auto position = [&] {
       const int64_t cell = rng.range(0, 60);
       return cell * one + (rng.chance(0.1) ? 0 : rng.chance(0.1) ? one - 1 : rng.range(0, one - 1));
