@@ -110,7 +110,6 @@ module cube4_interp_persp_column #(
   localparam int unsigned V              = WordBits;  // storage holds whole words
   localparam int unsigned VB             = VoxelBits;
   localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
-  localparam int unsigned SliceDepthBits = $clog2(SliceDepth + 1);
 
   // -------------------------------------------------------------------------
   // The current row's pair (front = z_voxel, back = z_voxel + 1).
@@ -122,19 +121,18 @@ module cube4_interp_persp_column #(
   assign front_cur = (on_slice || flush_i) ? vox : store_rdata;
   assign back_cur  = vox;
 
-  cube4_delay_ram #(
-    .Width   (V),
-    .MaxDepth(SliceDepth)
+  cube4_slice_store #(
+    .Width     (V),
+    .SliceDepth(SliceDepth)
   ) u_slice_store (
-    .clk_i    (clk_i),
-    .rst_ni   (rst_ni),
-    .depth_i  (SliceDepthBits'(SliceDepth)),
-    .clear_i  (1'b0),
-    .advance_i(valid_i && !flush_i),
-    .last_i   (pass_last),
-    .write_i  (on_slice),
-    .wdata_i  (voxel_i),
-    .rdata_o  (store_rdata)
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .valid_i    (valid_i),
+    .flush_i    (flush_i),
+    .pass_last_i(pass_last),
+    .on_slice_i (on_slice),
+    .wdata_i    (voxel_i),
+    .rdata_o    (store_rdata)
   );
 
   // Row delay: entry {pair b-1, pair b-2, pair b-3} of this column (b-3 in

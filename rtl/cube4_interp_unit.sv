@@ -153,7 +153,6 @@ module cube4_interp_unit #(
   // beside it in a shift register of this length.
   localparam int unsigned TriLatency    = 3;
   localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
-  localparam int unsigned SliceDepthBits = $clog2(SliceDepth + 1);
 
   logic [2*V-1:0] beam_rdata; // {back, front} of column x, beam y
 
@@ -216,21 +215,19 @@ module cube4_interp_unit #(
   end
 
   // Slice store: one entry per voxel of beams 0 .. ny-1, in stream order.
-  // Written in a wz = 0 pass, re-read in the wz > 0 passes after it; the
-  // pass's last step ends the lap, so the next pass starts at entry 0.
-  cube4_delay_ram #(
-    .Width   (StoreBits),
-    .MaxDepth(SliceDepth)
+  // Written in a wz = 0 pass, re-read in the wz > 0 passes after it.
+  cube4_slice_store #(
+    .Width     (StoreBits),
+    .SliceDepth(SliceDepth)
   ) u_slice_store (
-    .clk_i    (clk_i),
-    .rst_ni   (rst_ni),
-    .depth_i  (SliceDepthBits'(SliceDepth)),
-    .clear_i  (1'b0),
-    .advance_i(valid_i && !flush_i),
-    .last_i   (pass_last),
-    .write_i  (on_slice),
-    .wdata_i  (store_wdata),
-    .rdata_o  (store_rdata)
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .valid_i    (valid_i),
+    .flush_i    (flush_i),
+    .pass_last_i(pass_last),
+    .on_slice_i (on_slice),
+    .wdata_i    (store_wdata),
+    .rdata_o    (store_rdata)
   );
 
   // Beam delay: one lap per beam (the lap ends with the beam).

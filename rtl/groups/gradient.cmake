@@ -10,7 +10,7 @@
 # Each ring is verilated with its sources (a file cannot be both a top and a
 # SOURCE of one verilate() call: MODDUP).
 set(_gradient_sources cube4_lerp.sv cube4_gradient.sv cube4_delay_ram.sv cube4_gradient_unit.sv)
-set(_gradient_interp_sources cube4_lerp.sv cube4_interp.sv cube4_delay_ram.sv cube4_interp_unit.sv)
+set(_gradient_interp_sources cube4_lerp.sv cube4_interp.sv cube4_delay_ram.sv cube4_slice_store.sv cube4_interp_unit.sv)
 
 # The gradient ring's tag, with the ring's default UserTagBits 8.
 cube4_gradient_tag_bits(_gradient_tag_bits 8)

@@ -6,7 +6,7 @@
 # cube4_rtl_test; the other pipeline counts, the datapath at other widths and
 # the building blocks as tops of their own verilated again below (a file
 # cannot be both a top and a SOURCE of one verilate() call: MODDUP).
-set(_interp_sources cube4_lerp.sv cube4_interp.sv cube4_delay_ram.sv cube4_interp_unit.sv)
+set(_interp_sources cube4_lerp.sv cube4_interp.sv cube4_delay_ram.sv cube4_slice_store.sv cube4_interp_unit.sv)
 
 cube4_rtl_test(test_rtl_interp
   TOPS cube4_interp_ring

@@ -9,10 +9,10 @@ cube4_rtl_test(test_rtl_interp_persp
         ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_ring.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_interp_persp_sva.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_column Vcube4_interp_persp_column
-  SOURCES cube4_delay_ram.sv cube4_box_taps.sv PARAMS BeamDepth=32 SliceDepth=1024)
+  SOURCES cube4_delay_ram.sv cube4_slice_store.sv cube4_box_taps.sv PARAMS BeamDepth=32 SliceDepth=1024)
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_home Vcube4_interp_persp_home
   SOURCES cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv)
-set(_persp_ring_sources cube4_delay_ram.sv cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv cube4_box_axis.sv
+set(_persp_ring_sources cube4_delay_ram.sv cube4_slice_store.sv cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv cube4_box_axis.sv
     cube4_persp_lanes.sv cube4_interp_persp_column.sv cube4_interp_persp_home.sv)
 foreach(p 4 1 5 8)
   set(_prefix Vcube4_interp_persp_ring_p${p})
