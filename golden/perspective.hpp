@@ -81,6 +81,17 @@ uint32_t perspective_sample(const Registers& r, const PerspectiveSlice& s, int64
   return perspective_filtered<uint32_t>(r, s, u, v, voxel);
 }
 
+// The voxel whose tag ray (u, v)'s sample carries (bela's voxel tags): the
+// voxel nearest the sample, in voxel slice z_voxel + dz (dz 0 or 1).
+struct TagVoxel {
+  int x = 0, y = 0, dz = 0;
+};
+inline TagVoxel perspective_tag_voxel(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v) {
+  const int F = r.p.dda_frac_bits;
+  return {nearest_voxel(ray_position(s.ray0_x, s.spacing, u), F), nearest_voxel(ray_position(s.ray0_y, s.spacing, v), F),
+          upper_corner(s.wz, r.p.weight_bits)};
+}
+
 // VolumePro's voxel-difference z gradient in perspective: the voxel z
 // differences D(z) = V(z + 1) - V(z - 1) (voxel_z_difference()) of voxel
 // slices z_voxel and z_voxel + 1 through the sample's own box filters and z

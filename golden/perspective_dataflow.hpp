@@ -48,6 +48,35 @@ inline HomeLane home_lane(int64_t ray0, int64_t spacing, RayRange rays, int64_t 
   return h;
 }
 
+// Where the interpolation ring forms a sample (docs/perspective.md, "The
+// dataflow"): a stream of passes back to back, ny beams of `row` = B * p
+// positions each (position j * p + k: pipeline k's column in partial beam
+// j), forms at each position the cell two columns back in the beam two
+// back, so a pass's last cells spill into the next pass's (or the flush
+// beams') first positions. formed_cell(position) is that cell: its pass
+// (counted from the stream's first), column and row; invalid where the
+// cell lies before the stream or in a beam's padding (x >= nx).
+struct FormedCell {
+  bool valid = false;
+  int64_t pass = 0, x = 0, y = 0;
+};
+constexpr int kFormedAfterColumns = 2, kFormedAfterBeams = 2;
+inline FormedCell formed_cell(int64_t position, int64_t row, int nx, int ny) {
+  FormedCell c;
+  const int64_t q = position - kFormedAfterBeams * row - kFormedAfterColumns;
+  if (q < 0) return c;
+  const int64_t beam = q / row;
+  c.x = q % row;
+  c.pass = beam / ny;
+  c.y = beam % ny;
+  c.valid = c.x < nx;
+  return c;
+}
+// Its inverse: the stream position that forms cell (x, y) of a pass.
+constexpr int64_t forming_position(int64_t pass, int64_t x, int64_t y, int64_t row, int ny) {
+  return (pass * ny + y + kFormedAfterBeams) * row + x + kFormedAfterColumns;
+}
+
 // The range of cell offsets, relative to the sample's own home, at which
 // one kind of operand lies over a frame, along one axis. An empty range
 // (lo > hi) means the frame has no such operand.

@@ -238,7 +238,8 @@ class Traversal {
     out.valid = tags.valid = k >= 0 && k < K_;
     if (!out.valid) return -1;
     out.slice = tags.slice = perspective_slice(r_, k);
-    if (out.slice.z_voxel == loaded_z_) return -1;
+    // Given samples need no voxels, but for VolumePro's z gradient.
+    if (out.slice.z_voxel == loaded_z_ || (opt_.given_samples && !voxel_z_)) return -1;
     loaded_z_ = out.slice.z_voxel;
     return loaded_z_;
   }
@@ -267,18 +268,23 @@ class Traversal {
     if (!out.valid) return;
     const PerspectiveSlice& s = out.slice;
     auto voxel = [&](int x, int y, int dz) { return (dz == 0 ? lo_ : hi_).at(x, y); };
-    const int F = r_.p.dda_frac_bits;
-    const int dz_tag = upper_corner(s.wz, r_.p.weight_bits);
+    const PerspectiveSamples* given = opt_.given_samples;
     for (int64_t v = s.rays_y.lo + t; v < s.rays_y.hi; v += T)
       for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
-        out.v[out.index(u, v)] = perspective_sample(r_, s, u, v, voxel);
+        if (given) {
+          out.v[out.index(u, v)] = given->sample(s.k, u, v);
+          if (tagged_) tags.v[tags.index(u, v)] = given->vtag(s.k, u, v);
+          if (!voxel_z_) continue;
+        } else {
+          out.v[out.index(u, v)] = perspective_sample(r_, s, u, v, voxel);
+        }
         if (voxel_z_)
           out.z[out.index(u, v)] = perspective_z_difference(
               r_, s, u, v, [&](int x, int y, int dz) { return (dz == 0 ? d_lo_ : d_hi_).at(x, y); });
-        if (tagged_)
-          tags.v[tags.index(u, v)] = pv_.tag_at(nearest_voxel(ray_position(s.ray0_x, s.spacing, u), F),
-                                                nearest_voxel(ray_position(s.ray0_y, s.spacing, v), F),
-                                                s.z_voxel + dz_tag);
+        if (tagged_ && !given) {
+          const TagVoxel t = perspective_tag_voxel(r_, s, u, v);
+          tags.v[tags.index(u, v)] = pv_.tag_at(t.x, t.y, s.z_voxel + t.dz);
+        }
       }
   }
 

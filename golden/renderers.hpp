@@ -67,7 +67,20 @@ struct SampleProbe {
   virtual void shaded(int /*x*/, int /*y*/, const SliceControl& /*c*/, const ShadedSample& /*s*/) {}
 };
 
-// How render_fixed() runs; none of it but `polygons` changes the base plane.
+// Perspective frames: the interpolation unit's samples, produced elsewhere
+// (the system model's clocked or verilated interpolation ring,
+// systemc/core/perspective_frame.hpp) for the renderer to take instead of
+// computing its own; the gradient, shading and compositing stay golden's.
+struct PerspectiveSamples {
+  virtual ~PerspectiveSamples() = default;
+  // Slice k's sample of ray (u, v), and its voxel tag (0 without tags), for
+  // a ray that samples the slice. Called from any of the renderer's threads.
+  virtual uint32_t sample(int k, int64_t u, int64_t v) const = 0;
+  virtual uint32_t vtag(int k, int64_t u, int64_t v) const = 0;
+};
+
+// How render_fixed() runs; none of it but `polygons` (and `given_samples`
+// that differ from golden's) changes the base plane.
 struct FixedOptions {
   RenderStats* stats = nullptr;
   Progress progress;          // called from the calling thread
@@ -84,6 +97,9 @@ struct FixedOptions {
   // The frame's polygon images (Cube-5; golden/polygons.hpp), or none. This
   // one changes the base plane: it is hardware input, like the registers.
   const PolygonFrame* polygons = nullptr;
+  // Perspective only: take each sample (and tag) from here, not from the
+  // volume. The volume's voxels still serve VolumePro's z gradient.
+  const PerspectiveSamples* given_samples = nullptr;
 };
 
 BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);

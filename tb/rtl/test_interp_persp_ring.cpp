@@ -116,14 +116,10 @@ long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const 
         for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
           const int64_t hx = g::home_cell(g::ray_position(s.ray0_x, s.spacing, u), kF);
           const int64_t hy = g::home_cell(g::ray_position(s.ray0_y, s.spacing, v), kF);
-          // The stream position two columns after the home, two beams below.
-          const int64_t pass = int64_t{f} * K + k;
-          const int64_t pos = (pass * vol.ny + hy + 2) * Bp + hx + 2;
+          const int64_t pos = g::forming_position(int64_t{f} * K + k, hx, hy, Bp, vol.ny);
           const auto key = std::make_tuple(f * K + k, u, v);
-          // The tag of the voxel nearest the sample (golden render_perspective()).
-          const uint32_t vtag = tags.at(g::nearest_voxel(g::ray_position(s.ray0_x, s.spacing, u), kF),
-                                        g::nearest_voxel(g::ray_position(s.ray0_y, s.spacing, v), kF),
-                                        s.z_voxel + g::upper_corner(s.wz, r.p.weight_bits));
+          const g::TagVoxel t = g::perspective_tag_voxel(r, s, u, v);
+          const uint32_t vtag = tags.at(t.x, t.y, s.z_voxel + t.dz);
           want[key] = {g::perspective_sample(r, s, u, v, voxel), vtag, static_cast<int>(pos % p), 0, false};
           forming.push_back({key, pos / p});
         }
