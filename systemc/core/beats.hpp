@@ -45,6 +45,19 @@ struct SampleBeat {
   std::array<int32_t, kMaxLanes> zdiff{};
 };
 
+// Perspective (Cube-4 §3): the interpolation unit's samples by ray, not by
+// voxel position. Pipeline k's lane carries the sample it formed this
+// clock, if any (bit k of `valid`), with its ray (u, v), its pass's stream
+// tag and its voxel tag (docs/rtl-interp-persp.md: a sample leaves on the
+// pipeline of the column two after its ray's home cell).
+struct RaySampleBeat {
+  uint32_t valid = 0;
+  std::array<uint16_t, kMaxLanes> sample{};
+  std::array<int32_t, kMaxLanes> u{}, v{};
+  std::array<uint32_t, kMaxLanes> tag{};
+  std::array<uint8_t, kMaxLanes> vtag{};
+};
+
 // Gradient -> shading: the centre sample, its gradient and its position.
 struct GradientBeat {
   bool valid = false;

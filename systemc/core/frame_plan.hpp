@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "golden/perspective.hpp"
 #include "golden/pipeline.hpp"
 #include "golden/registers.hpp"
 #include "systemc/core/beats.hpp"
@@ -39,14 +40,19 @@ struct FramePlan {
   // slice_controls: the weight generator's control of slices 0 .. K when it
   // runs at RTL (rtl_slice_controls(), systemc/rtl/rtl_factory.hpp); empty:
   // golden slice_control(), its specification and TLM model.
+  // perspective_slices: likewise for a perspective frame, slices 0 .. K - 1
+  // of the perspective weight generator when it runs at RTL; empty: golden
+  // perspective_slice().
   FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits = kUserTagBits, uint64_t tag_base = 0,
-            std::vector<golden::SliceControl> slice_controls = {});
+            std::vector<golden::SliceControl> slice_controls = {},
+            std::vector<golden::PerspectiveSlice> perspective_slices = {});
 
   const golden::Registers& r;
   int p;              // pipelines
   int nx, ny, nz;     // permuted volume
   int B;              // partial beams per beam, ceil(nx / p)
   int K;              // sample slices, nz * S
+  bool perspective;   // Cube-4's perspective (regs.perspective): rays by index (docs/perspective.md)
   int passes;         // interpolation passes: K, plus the zero pass when the gradient unit runs
                       // (a stream's last frame; frames before it stream K: passes_in_stream()),
                       // numbered 0 ..; with zdiff the priming pass -1 comes first (first_pass())
@@ -55,6 +61,7 @@ struct FramePlan {
   int user_tag_bits;
   uint64_t tag_base;
   std::vector<golden::SliceControl> slices;  // slice_control(k), k = 0 .. K (K: the next of the last)
+  std::vector<golden::PerspectiveSlice> persp;  // perspective: perspective_slice(k), k = 0 .. K - 1
 
   // The pass's voxel slice: z_voxel(k) when wz = 0, else z_voxel(k) + 1
   // (docs/rtl-interp.md); with zdiff one slice more, and 0 for the priming
@@ -68,20 +75,23 @@ struct FramePlan {
   // stream (the next frame's first slice is the zero slice ahead of this
   // frame's last, docs/rtl-gradient.md).
   int passes_in_stream(bool stream_last_frame) const { return stream_last_frame ? passes : K; }
-  // The beams the stream gives a pass: ny, and the flush beam (beam ny)
-  // after the stream's last (passes back to back, docs/rtl-interp.md).
-  int beams(bool stream_last_pass) const { return ny + (stream_last_pass ? 1 : 0); }
+  // The beams the stream gives a pass: ny, and the flush beams (beams ny ..)
+  // after the stream's last (passes back to back, docs/rtl-interp.md): one,
+  // or three in perspective (docs/rtl-interp-persp.md).
+  int flush_beams() const { return perspective ? 3 : 1; }
+  int beams(bool stream_last_pass) const { return ny + (stream_last_pass ? flush_beams() : 0); }
   // A pass's beats in a stream of passes (the last pass's flush aside).
   uint64_t pass_beats() const { return static_cast<uint64_t>(ny) * static_cast<uint64_t>(B); }
-  // Partial beam j of beam y (0 .. ny; ny is the flush beam) of a pass.
+  // Partial beam j of beam y (0 .. ny - 1, then the flush beams) of a pass.
   PassStep step(int pass, int y, int j) const;
   // The interpolation ring's tag of a pass: the gradient ring's control
-  // fields (realign x4, S, ZeroSlice, FrameStart), then tag_base + pass.
+  // fields (realign x4, S, ZeroSlice, FrameStart), then tag_base + pass;
+  // in perspective only the latter (the perspective ring's TagBits).
   uint64_t pass_tag(int pass) const;
   uint64_t user_tag(int pass) const {
     return (tag_base + static_cast<uint64_t>(pass)) & ((uint64_t{1} << user_tag_bits) - 1);
   }
-  int tag_bits() const { return rtl::gradient_tag_bits(r.p.weight_bits, user_tag_bits); }
+  int tag_bits() const { return perspective ? user_tag_bits : rtl::gradient_tag_bits(r.p.weight_bits, user_tag_bits); }
   uint32_t tag_slice(uint64_t tag) const {
     return static_cast<uint32_t>(tag >> (tag_bits() - user_tag_bits) & ((uint64_t{1} << user_tag_bits) - 1));
   }

@@ -38,6 +38,7 @@ struct CompositeOut {
 };
 
 using InterpIf = UnitIf<VoxelBeat, SampleBeat>;
+using PerspInterpIf = UnitIf<VoxelBeat, RaySampleBeat>;  // perspective frames' interpolation unit
 using GradientIf = UnitIf<SampleBeat, GradientBeat>;
 using ShadeIf = UnitIf<GradientBeat, ShadedBeat>;
 using CompositeIf = UnitIf<ShadedBeat, CompositeOut>;

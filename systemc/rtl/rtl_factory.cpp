@@ -22,6 +22,7 @@
 #include "systemc/rtl/rtl_dda.hpp"
 #include "systemc/rtl/rtl_gradient.hpp"
 #include "systemc/rtl/rtl_interp.hpp"
+#include "systemc/rtl/rtl_interp_persp.hpp"
 #include "systemc/rtl/rtl_shade.hpp"
 
 namespace cube4::sysc {
@@ -46,11 +47,24 @@ static_assert(kShadeSideBits == CUBE4_SHADE_SIDE_BITS, "the verilated shading un
 
 namespace {
 
-[[noreturn]] void unavailable(int p) {
+// Refuses a p the build has no `what` for, naming the p it was built for,
+// the CMake list that adds one, and what else the user can do.
+void require_variant(int p, const std::vector<int>& built, const std::string& what, const std::string& cmake_list,
+                     const std::string& otherwise) {
   std::string list;
-  for (int q : rtl_pipes()) list += (list.empty() ? "" : ", ") + std::to_string(q);
-  throw std::invalid_argument("pipelines: " + std::to_string(p) + " has no RTL build (built for p = " + list +
-                              "; add it to CMake's CUBE4_SYSTEM_PIPES, or run --model tlm)");
+  for (int q : built) {
+    if (q == p) return;
+    list += (list.empty() ? "" : ", ") + std::to_string(q);
+  }
+  throw std::invalid_argument("pipelines: " + std::to_string(p) + " has no " + what + " (built for p = " +
+                              (list.empty() ? std::string("none") : list) + "; add it to CMake's " + cmake_list +
+                              ", or " + otherwise + ")");
+}
+
+// A switch over the built p found none: refused as require_rtl() refuses.
+[[noreturn]] void unavailable(int p) {
+  require_rtl(p);
+  throw std::logic_error("rtl_factory: p = " + std::to_string(p) + " is built but has no case");
 }
 
 }  // namespace
@@ -92,9 +106,7 @@ bool rtl_available(int p) {
   return false;
 }
 
-void require_rtl(int p) {
-  if (!rtl_available(p)) unavailable(p);
-}
+void require_rtl(int p) { require_variant(p, rtl_pipes(), "RTL build", "CUBE4_SYSTEM_PIPES", "run --model tlm"); }
 
 std::vector<int> rtl_tag_pipes() {
   return {
@@ -109,14 +121,7 @@ void require_rtl_tags(int p, int tag_bits) {
   if (tag_bits > kRtlVoxelTagBits)
     throw std::invalid_argument("precision: tag_bits = " + std::to_string(tag_bits) + ", but the RTL has " +
                                 std::to_string(kRtlVoxelTagBits) + "-bit voxel tags; run with --model tlm");
-  std::string list;
-  for (int q : rtl_tag_pipes()) {
-    if (q == p) return;
-    list += (list.empty() ? "" : ", ") + std::to_string(q);
-  }
-  throw std::invalid_argument("pipelines: " + std::to_string(p) + " has no RTL with voxel tags (built for p = " +
-                              (list.empty() ? std::string("none") : list) +
-                              "; add it to CMake's CUBE4_SYSTEM_TAG_PIPES, or run --model tlm)");
+  require_variant(p, rtl_tag_pipes(), "RTL with voxel tags", "CUBE4_SYSTEM_TAG_PIPES", "run --model tlm");
 }
 
 std::vector<int> rtl_polygon_pipes() {
@@ -128,15 +133,8 @@ std::vector<int> rtl_polygon_pipes() {
 }
 
 void require_rtl_polygons(int p) {
-  std::string list;
-  for (int q : rtl_polygon_pipes()) {
-    if (q == p) return;
-    list += (list.empty() ? "" : ", ") + std::to_string(q);
-  }
-  throw std::invalid_argument("pipelines: " + std::to_string(p) +
-                              " has no RTL compositing unit with polygon hardware (built for p = " +
-                              (list.empty() ? std::string("none") : list) +
-                              "; add it to CMake's CUBE4_SYSTEM_POLYGON_PIPES, or run the compositing unit at TLM)");
+  require_variant(p, rtl_polygon_pipes(), "RTL compositing unit with polygon hardware", "CUBE4_SYSTEM_POLYGON_PIPES",
+                  "run the compositing unit at TLM");
 }
 
 std::vector<int> rtl_zdiff_pipes() {
@@ -152,16 +150,33 @@ void require_rtl_zdiff(int p, int tag_bits) {
     throw std::invalid_argument(
         "z_gradient voxel_differences with voxel tags: no RTL interpolation and gradient rings have both; run "
         "those units at TLM (--model tlm, or mixed without interp and gradient)");
-  std::string list;
-  for (int q : rtl_zdiff_pipes()) {
-    if (q == p) return;
-    list += (list.empty() ? "" : ", ") + std::to_string(q);
+  require_variant(p, rtl_zdiff_pipes(), "RTL interpolation and gradient rings for z_gradient voxel_differences",
+                  "CUBE4_SYSTEM_ZDIFF_PIPES", "run those units at TLM");
+}
+
+std::vector<int> rtl_persp_pipes() {
+  return {
+#define CUBE4_RTL_PERSP_P(p) p,
+#include "rtl_persp_variant_list.inc"
+#undef CUBE4_RTL_PERSP_P
+  };
+}
+
+void require_rtl_perspective(int p) {
+  require_variant(p, rtl_persp_pipes(), "RTL perspective interpolation ring", "CUBE4_SYSTEM_PERSP_PIPES",
+                  "run the interpolation unit at TLM");
+}
+
+std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
+                                                     const TraceWindow& trace) {
+  require_rtl_perspective(plan.p);
+  switch (plan.p) {
+#define CUBE4_RTL_PERSP_P(p) \
+  case p: return std::make_unique<RtlInterpPersp<Vsys_interp_persp_p##p>>(plan, ctx, trace);
+#include "rtl_persp_variant_list.inc"
+#undef CUBE4_RTL_PERSP_P
   }
-  throw std::invalid_argument("pipelines: " + std::to_string(p) +
-                              " has no RTL interpolation and gradient rings for z_gradient voxel_differences (built for "
-                              "p = " +
-                              (list.empty() ? std::string("none") : list) +
-                              "; add it to CMake's CUBE4_SYSTEM_ZDIFF_PIPES, or run those units at TLM)");
+  throw std::logic_error("make_rtl_interp_persp: p = " + std::to_string(plan.p));
 }
 
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r, VerilatedContext& ctx) {

@@ -61,6 +61,12 @@ void require_rtl_polygons(int p);
 // scene also has voxel tags (no ring has both).
 std::vector<int> rtl_zdiff_pipes();
 void require_rtl_zdiff(int p, int tag_bits);
+// The p values with the perspective interpolation ring (Cube-4 §3; CMake
+// CUBE4_SYSTEM_PERSP_PIPES); throws, naming them, if p has none.
+std::vector<int> rtl_persp_pipes();
+void require_rtl_perspective(int p);
+std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
+                                                     const TraceWindow& trace);
 // The weight generator at RTL (cube4_dda, one for all pipelines): the
 // control of slices 0 .. K of a parallel-projection frame (FramePlan's
 // slice_controls), clocked through the frame's slices before it starts

@@ -23,6 +23,11 @@ std::vector<int> rtl_polygon_pipes() { return {}; }
 std::vector<int> rtl_zdiff_pipes() { return {}; }
 void require_rtl_zdiff(int, int) { unavailable(); }
 void require_rtl_polygons(int) { unavailable(); }
+std::vector<int> rtl_persp_pipes() { return {}; }
+void require_rtl_perspective(int) { unavailable(); }
+std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan&, VerilatedContext&, const TraceWindow&) {
+  unavailable();
+}
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers&, VerilatedContext&) { unavailable(); }
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan&, const golden::SkewLayout&, VerilatedContext&, const TraceWindow&) {
   unavailable();

@@ -15,18 +15,25 @@
 
 namespace cube4::rtl {
 
-// The interpolation ring's inputs in one cycle (docs/rtl-interp.md). While
-// b.valid is low the other inputs may hold anything: the ring ignores them.
-// word_bits: the voxel word's, voxel_bits plus the ring's VoxelTagBits (the
-// memory word {tag, value}, bela §III).
+// A voxel stream's valid bit and beam flags, as every interpolation ring
+// takes them (parallel and perspective).
 template <class M>
-void drive_interp_stream(M& m, const sysc::VoxelBeat& b, int pipes, int word_bits, int tag_bits) {
+void drive_stream_flags(M& m, const sysc::VoxelBeat& b) {
   m.valid_i = b.valid;
   m.beam_start_i = b.f.beam_start;
   m.beam_end_i = b.f.beam_end;
   m.slice_start_i = b.f.slice_start;
   m.slice_end_i = b.f.slice_end;
   m.flush_i = b.f.flush;
+}
+
+// The interpolation ring's inputs in one cycle (docs/rtl-interp.md). While
+// b.valid is low the other inputs may hold anything: the ring ignores them.
+// word_bits: the voxel word's, voxel_bits plus the ring's VoxelTagBits (the
+// memory word {tag, value}, bela §III).
+template <class M>
+void drive_interp_stream(M& m, const sysc::VoxelBeat& b, int pipes, int word_bits, int tag_bits) {
+  drive_stream_flags(m, b);
   m.prime_i = b.f.prime;
   for (int k = 0; k < pipes; ++k) put_bits(m.voxel_i, k * word_bits, word_bits, b.voxel[static_cast<size_t>(k)]);
   m.wx_i = b.wx;

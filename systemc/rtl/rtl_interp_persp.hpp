@@ -1,0 +1,75 @@
+// The perspective interpolation unit at RTL: cube4_interp_persp_ring
+// (docs/rtl-interp-persp.md), its p pipelines and links. Each beat drives
+// the ring's stream and, looked up by the pass the beat's tag names, that
+// pass's constants (the frame plan's perspective slices: golden
+// perspective_slice(), or the RTL weight generator's); the ring keeps the
+// finished pass's own for its drain. The zero pass has no rays.
+#pragma once
+#include <cstdint>
+
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/unit_streams.hpp"
+#include "systemc/rtl/vl_bits.hpp"
+
+namespace cube4::sysc {
+
+// The system's perspective rings' widths (systemc/CMakeLists.txt).
+constexpr int kPerspPosBits = 48, kPerspRayBits = 16;
+
+template <class M>
+class RtlInterpPersp final : public PerspInterpIf {
+ public:
+  RtlInterpPersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
+      : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), tag_bits_(plan.tag_bits()),
+        m_(ctx, "interp_persp", trace, "interp") {}
+
+  void clock(const VoxelBeat& in, RaySampleBeat& out) override {
+    using rtl::get_bits;
+    using rtl::put_bits;
+    M& m = *m_;
+    rtl::drive_stream_flags(m, in);
+    for (int k = 0; k < p_; ++k) put_bits(m.voxels_i, k * v_, v_, in.voxel[static_cast<size_t>(k)]);
+    m.wz_i = in.wz;
+    put_bits(m.tag_i, 0, tag_bits_, in.tag);
+    if (in.valid) drive_pass(in.tag);
+    m_.settle();
+    out.valid = 0;
+    for (int k = 0; k < p_; ++k) {
+      if (!get_bits(m.valid_o, k, 1)) continue;
+      const auto i = static_cast<size_t>(k);
+      out.valid |= 1u << k;
+      out.sample[i] = static_cast<uint16_t>(get_bits(m.sample_o, k * v_, v_));
+      out.u[i] = static_cast<int32_t>(rtl::sign_extend(get_bits(m.ray_u_o, k * kPerspRayBits, kPerspRayBits), kPerspRayBits));
+      out.v[i] = static_cast<int32_t>(rtl::sign_extend(get_bits(m.ray_v_o, k * kPerspRayBits, kPerspRayBits), kPerspRayBits));
+      out.tag[i] = static_cast<uint32_t>(get_bits(m.tag_o, k * tag_bits_, tag_bits_));
+      out.vtag[i] = 0;
+    }
+    m_.rise();
+  }
+  Level level() const override { return Level::Rtl; }
+
+ private:
+  static uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_t{1} << bits) - 1); }
+  // The constants of the pass `tag` names (its sample slice; K: the zero pass, no rays).
+  void drive_pass(uint64_t tag) {
+    M& m = *m_;
+    const bool zero = tag >= static_cast<uint64_t>(plan_.K);
+    const golden::PerspectiveSlice& s = plan_.persp[zero ? plan_.persp.size() - 1 : static_cast<size_t>(tag)];
+    m.spacing_i = word(s.spacing, kPerspPosBits);
+    m.ray0_x_i = word(s.ray0_x, kPerspPosBits);
+    m.ray0_y_i = word(s.ray0_y, kPerspPosBits);
+    m.rays_x_lo_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_x.lo, kPerspRayBits));
+    m.rays_x_hi_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_x.hi, kPerspRayBits));
+    m.rays_y_lo_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_y.lo, kPerspRayBits));
+    m.rays_y_hi_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_y.hi, kPerspRayBits));
+    m.recip_i = static_cast<uint32_t>(s.box_reciprocal);
+  }
+
+  const FramePlan& plan_;
+  int p_, v_, tag_bits_;
+  RtlModel<M> m_;
+};
+
+}  // namespace cube4::sysc
