@@ -420,10 +420,10 @@ int run_render(const RenderArgs& args) {
   const bool blocked = partitioned(counts) && (system || a.model == "fixed");
   const std::string what_blocks = blocks_what(a, l.scene);
   std::optional<golden::BlockPlan> header_plan;
-  if (l.scene.view.perspective() && ((system && parse_levels(a.model) != parse_levels("tlm")) || a.model == "splat"))
+  if (l.scene.view.perspective() && a.model == "splat")
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
-                     ": \"view.projection\": \"perspective\" renders with --model fixed, float, reference or tlm "
-                     "so far (not " + a.model + "); the RTL follows (docs/perspective.md)");
+                     ": \"view.projection\": \"perspective\": the splat model projects voxels in parallel only "
+                     "(bela's splatting); render with --model fixed, float, reference, tlm or mixed:interp");
   if (a.model == "splat" && !l.meshes.empty())
     throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) +
                      ": \"polygons\": the splat model draws the volume only (bela's voxel projection)");

@@ -9,8 +9,11 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
   nlohmann::json units = nlohmann::json::object();
   for (int u = 0; u < sysc::kUnits; ++u) {
     const auto i = static_cast<size_t>(u);
+    const bool loose = r.back_loosely_timed && (u == static_cast<int>(sysc::Unit::Gradient) ||
+                                                u == static_cast<int>(sysc::Unit::Shade) ||
+                                                u == static_cast<int>(sysc::Unit::Composite));
     units[sysc::unit_name(static_cast<sysc::Unit>(u))] =
-        r.simulated[i] ? sysc::level_name(r.levels[i]) : "not simulated (not needed by the scene)";
+        !r.simulated[i] ? "not simulated (not needed by the scene)" : loose ? "tlm (loosely timed)" : sysc::level_name(r.levels[i]);
   }
   // Not one of the five units: the slice controls of the interpolation
   // unit's level (golden slice_control() at TLM, cube4_dda at RTL).
@@ -37,7 +40,13 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
       {"simulation_threads", cfg.all_tlm() && !cfg.cycle_level ? 1 : sysc::simulation_threads(cfg)},
       {"seed", cfg.seed},
       {"rtl_assertions", cfg.assertions ? "on" : "off (--no-assert)"},
-      {"timing", cfg.all_tlm() ? "cycle model (loosely timed, no clock simulated)" : "simulated clock cycles"},
+      {"timing", r.back_loosely_timed
+                     ? "simulated clock cycles through the interpolation unit (its last sample in cycle " +
+                           std::to_string(r.last_beat[1]) +
+                           "), then gradient, shading and compositing loosely timed (perspective: no clocked "
+                           "models of them yet); cycles_per_frame is the cycle model's"
+                 : cfg.all_tlm() && !cfg.cycle_level ? "cycle model (loosely timed, no clock simulated)"
+                                                     : "simulated clock cycles"},
       {"check", cfg.check ? (check_failure.empty() ? "passed: base plane and unit streams bit-exact" : check_failure)
                           : "off"},
   };

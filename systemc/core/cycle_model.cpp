@@ -11,6 +11,13 @@
 //             measured by the RTL run and asserted equal by the system tests;
 //             a frame another follows (latency_followed) waits with VolumePro's
 //             z gradient for the next frame's priming pass too
+// A perspective frame (docs/perspective.md, "The dataflow") streams the
+// same passes (no priming pass: its voxel z differences come with the
+// slices it reads) and ends with three flush beams, not one; its
+// interpolation ring gives a sample 4 cycles after the step that forms it,
+// not 3. The units after it are counted with the parallel rings' latencies
+// and the zero pass, as the perspective gradient ring's plan keeps them
+// (slice k's gradients formed in pass k + 1); they are not built yet.
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/system.hpp"
 #include "systemc/tlm/tlm_shade.hpp"
@@ -20,11 +27,12 @@ namespace cube4::sysc {
 CycleCount frame_cycles(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1];
   const uint64_t B = static_cast<uint64_t>((nx + p - 1) / p);
-  const bool zdiff = r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences;
+  const bool zdiff = !r.perspective && r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences;
   const uint64_t passes = static_cast<uint64_t>(r.sample_slices()) + (zdiff ? 1 : 0);
   CycleCount c;
   c.stream = passes * static_cast<uint64_t>(ny) * B;
-  c.flush = (r.gradient ? static_cast<uint64_t>(ny) * B : 0) + B;
+  const uint64_t flush_beams = r.perspective ? 3 : 1;
+  c.flush = (r.gradient ? static_cast<uint64_t>(ny) * B : 0) + flush_beams * B;
   // After the stream's last beat (the flush beam's last, which ends a
   // beam), each registered link adds a cycle, then:
   //   interpolation: 3 (a beat that ends a beam leaves the alignment
@@ -32,10 +40,13 @@ CycleCount frame_cycles(const golden::Registers& r, int p) {
   //   gradient: its own zero beam of B steps, the alignment register, 3
   //     stages (docs/rtl-gradient.md); without gradients nothing;
   //   shading: cube4_shade_unit's latency; compositing: 7 to the pixel port.
-  constexpr uint64_t kLink = 1, kInterpLastBeat = 3, kGradientStages = 3, kComposite = 7;
+  // In perspective the interpolation ring's sample leaves 4 cycles after
+  // the step that forms it (docs/rtl-interp-persp.md).
+  constexpr uint64_t kLink = 1, kGradientStages = 3, kComposite = 7;
+  const uint64_t interp = r.perspective ? 4 : 3;
   const uint64_t shade = static_cast<uint64_t>(shade_latency(r.p));
   const uint64_t gradient = r.gradient ? kLink + B + 1 + kGradientStages : kLink;
-  const uint64_t drain = kLink + kInterpLastBeat + gradient + kLink + shade + kLink + kComposite;
+  const uint64_t drain = kLink + interp + gradient + kLink + shade + kLink + kComposite;
   c.latency = c.stream + c.flush + drain;
   c.latency_followed = c.latency + (zdiff ? static_cast<uint64_t>(ny) * B : 0);
   return c;

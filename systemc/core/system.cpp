@@ -13,6 +13,7 @@
 
 #include "golden/perspective_dataflow.hpp"
 #include "systemc/core/frame_plan.hpp"
+#include "systemc/core/perspective_frame.hpp"
 #include "systemc/core/pixel_memory.hpp"
 #include "systemc/core/polygon_source.hpp"
 #include "systemc/core/schedules.hpp"
@@ -26,6 +27,7 @@
 #include "systemc/tlm/tlm_frame.hpp"
 #include "systemc/tlm/tlm_gradient.hpp"
 #include "systemc/tlm/tlm_interp.hpp"
+#include "systemc/tlm/tlm_interp_persp.hpp"
 #include "systemc/tlm/tlm_shade.hpp"
 
 #ifdef CUBE4_HAVE_RTL
@@ -55,8 +57,12 @@ int simulation_threads(const SystemConfig& cfg) {
   return rtl_back && std::thread::hardware_concurrency() >= 2 ? 2 : 1;
 }
 
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg,
+                              const golden::PolygonFrame* polygons);
+
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
+  check_perspective_levels(r, cfg, nullptr);
   const FramePlan plan(r, cfg.p);  // p, supersampling and the stream tag's slices
   if (cfg.all_tlm() && !cfg.cycle_level) return;
   if (cfg.p > kMaxLanes)
@@ -105,16 +111,166 @@ void check_polygon_levels(const SystemConfig& cfg) {
   if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl) require_rtl_polygons(cfg.p);
 }
 
-// Perspective registers drive only the loosely timed transaction (the
-// golden perspective renderer); the per-unit models and the RTL rings
-// stream parallel projection's samples.
-void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
-  if (r.perspective && (!cfg.all_tlm() || cfg.cycle_level))
+// Perspective frames run loosely timed at TLM, or clocked with the
+// perspective interpolation unit (clocked TLM or RTL) and the address
+// generation at either level; the gradient, shading and compositing units
+// have no perspective models at those levels yet, and run loosely timed
+// after the stream (systemc/core/perspective_frame.hpp).
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg,
+                              const golden::PolygonFrame* polygons) {
+  if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
+  for (const Unit u : {Unit::Gradient, Unit::Shade, Unit::Composite})
+    if (cfg.levels[static_cast<size_t>(u)] == Level::Rtl)
+      throw std::invalid_argument(
+          std::string("\"view.projection\": \"perspective\": the ") + unit_name(u) +
+          " unit has no perspective RTL yet; only the interpolation unit and the address generation run "
+          "perspective frames at RTL (--model mixed:interp or mixed:interp,addr), the rest loosely timed "
+          "(docs/perspective.md)");
+  if (r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences)
     throw std::invalid_argument(
-        "perspective: the system model renders perspective frames loosely timed with every unit at transaction "
-        "level only (--model tlm); the units' clocked models and RTL are not built for it yet "
-        "(docs/perspective.md)");
+        "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
+        "interpolation unit's clocked models have no voxel z differences yet; run --model tlm (docs/perspective.md)");
+  const bool rtl_interp = cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl;
+  if (rtl_interp && r.p.tag_bits > 0)
+    throw std::invalid_argument(
+        "voxel tags (\"precision.tag_bits\": " + std::to_string(r.p.tag_bits) +
+        ") with \"view.projection\": \"perspective\": the system's perspective interpolation ring is "
+        "verilated without tag hardware; run the interpolation unit at TLM (--model tlm, or mixed:addr)");
+  if (rtl_interp) require_rtl_perspective(cfg.p);
+  if (polygons && cfg.polygon_engine.connection != golden::PolygonConnection::Ideal)
+    throw std::invalid_argument(
+        std::string("\"polygon_engine.connection\": \"") + polygon_connection_name(cfg.polygon_engine.connection) +
+        "\" with \"view.projection\": \"perspective\": a clocked perspective frame does not wait for slab "
+        "images yet; use the \"ideal\" connection, or --model tlm");
 }
+
+namespace {
+
+// What a clocked frame runs with: the registers (`r` the scene's, `rs`
+// those the units run: with a gradient unit forced on, see run_frame()),
+// the verilated models' contexts (`back_ctx` the back thread's, or ctx),
+// and what run_frame() made for it.
+struct ClockedFrame {
+  const golden::Registers& r;
+  const golden::Registers& rs;
+  const golden::Volume& vol;
+  const SystemConfig& cfg;
+  const FramePlan& plan;
+  const CycleCount& cc;
+  const golden::Progress& progress;
+  const golden::PolygonFrame* polygons;
+  VoxelMemory& mem;
+  VerilatedContext* ctx;
+  VerilatedContext* back_ctx;
+  bool threaded;
+  StreamChecker* checker;
+  PolygonSource* source;
+};
+
+// A clocked perspective frame (check_perspective_levels() allowed it).
+void run_perspective(const ClockedFrame& f, SystemResult& res) {
+  const SystemConfig& cfg = f.cfg;
+  const FramePlan& plan = f.plan;
+  std::unique_ptr<AddrIf> addr;
+  if (cfg.levels[static_cast<size_t>(Unit::Addr)] == Level::Rtl)
+    addr = make_rtl_addr(plan, f.mem.layout(), *f.ctx, cfg.trace);
+  else
+    addr = std::make_unique<TlmAddr>(f.mem.layout(), golden::SkewTraversal{f.r.perm, f.r.flip});
+  StreamFormer former(plan, f.mem, *addr, cfg.frames);
+  std::unique_ptr<PerspInterpIf> interp;
+  if (cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl)
+    interp = make_rtl_interp_persp(plan, *f.ctx, cfg.trace);
+  else
+    interp = std::make_unique<TlmInterpPersp>(plan);
+  const PerspectiveFrameResult pr =
+      run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress}, former, *interp);
+  res.plane = pr.plane;
+  // The units after interpolation are loosely timed: the frame's cycles
+  // are the cycle model's, whose stream and interpolation the run measured.
+  res.frame_cycles = cfg.frames > 1 ? f.cc.latency_followed : f.cc.latency;
+  res.last_beat = {pr.last_beat_cycle, pr.last_sample_cycle, 0, 0};
+  res.simulated_cycles = pr.cycles;
+  res.voxel_reads = f.mem.reads();
+  res.mismatch = pr.mismatch;
+  res.back_loosely_timed = true;
+}
+
+// A clocked parallel frame: the units on the schedule of cfg.kernel.
+void run_parallel(const ClockedFrame& f, SystemResult& res) {
+  const SystemConfig& cfg = f.cfg;
+  const FramePlan& plan = f.plan;
+  const golden::Registers& rs = f.rs;
+  PixelMemory pixels(f.r, cfg.accumulators);
+  FrameUnits u;
+  u.frames = cfg.frames;
+  bool rtl[kUnits];
+  for (int i = 0; i < kUnits; ++i) rtl[i] = cfg.levels[static_cast<size_t>(i)] == Level::Rtl;
+  // The weight generator runs at RTL with the interpolation unit, the
+  // first unit to read its weights: every unit then reads the slice
+  // controls cube4_dda produced (`up`); the checker keeps golden's (plan).
+  std::optional<FramePlan> rtl_plan;
+  if (rtl[static_cast<int>(Unit::Interp)]) {
+    rtl_plan.emplace(rs, cfg.p, kUserTagBits, 0, rtl_slice_controls(rs, *f.ctx));
+    res.weight_generator = Level::Rtl;
+  }
+  const FramePlan& up = rtl_plan ? *rtl_plan : plan;
+  const golden::SkewTraversal traversal{f.r.perm, f.r.flip};
+  if (rtl[static_cast<int>(Unit::Addr)]) {
+    u.addr = make_rtl_addr(up, f.mem.layout(), *f.ctx, cfg.trace);
+  } else {
+    u.addr = std::make_unique<TlmAddr>(f.mem.layout(), traversal);
+  }
+  u.former = std::make_unique<StreamFormer>(up, f.mem, *u.addr, cfg.frames);
+  u.interp = rtl[0] ? make_rtl_interp(up, *f.ctx, cfg.trace) : std::make_unique<TlmInterp>(up);
+  // Gradients and shading of samples that cannot change their ray are
+  // don't-cares when only TLM shading and compositing read them.
+  const bool skip_transparent = !f.checker && !rtl[2] && !rtl[3];
+  // Nor those of samples on rays the TLM compositor has stopped, which the
+  // units ahead of it ask it about: on one thread only, as it runs.
+  std::unique_ptr<TlmComposite> tlm_composite;
+  if (!rtl[3]) tlm_composite = std::make_unique<TlmComposite>(up, pixels, f.polygons);
+  const TlmComposite* stops = f.threaded ? nullptr : tlm_composite.get();
+  if (!rs.gradient) {
+    u.gradient = std::make_unique<GradientBypass>(up);
+  } else {
+    u.gradient = rtl[1] ? make_rtl_gradient(up, *f.ctx, cfg.trace)
+                        : std::make_unique<TlmGradient>(up, skip_transparent, stops);
+  }
+  // Two threads: the front keeps the RTL shading units of the upper
+  // quarter of the pipelines (schedules.hpp), which evened the threads'
+  // work best at p = 4 and 8 (docs/performance.md).
+  u.threaded = f.threaded;
+  u.p = cfg.p;
+  u.front_first_lane = f.threaded && rtl[2] ? cfg.p - cfg.p / 4 : cfg.p;
+  u.front_ctx = f.ctx;
+  u.back_ctx = f.threaded ? f.back_ctx : nullptr;
+  if (rtl[2]) {
+    u.shade = make_rtl_shade(up, *f.back_ctx, cfg.trace, cfg.simulate_unneeded, 0, u.front_first_lane);
+    if (u.front_first_lane < cfg.p)
+      u.front_shade = make_rtl_shade(up, *f.ctx, cfg.trace, cfg.simulate_unneeded, u.front_first_lane, cfg.p);
+  } else {
+    u.shade = std::make_unique<TlmShade>(up, skip_transparent, stops);
+  }
+  if (rtl[3])
+    u.composite = make_rtl_composite(up, pixels, *f.back_ctx, cfg.trace, cfg.simulate_unneeded, f.polygons, cfg.frames);
+  else
+    u.composite = std::move(tlm_composite);
+  u.checker = f.checker;
+  u.polygons = f.source;
+  u.progress = f.progress;
+  u.total_beats = f.cc.stream * static_cast<uint64_t>(cfg.frames) + f.cc.flush;
+  run_units(u, cfg.kernel);
+  if (!u.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
+  res.frame_cycles = u.frame_done_cycles.front();
+  if (f.source) res.polygon_stall_cycles = u.frames > 1 ? u.first_frame_stalls : f.source->stall_cycles();
+  if (u.frames > 1) res.measured_interval = u.frame_done_cycles[1] - u.frame_done_cycles[0];
+  res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_shaded};
+  res.simulated_cycles = u.done_cycle;
+  res.voxel_reads = f.mem.reads();
+  res.plane = pixels.plane();
+}
+
+}  // namespace
 
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress, const golden::PolygonFrame* polygons) {
@@ -130,7 +286,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     rs = &forced;
   }
   if (polygons) check_polygon_levels(cfg);
-  check_perspective_levels(r, cfg);
+  check_perspective_levels(r, cfg, polygons);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
@@ -170,7 +326,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   res.samples = r.perspective ? golden::perspective_samples(r) : static_cast<uint64_t>(plan.nx) * plan.ny * plan.K;
 
   std::unique_ptr<StreamChecker> checker;
-  if (cfg.check) checker = std::make_unique<StreamChecker>(plan, vol);
+  if (cfg.check && !r.perspective) checker = std::make_unique<StreamChecker>(plan, vol);
 
   // The slab images' connection (Ideal: no wait, no source).
   std::unique_ptr<PolygonSource> source;
@@ -201,74 +357,13 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     VerilatedContext* rtl_back_ctx = nullptr;
 #endif
     VoxelMemory mem(vol, cfg.p);
-    PixelMemory pixels(r, cfg.accumulators);
-    FrameUnits u;
-    u.frames = cfg.frames;
-    bool rtl[kUnits];
-    for (int i = 0; i < kUnits; ++i) rtl[i] = cfg.levels[static_cast<size_t>(i)] == Level::Rtl;
-    // The weight generator runs at RTL with the interpolation unit, the
-    // first unit to read its weights: every unit then reads the slice
-    // controls cube4_dda produced (`up`); the checker keeps golden's (plan).
-    std::optional<FramePlan> rtl_plan;
-    if (rtl[static_cast<int>(Unit::Interp)]) {
-      rtl_plan.emplace(*rs, cfg.p, kUserTagBits, 0, rtl_slice_controls(*rs, *rtl_ctx));
-      res.weight_generator = Level::Rtl;
-    }
-    const FramePlan& up = rtl_plan ? *rtl_plan : plan;
-    const golden::SkewTraversal traversal{r.perm, r.flip};
-    if (rtl[static_cast<int>(Unit::Addr)]) {
-      u.addr = make_rtl_addr(up, mem.layout(), *rtl_ctx, cfg.trace);
+    const ClockedFrame frame{r, *rs, vol, cfg, plan, cc, progress, polygons, mem,
+                             rtl_ctx, rtl_back_ctx, threaded, checker.get(), source.get()};
+    if (r.perspective) {
+      run_perspective(frame, res);
     } else {
-      u.addr = std::make_unique<TlmAddr>(mem.layout(), traversal);
+      run_parallel(frame, res);
     }
-    u.former = std::make_unique<StreamFormer>(up, mem, *u.addr, cfg.frames);
-    u.interp = rtl[0] ? make_rtl_interp(up, *rtl_ctx, cfg.trace) : std::make_unique<TlmInterp>(up);
-    // Gradients and shading of samples that cannot change their ray are
-    // don't-cares when only TLM shading and compositing read them.
-    const bool skip_transparent = !checker && !rtl[2] && !rtl[3];
-    // Nor those of samples on rays the TLM compositor has stopped, which the
-    // units ahead of it ask it about: on one thread only, as it runs.
-    std::unique_ptr<TlmComposite> tlm_composite;
-    if (!rtl[3]) tlm_composite = std::make_unique<TlmComposite>(up, pixels, polygons);
-    const TlmComposite* stops = threaded ? nullptr : tlm_composite.get();
-    if (!rs->gradient) {
-      u.gradient = std::make_unique<GradientBypass>(up);
-    } else {
-      u.gradient = rtl[1] ? make_rtl_gradient(up, *rtl_ctx, cfg.trace)
-                          : std::make_unique<TlmGradient>(up, skip_transparent, stops);
-    }
-    // Two threads: the front keeps the RTL shading units of the upper
-    // quarter of the pipelines (schedules.hpp), which evened the threads'
-    // work best at p = 4 and 8 (docs/performance.md).
-    u.threaded = threaded;
-    u.p = cfg.p;
-    u.front_first_lane = threaded && rtl[2] ? cfg.p - cfg.p / 4 : cfg.p;
-    u.front_ctx = rtl_ctx;
-    u.back_ctx = threaded ? rtl_back_ctx : nullptr;
-    if (rtl[2]) {
-      u.shade = make_rtl_shade(up, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, 0, u.front_first_lane);
-      if (u.front_first_lane < cfg.p)
-        u.front_shade = make_rtl_shade(up, *rtl_ctx, cfg.trace, cfg.simulate_unneeded, u.front_first_lane, cfg.p);
-    } else {
-      u.shade = std::make_unique<TlmShade>(up, skip_transparent, stops);
-    }
-    if (rtl[3])
-      u.composite = make_rtl_composite(up, pixels, *rtl_back_ctx, cfg.trace, cfg.simulate_unneeded, polygons, cfg.frames);
-    else
-      u.composite = std::move(tlm_composite);
-    u.checker = checker.get();
-    u.polygons = source.get();
-    u.progress = progress;
-    u.total_beats = cc.stream * static_cast<uint64_t>(cfg.frames) + cc.flush;
-    run_units(u, cfg.kernel);
-    if (!u.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
-    res.frame_cycles = u.frame_done_cycles.front();
-    if (source) res.polygon_stall_cycles = u.frames > 1 ? u.first_frame_stalls : source->stall_cycles();
-    if (u.frames > 1) res.measured_interval = u.frame_done_cycles[1] - u.frame_done_cycles[0];
-    res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_shaded};
-    res.simulated_cycles = u.done_cycle;
-    res.voxel_reads = mem.reads();
-    res.plane = pixels.plane();
 #ifdef CUBE4_HAVE_RTL
     // While the models live (a coverage build's; else nothing).
     rtl::write_coverage(*rtl_ctx);

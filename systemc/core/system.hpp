@@ -103,6 +103,10 @@ struct SystemResult {
   std::vector<std::string> skipped;      // logic the scene does not need, not simulated
   std::vector<std::string> unused;       // logic the scene does not need, simulated inside an RTL unit
   std::optional<Mismatch> mismatch;      // --check: the first unit output that differs
+  // A clocked perspective frame: the units after interpolation ran loosely
+  // timed after the stream (systemc/core/perspective_frame.hpp), so
+  // frame_cycles is the cycle model's; last_beat[0..1] were measured.
+  bool back_loosely_timed = false;
 };
 
 // `polygons`: the frame's polygon images (Cube-5; golden/polygon_frame.hpp,

@@ -1,18 +1,40 @@
 // Perspective frames through the system model: loosely timed at TLM (one
 // transaction through the golden perspective renderer, the cycle model's
 // count), directly and through the host interface (MODE's perspective bit,
-// SCALE_START, SCALE_STEP), and refused where the units' clocked models and
-// the RTL would stream parallel projection's samples.
+// SCALE_START, SCALE_STEP); clocked, with the perspective interpolation
+// unit as clocked TLM or RTL (cube4_interp_persp_ring) and the units after
+// it loosely timed: every sample checked against golden, the stream's
+// beats and the last sample's cycle exactly the dataflow's, the clocked TLM
+// unit beat for beat the ring; and refused where a unit has no perspective
+// model at the level asked for.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <vector>
 
+#include "golden/perspective.hpp"
+#include "golden/perspective_dataflow.hpp"
 #include "golden/renderers.hpp"
 #include "systemc/core/machine.hpp"
+#include "systemc/core/perspective_frame.hpp"
+#include "systemc/core/stream_former.hpp"
 #include "systemc/core/system.hpp"
+#include "systemc/core/voxel_memory.hpp"
+#include "systemc/tlm/tlm_addr.hpp"
+#include "systemc/tlm/tlm_interp_persp.hpp"
 #include "tb/tests/system_support.hpp"
 #include "tb/tests/test_support.hpp"
+
+// verilated.h calls sc_time_stamp() unqualified once SystemC is included.
+#include <systemc>
+using sc_core::sc_time_stamp;
+#include "systemc/core/trace_window.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
+#include "systemc/rtl/vl_context.hpp"
 
 namespace {
 
@@ -57,12 +79,15 @@ TEST(SystemPerspective, LooselyTimedTlmEqualsGoldenFromEveryFaceAtP1458) {
       EXPECT_EQ(res.samples, stats.samples);
       EXPECT_LT(res.samples, static_cast<uint64_t>(r.dim[0]) * r.dim[1] * r.sample_slices());
       // The cycle model's count: a perspective frame streams the volume as a
-      // parallel one does (one voxel per pipeline per cycle), not measured
-      // against RTL yet (docs/perspective.md).
+      // parallel one does (one voxel per pipeline per cycle), with two flush
+      // beams more and a cycle more in the interpolation ring (measured by
+      // the clocked tests below).
       golden::Registers parallel = s.host.regs;
       parallel.perspective = false;
+      const uint64_t B = static_cast<uint64_t>((r.dim[0] + p - 1) / p);
       EXPECT_EQ(res.frame_cycles, sysc::frame_cycles(s.host.regs, p).latency);
-      EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).latency, sysc::frame_cycles(parallel, p).latency);
+      EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).stream, sysc::frame_cycles(parallel, p).stream);
+      EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).latency, sysc::frame_cycles(parallel, p).latency + 2 * B + 1);
     }
   }
 }
@@ -113,21 +138,225 @@ TEST(SystemPerspective, PolygonsInPerspectiveAtTlm) {
   }
 }
 
-TEST(SystemPerspective, ClockedAndRtlLevelsRefusePerspective) {
+namespace {
+
+sysc::SystemConfig clocked_config(int p, bool rtl_interp) {
+  sysc::SystemConfig cfg = tlm_config(p);
+  cfg.cycle_level = true;
+  cfg.check = true;
+  if (rtl_interp) cfg.levels[static_cast<size_t>(sysc::Unit::Interp)] = sysc::Level::Rtl;
+  return cfg;
+}
+
+bool rtl_perspective(int p) {
+  if (!CUBE4_TEST_RTL) return false;
+  const std::vector<int> pipes = sysc::rtl_persp_pipes();
+  return std::find(pipes.begin(), pipes.end(), p) != pipes.end();
+}
+
+// The cycle the interpolation unit's last sample of a stream of `frames`
+// frames leaves, by the dataflow: the stream position that forms it
+// (golden forming_position()), a beat per cycle from cycle 1, the link's
+// cycle and the ring's 4.
+uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames) {
+  const int nx = r.dim[0], ny = r.dim[1], K = r.sample_slices();
+  const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
+  const int F = r.p.dda_frac_bits;
+  int64_t last = -1;
+  for (int k = 0; k < K; ++k) {
+    const golden::PerspectiveSlice s = golden::perspective_slice(r, k);
+    if (s.rays_x.empty() || s.rays_y.empty()) continue;
+    // The last-formed ray of a slice: the largest home row, then column.
+    const int64_t hy = golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, s.rays_y.hi - 1), F);
+    const int64_t hx = golden::home_cell(golden::ray_position(s.ray0_x, s.spacing, s.rays_x.hi - 1), F);
+    last = std::max(last, golden::forming_position(int64_t{frames - 1} * K + k, hx, hy, row, ny));
+  }
+  return static_cast<uint64_t>(last / p) + 1 + 1 + 4;
+}
+
+void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const golden::BasePlane& want,
+                    const golden::RenderStats& stats) {
+  const golden::Registers& r = s.host.regs;
+  const sysc::SystemResult res = sysc::run_frame(r, s.volume, cfg);
+  EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
+  expect_plane(want, res.plane);
+  EXPECT_TRUE(res.back_loosely_timed);
+  EXPECT_EQ(res.samples, stats.samples);
+  // The stream: every pass back to back, then the zero pass (with
+  // gradients) and three flush beams, a beat a cycle from cycle 1.
+  const sysc::CycleCount cc = sysc::frame_cycles(r, cfg.p);
+  EXPECT_EQ(res.last_beat[0], cc.stream * static_cast<uint64_t>(cfg.frames) + cc.flush);
+  EXPECT_EQ(res.last_beat[1], last_sample_cycle(r, cfg.p, cfg.frames));
+  // The model's interpolation latency bounds it: no sample after the
+  // stream's last beat, the link and the ring's 4 cycles.
+  EXPECT_LE(res.last_beat[1], res.last_beat[0] + 1 + 4);
+  EXPECT_EQ(res.frame_cycles, cfg.frames > 1 ? cc.latency_followed : cc.latency);
+}
+
+}  // namespace
+
+// Clocked perspective frames from in front of each face, p = 1, 4, 5 and
+// 8: the interpolation unit as clocked TLM and as the verilated ring, each
+// sample checked as it leaves, the image golden's, the stream's beats and
+// the last sample's cycle exact.
+TEST(SystemPerspective, ClockedInterpolationFromEveryFaceAtP1458) {
+  for (const char* eye : kEyes) {
+    const test::Setup s = setup(scene(eye));
+    golden::RenderStats stats;
+    const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, &stats);
+    for (int p : {1, 4, 5, 8})
+      for (const bool rtl : {false, true}) {
+        if (rtl && !rtl_perspective(p)) continue;
+        SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p) + (rtl ? ", RTL" : ", clocked TLM"));
+        expect_clocked(s, clocked_config(p, rtl), want, stats);
+      }
+  }
+}
+
+// Two frames back to back (the second's passes follow the first's, which
+// drains in them), with and without gradients (the zero pass), with the
+// address generation at RTL too.
+TEST(SystemPerspective, ClockedFramesBackToBackWithAndWithoutGradients) {
+  for (const char* effects : {R"("shading": true)", R"("shading": false)"}) {
+    std::string json = scene(kEyes[3]);
+    json.replace(json.find(R"("shading": true)"), 15, effects);
+    const test::Setup s = setup(json);
+    golden::RenderStats stats;
+    const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, &stats);
+    for (const bool rtl : {false, true}) {
+      if (rtl && !rtl_perspective(4)) continue;
+      SCOPED_TRACE(std::string(effects) + (rtl ? ", RTL" : ", clocked TLM"));
+      sysc::SystemConfig cfg = clocked_config(4, rtl);
+      cfg.frames = 2;
+      if (rtl) cfg.levels[static_cast<size_t>(sysc::Unit::Addr)] = sysc::Level::Rtl;
+      expect_clocked(s, cfg, want, stats);
+    }
+  }
+}
+
+// The clocked TLM unit is the ring, beat by beat: the same stream through
+// both, every output beat compared (lanes, samples, rays, tags), over two
+// frames of several views.
+TEST(SystemPerspective, TheClockedTlmInterpolationUnitIsTheRingBeatByBeat) {
+  if (!rtl_perspective(4) || !rtl_perspective(5)) GTEST_SKIP() << "no RTL perspective ring at p = 4 and 5";
+#if CUBE4_TEST_RTL
+  long compared = 0;
+  for (int view = 0; view < 4; ++view) {
+    const test::Setup s = setup(scene(kEyes[view]));
+    for (int p : {4, 5}) {
+      SCOPED_TRACE("eye " + std::string(kEyes[view]) + ", p = " + std::to_string(p));
+      const sysc::FramePlan plan(s.host.regs, p);
+      sysc::VoxelMemory mem(s.volume, p);
+      sysc::TlmAddr addr(mem.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
+      sysc::StreamFormer former(plan, mem, addr, 2);
+      rtl::ScopedVerilatedContext ctx(1, false, true);
+      auto ring = sysc::make_rtl_interp_persp(plan, *ctx, sysc::TraceWindow{});
+      sysc::TlmInterpPersp tlm(plan);
+      sysc::RaySampleBeat a, b;
+      int drain = 0;
+      for (int cycle = 0; drain < 8; ++cycle) {
+        const sysc::VoxelBeat in = former.done() ? sysc::VoxelBeat{} : former.next();
+        ring->clock(in, a);
+        tlm.clock(in, b);
+        ASSERT_EQ(a.valid, b.valid) << "cycle " << cycle;
+        for (int k = 0; k < p; ++k) {
+          if (!(a.valid >> k & 1)) continue;
+          const auto i = static_cast<size_t>(k);
+          ASSERT_EQ(std::make_tuple(a.sample[i], a.u[i], a.v[i], a.tag[i]),
+                    std::make_tuple(b.sample[i], b.u[i], b.v[i], b.tag[i]))
+              << "cycle " << cycle << ", lane " << k;
+          ++compared;
+        }
+        if (former.done()) ++drain;  // the ring's last samples leave within its 4 cycles
+      }
+    }
+  }
+  EXPECT_GT(compared, 10000);
+#endif
+}
+
+// A unit whose output is wrong: the checker names the first sample that
+// differs (its slice and ray), and a ray that never leaves.
+namespace {
+class Faulty final : public sysc::PerspInterpIf {
+ public:
+  Faulty(const sysc::FramePlan& plan, bool drop) : inner_(plan), drop_(drop) {}
+  void clock(const sysc::VoxelBeat& in, sysc::RaySampleBeat& out) override {
+    inner_.clock(in, out);
+    for (int k = 0; k < 16 && !done_; ++k)
+      if (out.valid >> k & 1 && out.tag[static_cast<size_t>(k)] == 3) {
+        if (drop_) out.valid &= ~(1u << k);
+        else out.sample[static_cast<size_t>(k)] ^= 1;
+        u_ = out.u[static_cast<size_t>(k)];
+        v_ = out.v[static_cast<size_t>(k)];
+        done_ = true;
+      }
+  }
+  sysc::Level level() const override { return sysc::Level::Tlm; }
+  int64_t u_ = 0, v_ = 0;
+  bool done_ = false;
+
+ private:
+  sysc::TlmInterpPersp inner_;
+  bool drop_;
+};
+}  // namespace
+
+TEST(SystemPerspective, TheCheckNamesAWrongOrMissingSampleBySliceAndRay) {
+  const test::Setup s = setup(scene(kEyes[1]));
+  for (const bool drop : {false, true}) {
+    SCOPED_TRACE(drop ? "dropped" : "flipped");
+    const sysc::FramePlan plan(s.host.regs, 4);
+    sysc::VoxelMemory mem(s.volume, 4);
+    sysc::TlmAddr addr(mem.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
+    sysc::StreamFormer former(plan, mem, addr, 1);
+    Faulty unit(plan, drop);
+    const sysc::PerspectiveFrameResult res = sysc::run_perspective_frame({plan, s.volume, 1, true, false, nullptr, {}}, former, unit);
+    ASSERT_TRUE(unit.done_);
+    ASSERT_TRUE(res.mismatch);
+    EXPECT_EQ(res.mismatch->unit, sysc::Unit::Interp);
+    EXPECT_EQ(res.mismatch->slice, 3);
+    EXPECT_EQ(res.mismatch->x, unit.u_);
+    EXPECT_EQ(res.mismatch->y, unit.v_);
+    if (drop) {
+      EXPECT_EQ(res.mismatch->got, "0 time(s)");
+    }
+    // Without the check the same frame is an error, not an image.
+    sysc::VoxelMemory mem2(s.volume, 4);
+    sysc::TlmAddr addr2(mem2.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
+    sysc::StreamFormer former2(plan, mem2, addr2, 1);
+    Faulty unit2(plan, drop);
+    if (drop) {
+      EXPECT_THROW(sysc::run_perspective_frame({plan, s.volume, 1, false, false, nullptr, {}}, former2, unit2), std::logic_error);
+    }
+  }
+}
+
+TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
   const test::Setup s = setup(scene(kEyes[0]));
-  sysc::SystemConfig clocked = tlm_config(4);
-  clocked.cycle_level = true;
+  auto refused = [&](const sysc::SystemConfig& cfg, const golden::Registers& r, const std::string& says) {
+    try {
+      sysc::run_frame(r, s.volume, cfg);
+      ADD_FAILURE() << "ran; expected a refusal saying: " << says;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  };
   sysc::SystemConfig rtl;
   rtl.p = 4;
   rtl.levels = kRtl;
-  for (const sysc::SystemConfig& cfg : {clocked, rtl}) {
-    try {
-      sysc::run_frame(s.host.regs, s.volume, cfg);
-      ADD_FAILURE() << "a perspective frame ran clocked or at RTL";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("loosely timed with every unit at transaction level only"),
-                std::string::npos)
-          << e.what();
-    }
+  refused(rtl, s.host.regs, "the gradient unit has no perspective RTL yet");
+  sysc::SystemConfig shade = clocked_config(4, false);
+  shade.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
+  refused(shade, s.host.regs, "the shade unit has no perspective RTL yet");
+  golden::Registers zdiff = s.host.regs;
+  zdiff.gradient = true;
+  zdiff.z_gradient = golden::ZGradient::VoxelDifferences;
+  refused(clocked_config(4, false), zdiff, "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\"");
+  if (CUBE4_TEST_RTL) {
+    golden::Registers tagged = s.host.regs;
+    tagged.p.tag_bits = 2;
+    refused(clocked_config(4, true), tagged, "verilated without tag hardware");
+    refused(clocked_config(2, true), s.host.regs, "CUBE4_SYSTEM_PERSP_PIPES");
   }
 }

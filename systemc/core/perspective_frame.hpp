@@ -1,0 +1,50 @@
+// A perspective frame clocked (Cube-4 §3; docs/system.md, "Perspective
+// frames"): the stream former's voxel beats (address generation, skewed
+// memory, de-skew; the perspective stream's three flush beams at the end)
+// through the perspective interpolation unit, clocked TLM or RTL, a beat a
+// clock on a plain loop with the parallel schedule's registered link in
+// between. Every sample that leaves the unit is kept by its slice and ray
+// and checked: each ray of each slice leaves once per frame, and with
+// `check` its value equals golden perspective_sample()'s (the first
+// difference is the frame's mismatch). The gradient, shading and
+// compositing of perspective samples have no clocked models or rings yet:
+// the unit's samples go through them loosely timed, golden
+// render_perspective() given those samples (FixedOptions::given_samples).
+#pragma once
+#include <cstdint>
+#include <optional>
+
+#include "golden/polygon_frame.hpp"
+#include "golden/renderers.hpp"
+#include "golden/volume.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/stream_former.hpp"
+#include "systemc/core/system.hpp"
+#include "systemc/core/unit_if.hpp"
+
+namespace cube4::sysc {
+
+struct PerspectiveFrameResult {
+  golden::BasePlane plane;
+  uint64_t beats = 0;              // voxel beats the former gave, all frames
+  uint64_t last_beat_cycle = 0;    // the cycle of the former's last beat
+  uint64_t last_sample_cycle = 0;  // the cycle the unit's last sample left
+  uint64_t cycles = 0;             // clock cycles simulated
+  uint64_t samples = 0;            // samples that left the unit, all frames
+  std::optional<Mismatch> mismatch;
+};
+
+struct PerspectiveFrameInput {
+  const FramePlan& plan;
+  const golden::Volume& vol;
+  int frames = 1;
+  bool check = false;
+  bool accumulators = false;
+  const golden::PolygonFrame* polygons = nullptr;
+  golden::Progress progress;
+};
+
+PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
+                                             PerspInterpIf& interp);
+
+}  // namespace cube4::sysc
