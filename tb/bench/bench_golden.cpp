@@ -57,7 +57,9 @@ int main(int argc, char** argv) {
     if (supersampling > 0) s.supersampling = supersampling;
     finish_scene(s);
     const std::string dir = scene_path.empty() ? "." : std::filesystem::path(scene_path).parent_path().string();
+    const auto load0 = std::chrono::steady_clock::now();
     const Volume vol = load_volume(s.volume, s.precision.voxel_bits, dir.empty() ? "." : dir);
+    const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - load0).count();
     const HostProgram h = program_host(s, vol);
     std::vector<double> ms;
     RenderStats stats;
@@ -91,6 +93,7 @@ int main(int argc, char** argv) {
         {"scene", scene_path.empty() ? "(default)" : scene_path},
         {"volume", vol.source},
         {"dim", vol.dim},
+        {"volume_load_ms", load_ms},
         {"image", {s.width, s.height}},
         {"supersampling", s.supersampling},
         {"frames", frames},

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -297,15 +296,13 @@ TEST(Den, BrainsmallLoadsAs12BitWithDocumentedMapping) {
   EXPECT_EQ(vmax, expected_q(max_byte, 0, 255, 12));
 }
 
-TEST(Den, BrainsmallLoadsFast) {
-  double best_ms = 1e9;
-  for (int i = 0; i < 3; ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
-    const Volume v = load_den(CUBE4_BRAINSMALL, full(), 12);
-    const auto t1 = std::chrono::steady_clock::now();
-    best_ms = std::min(best_ms, std::chrono::duration<double, std::milli>(t1 - t0).count());
-  }
-  EXPECT_LT(best_ms, 100.0);
+// How fast it loads is bench_golden's `volume_load_ms` (docs/volumes.md),
+// not a test's: wall-clock limits fail on a loaded machine.
+TEST(Den, BrainsmallLoadsTheSameVoxelsEveryTime) {
+  const Volume a = load_den(CUBE4_BRAINSMALL, full(), 12);
+  const Volume b = load_den(CUBE4_BRAINSMALL, full(), 12);
+  EXPECT_EQ(a.dim, (std::array<int, 3>{128, 128, 84}));
+  EXPECT_EQ(a.data, b.data);
 }
 
 TEST(Den, DefaultPathAndLoadVolumeResolveRelativePaths) {
