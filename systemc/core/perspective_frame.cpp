@@ -13,13 +13,15 @@ namespace {
 
 // The unit's samples of a frame by slice and ray, as the renderer asks for
 // them; with the count of each ray's arrivals (one per frame streamed).
+// Which rays sample a slice, and what they should sample, is golden's
+// (perspective_slice()), whatever weight generator the unit ran with.
 class RaySamples final : public golden::PerspectiveSamples {
  public:
   RaySamples(const FramePlan& plan, const golden::Volume& vol, int frames, bool check)
       : plan_(plan), pv_(vol, plan.r.perm, plan.r.flip), frames_(frames), check_(check),
         slices_(static_cast<size_t>(plan.K)) {
     for (int k = 0; k < plan.K; ++k) {
-      const golden::PerspectiveSlice& s = plan.persp[static_cast<size_t>(k)];
+      const golden::PerspectiveSlice& s = golden_.emplace_back(golden::perspective_slice(plan.r, k));
       Slice& out = slices_[static_cast<size_t>(k)];
       out.width = s.rays_x.empty() ? 0 : s.rays_x.hi - s.rays_x.lo;
       const int64_t height = s.rays_y.empty() ? 0 : s.rays_y.hi - s.rays_y.lo;
@@ -85,7 +87,7 @@ class RaySamples final : public golden::PerspectiveSamples {
     std::vector<uint8_t> vtag;
     std::vector<int> count;
   };
-  const golden::PerspectiveSlice& slice(uint32_t k) const { return plan_.persp[k]; }
+  const golden::PerspectiveSlice& slice(uint32_t k) const { return golden_[k]; }
   size_t index(uint32_t k, int64_t u, int64_t v) const {
     const golden::PerspectiveSlice& s = slice(k);
     return static_cast<size_t>((v - s.rays_y.lo) * slices_[k].width + (u - s.rays_x.lo));
@@ -121,6 +123,7 @@ class RaySamples final : public golden::PerspectiveSamples {
   }
 
   const FramePlan& plan_;
+  std::vector<golden::PerspectiveSlice> golden_;
   golden::PermutedVolume pv_;
   int frames_;
   bool check_;

@@ -170,7 +170,16 @@ struct ClockedFrame {
 // A clocked perspective frame (check_perspective_levels() allowed it).
 void run_perspective(const ClockedFrame& f, SystemResult& res) {
   const SystemConfig& cfg = f.cfg;
-  const FramePlan& plan = f.plan;
+  // The weight generator runs at RTL with the interpolation unit, as in
+  // parallel projection: the ring then reads cube4_persp_slice's slice
+  // constants; the frame's check keeps golden's.
+  std::optional<FramePlan> rtl_plan;
+  if (cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl) {
+    rtl_plan.emplace(f.rs, cfg.p, kUserTagBits, 0, std::vector<golden::SliceControl>{},
+                     rtl_perspective_slices(f.rs, *f.ctx));
+    res.weight_generator = Level::Rtl;
+  }
+  const FramePlan& plan = rtl_plan ? *rtl_plan : f.plan;
   std::unique_ptr<AddrIf> addr;
   if (cfg.levels[static_cast<size_t>(Unit::Addr)] == Level::Rtl)
     addr = make_rtl_addr(plan, f.mem.layout(), *f.ctx, cfg.trace);

@@ -29,6 +29,9 @@ std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan&, Verilated
   unavailable();
 }
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers&, VerilatedContext&) { unavailable(); }
+std::vector<golden::PerspectiveSlice> rtl_perspective_slices(const golden::Registers&, VerilatedContext&) {
+  unavailable();
+}
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan&, const golden::SkewLayout&, VerilatedContext&, const TraceWindow&) {
   unavailable();
 }

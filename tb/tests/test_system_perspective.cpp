@@ -181,6 +181,8 @@ void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const g
   EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
   expect_plane(want, res.plane);
   EXPECT_TRUE(res.back_loosely_timed);
+  // The weight generator runs at the interpolation unit's level.
+  EXPECT_EQ(res.weight_generator, cfg.levels[static_cast<size_t>(sysc::Unit::Interp)]);
   EXPECT_EQ(res.samples, stats.samples);
   // The stream: every pass back to back, then the zero pass (with
   // gradients) and three flush beams, a beat a cycle from cycle 1.
@@ -330,6 +332,48 @@ TEST(SystemPerspective, TheCheckNamesAWrongOrMissingSampleBySliceAndRay) {
       EXPECT_THROW(sysc::run_perspective_frame({plan, s.volume, 1, false, false, nullptr, {}}, former2, unit2), std::logic_error);
     }
   }
+}
+
+// The system's RTL weight generator (cube4_persp_slice) gives every slice
+// golden's constants, for views from each face; a wrong constant in the
+// plan the unit runs with is caught by the frame's check, which keeps
+// golden's slices.
+TEST(SystemPerspective, TheRtlWeightGeneratorGivesGoldensSlicesAndAWrongOneIsCaught) {
+  const auto fields = [](const golden::PerspectiveSlice& s) {
+    return std::vector<int64_t>{s.k, s.z_voxel, s.wz, s.spacing, s.ray0_x, s.ray0_y, s.rays_x.lo, s.rays_x.hi,
+                                s.rays_y.lo, s.rays_y.hi, static_cast<int64_t>(s.box_reciprocal),
+                                s.lateral_reciprocal, s.behind_x.start, s.behind_x.step, s.behind_y.start,
+                                s.behind_y.step, s.ahead_x.start, s.ahead_x.step, s.ahead_y.start, s.ahead_y.step};
+  };
+#if CUBE4_TEST_RTL
+  {
+    for (const char* eye : kEyes) {
+      const test::Setup s = setup(scene(eye));
+      rtl::ScopedVerilatedContext ctx(1, false, true);
+      const std::vector<golden::PerspectiveSlice> got = sysc::rtl_perspective_slices(s.host.regs, *ctx);
+      ASSERT_EQ(got.size(), static_cast<size_t>(s.host.regs.sample_slices())) << eye;
+      for (int k = 0; k < s.host.regs.sample_slices(); ++k)
+        EXPECT_EQ(fields(got[static_cast<size_t>(k)]), fields(golden::perspective_slice(s.host.regs, k)))
+            << "eye " << eye << ", slice " << k;
+    }
+  }
+#else
+  (void)fields;
+#endif
+  const test::Setup s = setup(scene(kEyes[2]));
+  std::vector<golden::PerspectiveSlice> wrong;
+  for (int k = 0; k < s.host.regs.sample_slices(); ++k) wrong.push_back(golden::perspective_slice(s.host.regs, k));
+  wrong[5].ray0_x += int64_t{1} << (s.host.regs.p.dda_frac_bits - 2);  // a quarter voxel
+  const sysc::FramePlan plan(s.host.regs, 4, sysc::kUserTagBits, 0, {}, wrong);
+  sysc::VoxelMemory mem(s.volume, 4);
+  sysc::TlmAddr addr(mem.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
+  sysc::StreamFormer former(plan, mem, addr, 1);
+  sysc::TlmInterpPersp unit(plan);
+  const sysc::PerspectiveFrameResult res =
+      sysc::run_perspective_frame({plan, s.volume, 1, true, false, nullptr, {}}, former, unit);
+  ASSERT_TRUE(res.mismatch);
+  EXPECT_EQ(res.mismatch->unit, sysc::Unit::Interp);
+  EXPECT_EQ(res.mismatch->slice, 5);
 }
 
 TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
