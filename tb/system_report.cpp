@@ -47,8 +47,11 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
                            "models of them yet); cycles_per_frame is the cycle model's"
                  : cfg.all_tlm() && !cfg.cycle_level ? "cycle model (loosely timed, no clock simulated)"
                                                      : "simulated clock cycles"},
-      {"check", cfg.check ? (check_failure.empty() ? "passed: base plane and unit streams bit-exact" : check_failure)
-                          : "off"},
+      {"check", !cfg.check                ? std::string("off")
+                : !check_failure.empty()     ? check_failure
+                : r.back_loosely_timed       ? std::string("passed: base plane and the interpolation unit's samples bit-exact "
+                                                           "(the units after it loosely timed)")
+                                             : std::string("passed: base plane and unit streams bit-exact")},
   };
   if (!r.polygon_connection.empty()) {
     j["polygon_connection"] = r.polygon_connection;
