@@ -131,12 +131,11 @@ void check_perspective_levels(const golden::Registers& r, const SystemConfig& cf
         "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
         "interpolation unit's clocked models have no voxel z differences yet; run --model tlm (docs/perspective.md)");
   const bool rtl_interp = cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl;
-  if (rtl_interp && r.p.tag_bits > 0)
-    throw std::invalid_argument(
-        "voxel tags (\"precision.tag_bits\": " + std::to_string(r.p.tag_bits) +
-        ") with \"view.projection\": \"perspective\": the system's perspective interpolation ring is "
-        "verilated without tag hardware; run the interpolation unit at TLM (--model tlm, or mixed:addr)");
-  if (rtl_interp) require_rtl_perspective(cfg.p);
+  if (rtl_interp) {
+    require_rtl_perspective(cfg.p);
+    // Its tag variants: the p of both CUBE4_SYSTEM_PERSP_PIPES and _TAG_PIPES.
+    require_rtl_tags(cfg.p, r.p.tag_bits);
+  }
   if (polygons && cfg.polygon_engine.connection != golden::PolygonConnection::Ideal)
     throw std::invalid_argument(
         std::string("\"polygon_engine.connection\": \"") + polygon_connection_name(cfg.polygon_engine.connection) +

@@ -172,11 +172,22 @@ void require_rtl_perspective(int p) {
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                      const TraceWindow& trace) {
   require_rtl_perspective(plan.p);
-  switch (plan.p) {
+  if (plan.r.p.tag_bits > 0) {
+    // The tag variants are those of the p with the parallel rings' ones too.
+    require_rtl_tags(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_PERSP_TAG_P(p) \
+  case p: return std::make_unique<RtlInterpPersp<Vsys_interp_persp_tags_p##p>>(plan, ctx, trace);
+#include "rtl_persp_tag_variant_list.inc"
+#undef CUBE4_RTL_PERSP_TAG_P
+    }
+  } else {
+    switch (plan.p) {
 #define CUBE4_RTL_PERSP_P(p) \
   case p: return std::make_unique<RtlInterpPersp<Vsys_interp_persp_p##p>>(plan, ctx, trace);
 #include "rtl_persp_variant_list.inc"
 #undef CUBE4_RTL_PERSP_P
+    }
   }
   throw std::logic_error("make_rtl_interp_persp: p = " + std::to_string(plan.p));
 }

@@ -4,11 +4,15 @@
 // pass's constants (the frame plan's perspective slices: golden
 // perspective_slice(), or the RTL weight generator's); the ring keeps the
 // finished pass's own for its drain. The zero pass has no rays.
+// With voxel tags (bela §III) M is a ring with kRtlVoxelTagBits of tag
+// hardware: the voxel words {tag, value} go in whole, each sample's tag
+// comes out beside it.
 #pragma once
 #include <cstdint>
 
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_factory.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/unit_streams.hpp"
 #include "systemc/rtl/vl_bits.hpp"
@@ -23,14 +27,15 @@ class RtlInterpPersp final : public PerspInterpIf {
  public:
   RtlInterpPersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), tag_bits_(plan.tag_bits()),
-        m_(ctx, "interp_persp", trace, "interp") {}
+        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), m_(ctx, "interp_persp", trace, "interp") {}
 
   void clock(const VoxelBeat& in, RaySampleBeat& out) override {
     using rtl::get_bits;
     using rtl::put_bits;
     M& m = *m_;
     rtl::drive_stream_flags(m, in);
-    for (int k = 0; k < p_; ++k) put_bits(m.voxels_i, k * v_, v_, in.voxel[static_cast<size_t>(k)]);
+    const int word_bits = v_ + vtag_bits_;
+    for (int k = 0; k < p_; ++k) put_bits(m.voxels_i, k * word_bits, word_bits, in.voxel[static_cast<size_t>(k)]);
     m.wz_i = in.wz;
     put_bits(m.tag_i, 0, tag_bits_, in.tag);
     if (in.valid) drive_pass(in.tag);
@@ -44,7 +49,7 @@ class RtlInterpPersp final : public PerspInterpIf {
       out.u[i] = static_cast<int32_t>(rtl::sign_extend(get_bits(m.ray_u_o, k * kPerspRayBits, kPerspRayBits), kPerspRayBits));
       out.v[i] = static_cast<int32_t>(rtl::sign_extend(get_bits(m.ray_v_o, k * kPerspRayBits, kPerspRayBits), kPerspRayBits));
       out.tag[i] = static_cast<uint32_t>(get_bits(m.tag_o, k * tag_bits_, tag_bits_));
-      out.vtag[i] = 0;
+      out.vtag[i] = vtag_bits_ > 0 ? static_cast<uint8_t>(get_bits(m.vtag_o, k * vtag_bits_, vtag_bits_)) : 0;
     }
     m_.rise();
   }
@@ -68,7 +73,7 @@ class RtlInterpPersp final : public PerspInterpIf {
   }
 
   const FramePlan& plan_;
-  int p_, v_, tag_bits_;
+  int p_, v_, tag_bits_, vtag_bits_;  // vtag_bits_: the model's VoxelTagBits
   RtlModel<M> m_;
 };
 

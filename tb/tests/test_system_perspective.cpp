@@ -215,6 +215,29 @@ TEST(SystemPerspective, ClockedInterpolationFromEveryFaceAtP1458) {
   }
 }
 
+// Voxel tags (bela §III) in a clocked perspective frame: two spheres with
+// their own classes, each sample's tag the nearest voxel's, through the
+// clocked TLM unit and the ring's tag variant (p = 4, in both
+// CUBE4_SYSTEM_PERSP_PIPES and CUBE4_SYSTEM_TAG_PIPES by default).
+TEST(SystemPerspective, ClockedVoxelTags) {
+  const test::Setup s = setup(R"({"volume": {"synthetic": "spheres", "size": [24, 20, 16]},
+      "view": {"projection": "perspective", "fov": 45, "eye": [30, -20, -25], "up": [0, 1, 0]},
+      "output": {"width": 48, "height": 48}, "precision": {"tag_bits": 2},
+      "tags": {"label": [{"tag": 1, "sphere": {"center": [6, 10, 8], "radius": 6}},
+                         {"tag": 2, "sphere": {"center": [17, 10, 8], "radius": 6}}],
+               "classes": [{"tag": 1, "color": [[0, 1, 0.15, 0.1], [1, 1, 0.15, 0.1]]},
+                           {"tag": 2, "color": [[0, 0.1, 0.2, 0.9], [1, 0.1, 0.2, 0.9]],
+                            "opacity": [[0, 0], [0.3, 0], [0.5, 0.9], [1, 0.9]]}]}})");
+  ASSERT_EQ(s.host.regs.p.tag_bits, 2);
+  golden::RenderStats stats;
+  const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, &stats);
+  for (const bool rtl : {false, true}) {
+    if (rtl && !rtl_perspective(4)) continue;
+    SCOPED_TRACE(rtl ? "RTL" : "clocked TLM");
+    expect_clocked(s, clocked_config(4, rtl), want, stats);
+  }
+}
+
 // Two frames back to back (the second's passes follow the first's, which
 // drains in them), with and without gradients (the zero pass), with the
 // address generation at RTL too.
@@ -398,9 +421,10 @@ TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
   zdiff.z_gradient = golden::ZGradient::VoxelDifferences;
   refused(clocked_config(4, false), zdiff, "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\"");
   if (CUBE4_TEST_RTL) {
+    refused(clocked_config(2, true), s.host.regs, "CUBE4_SYSTEM_PERSP_PIPES");
+    // Tags need the ring's tag variant: p = 5 has the ring but no tag variant.
     golden::Registers tagged = s.host.regs;
     tagged.p.tag_bits = 2;
-    refused(clocked_config(4, true), tagged, "verilated without tag hardware");
-    refused(clocked_config(2, true), s.host.regs, "CUBE4_SYSTEM_PERSP_PIPES");
+    refused(clocked_config(5, true), tagged, "CUBE4_SYSTEM_TAG_PIPES");
   }
 }
