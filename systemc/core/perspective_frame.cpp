@@ -7,6 +7,7 @@
 
 #include "golden/permuted_volume.hpp"
 #include "golden/perspective.hpp"
+#include "systemc/core/pass_gate.hpp"
 
 namespace cube4::sysc {
 namespace {
@@ -146,11 +147,13 @@ PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, St
   constexpr uint64_t kDrain = 1 + 4, kMargin = 8;
   VoxelBeat link;
   RaySampleBeat out;
+  std::optional<PassGate> gate;
+  if (in.source) gate.emplace(*in.source);
   uint64_t cycle = 0, idle = 0;
   while (idle < kDrain + kMargin) {
     ++cycle;
     VoxelBeat beat;
-    if (!former.done()) {
+    if (!former.done() && !(gate && gate->holds(former, cycle))) {
       beat = former.next();
       res.last_beat_cycle = cycle;
     }
@@ -167,6 +170,7 @@ PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, St
       in.progress(std::min(1.0, static_cast<double>(cycle) / static_cast<double>(total)));
   }
   samples.check_complete();
+  if (gate) res.polygon_stall_cycles = gate->first_frame_stalls(in.frames);
   res.beats = former.beats();
   res.cycles = cycle;
   res.samples = samples.taken();

@@ -10,6 +10,8 @@
 // compositing of perspective samples have no clocked models or rings yet:
 // the unit's samples go through them loosely timed, golden
 // render_perspective() given those samples (FixedOptions::given_samples).
+// With a polygon source the stream waits for each pass's slab image at its
+// first beat, as a parallel frame's does (pass_gate.hpp).
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -18,6 +20,7 @@
 #include "golden/renderers.hpp"
 #include "golden/volume.hpp"
 #include "systemc/core/frame_plan.hpp"
+#include "systemc/core/polygon_source.hpp"
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/system.hpp"
 #include "systemc/core/unit_if.hpp"
@@ -31,6 +34,7 @@ struct PerspectiveFrameResult {
   uint64_t last_sample_cycle = 0;  // the cycle the unit's last sample left
   uint64_t cycles = 0;             // clock cycles simulated
   uint64_t samples = 0;            // samples that left the unit, all frames
+  uint64_t polygon_stall_cycles = 0;  // the first frame's waits for slab images
   std::optional<Mismatch> mismatch;
 };
 
@@ -42,6 +46,7 @@ struct PerspectiveFrameInput {
   bool accumulators = false;
   const golden::PolygonFrame* polygons = nullptr;
   golden::Progress progress;
+  PolygonSource* source = nullptr;  // the slab images' connection in time, or none (ideal)
 };
 
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,

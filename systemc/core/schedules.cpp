@@ -27,19 +27,8 @@ namespace {
 // stream former's counter, u.cycle, on one thread).
 VoxelBeat former_edge(FrameUnits& u) {
   ++u.cycle;
-  if (u.polygons && !u.former->done()) {
-    // A pass starts only once its slice's slab image is in the buffer: the
-    // stream waits at its first beat (an invalid beat a cycle).
-    const StreamFormer::Upcoming n = u.former->upcoming();
-    // Passes are numbered from first_pass() (-1: a priming pass) in a frame.
-    const int id = n.frame * (u.former->passes() + 1) + n.pass + 1;
-    if (n.first_of_pass && id != u.released_pass) {
-      if (n.pass == u.former->first_pass() && n.frame == 1) u.first_frame_stalls = u.polygons->stall_cycles();
-      u.release_at = u.polygons->release(n.pass, u.cycle);
-      u.released_pass = id;
-    }
-    if (u.cycle < u.release_at) return VoxelBeat{};
-  }
+  // A pass starts only once its slice's slab image is in the buffer.
+  if (u.gate && u.gate->holds(*u.former, u.cycle)) return VoxelBeat{};
   const VoxelBeat b = u.former->next();
   if (b.valid) u.last_valid[0] = u.cycle;
   if (u.progress && (u.cycle & 0xffff) == 0)

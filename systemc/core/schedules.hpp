@@ -15,12 +15,13 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "golden/renderers.hpp"
 #include "systemc/core/stream_checker.hpp"
 #include "systemc/core/stream_former.hpp"
-#include "systemc/core/polygon_source.hpp"
+#include "systemc/core/pass_gate.hpp"
 #include "systemc/core/system.hpp"
 #include "systemc/core/unit_if.hpp"
 
@@ -38,15 +39,12 @@ struct FrameUnits {
   std::unique_ptr<ShadeIf> shade;
   std::unique_ptr<CompositeIf> composite;
   StreamChecker* checker = nullptr;
-  PolygonSource* polygons = nullptr;  // a hybrid frame's slab images in time
+  std::optional<PassGate> gate;  // a hybrid frame's slab images in time
   golden::Progress progress;
   uint64_t total_beats = 1;
   int frames = 1;
 
   // Written by the front (stream former .. gradient unit).
-  int released_pass = -1;  // frame * (passes + 1) + pass + 1: the pass the source let start
-  uint64_t release_at = 0;
-  uint64_t first_frame_stalls = 0;
   uint64_t cycle = 0;
   uint64_t last_valid[3] = {0, 0, 0};  // last cycle the voxel, sample and gradient links carried a beat
 

@@ -57,12 +57,11 @@ int simulation_threads(const SystemConfig& cfg) {
   return rtl_back && std::thread::hardware_concurrency() >= 2 ? 2 : 1;
 }
 
-void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg,
-                              const golden::PolygonFrame* polygons);
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg);
 
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
-  check_perspective_levels(r, cfg, nullptr);
+  check_perspective_levels(r, cfg);
   const FramePlan plan(r, cfg.p);  // p, supersampling and the stream tag's slices
   if (cfg.all_tlm() && !cfg.cycle_level) return;
   if (cfg.p > kMaxLanes)
@@ -116,8 +115,7 @@ void check_polygon_levels(const SystemConfig& cfg) {
 // generation at either level; the gradient, shading and compositing units
 // have no perspective models at those levels yet, and run loosely timed
 // after the stream (systemc/core/perspective_frame.hpp).
-void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg,
-                              const golden::PolygonFrame* polygons) {
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
   for (const Unit u : {Unit::Gradient, Unit::Shade, Unit::Composite})
     if (cfg.levels[static_cast<size_t>(u)] == Level::Rtl)
@@ -136,11 +134,6 @@ void check_perspective_levels(const golden::Registers& r, const SystemConfig& cf
     // Its tag variants: the p of both CUBE4_SYSTEM_PERSP_PIPES and _TAG_PIPES.
     require_rtl_tags(cfg.p, r.p.tag_bits);
   }
-  if (polygons && cfg.polygon_engine.connection != golden::PolygonConnection::Ideal)
-    throw std::invalid_argument(
-        std::string("\"polygon_engine.connection\": \"") + polygon_connection_name(cfg.polygon_engine.connection) +
-        "\" with \"view.projection\": \"perspective\": a clocked perspective frame does not wait for slab "
-        "images yet; use the \"ideal\" connection, or --model tlm");
 }
 
 namespace {
@@ -191,11 +184,13 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
   else
     interp = std::make_unique<TlmInterpPersp>(plan);
   const PerspectiveFrameResult pr =
-      run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress}, former, *interp);
+      run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress, f.source},
+                            former, *interp);
   res.plane = pr.plane;
   // The units after interpolation are loosely timed: the frame's cycles
   // are the cycle model's, whose stream and interpolation the run measured.
-  res.frame_cycles = cfg.frames > 1 ? f.cc.latency_followed : f.cc.latency;
+  res.polygon_stall_cycles = pr.polygon_stall_cycles;
+  res.frame_cycles = (cfg.frames > 1 ? f.cc.latency_followed : f.cc.latency) + res.polygon_stall_cycles;
   res.last_beat = {pr.last_beat_cycle, pr.last_sample_cycle, 0, 0};
   res.simulated_cycles = pr.cycles;
   res.voxel_reads = f.mem.reads();
@@ -264,13 +259,13 @@ void run_parallel(const ClockedFrame& f, SystemResult& res) {
   else
     u.composite = std::move(tlm_composite);
   u.checker = f.checker;
-  u.polygons = f.source;
+  if (f.source) u.gate.emplace(*f.source);
   u.progress = f.progress;
   u.total_beats = f.cc.stream * static_cast<uint64_t>(cfg.frames) + f.cc.flush;
   run_units(u, cfg.kernel);
   if (!u.done) throw std::logic_error("system: the simulation stopped before the frame's last pixel");
   res.frame_cycles = u.frame_done_cycles.front();
-  if (f.source) res.polygon_stall_cycles = u.frames > 1 ? u.first_frame_stalls : f.source->stall_cycles();
+  if (u.gate) res.polygon_stall_cycles = u.gate->first_frame_stalls(u.frames);
   if (u.frames > 1) res.measured_interval = u.frame_done_cycles[1] - u.frame_done_cycles[0];
   res.last_beat = {u.last_valid[0], u.last_valid[1], u.last_valid[2], u.last_shaded};
   res.simulated_cycles = u.done_cycle;
@@ -294,7 +289,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     rs = &forced;
   }
   if (polygons) check_polygon_levels(cfg);
-  check_perspective_levels(r, cfg, polygons);
+  check_perspective_levels(r, cfg);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;
