@@ -27,16 +27,8 @@ time_of() {  # scene threads [pinned]: the median frame time in ms
 }
 for scene in perspective_sphere perspective_head perspective_flyin perspective_sphere_box perspective_brain_probe; do
   src=$here/scenes/$scene.json
-  "$python" - "$src" "$tmp/$scene-parallel.json" <<'PY'
-import json, os, sys
-s = json.load(open(sys.argv[1]))
-s["view"] = {k: v for k, v in s["view"].items() if k not in ("projection", "fov", "distance", "eye")}
-base = os.path.dirname(os.path.abspath(sys.argv[1]))
-for item in [s.get("volume", {})] + s.get("polygons", []):
-    if "file" in item and not os.path.isabs(item["file"]):
-        item["file"] = os.path.join(base, item["file"])
-json.dump(s, open(sys.argv[2], "w"))
-PY
+  "$python" "$here/scripts/scene_variant.py" "$src" "$tmp/$scene-parallel.json" \
+    view.projection- view.fov- view.distance- view.eye-
   echo "perf_perspective: $scene..." >&2
   one=$(time_of "$src" 1 pinned)
   all=$(time_of "$src" 0)
