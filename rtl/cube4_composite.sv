@@ -205,27 +205,25 @@ module cube4_composite #(
   end
 
   logic [3:0]                 visible1_q;  // crop visibility, stages 1..4
-  // Colour (stages 1..5), alpha (1..4) and value (1..6) delay lines,
-  // stage k at [(k-1)*Width +: Width].
-  logic [5*3*A-1:0]           rgb_q;
+  // Alpha delay line (stages 1..4), stage k at [(k-1)*A +: A]; the colour
+  // (5 stages) and the value (6) wait in cube4_pipe_delay.
   logic [4*A-1:0]             alpha_q;
-  logic [6*VoxelBits-1:0]     value_q;
+  logic [3*A-1:0]             rgb_5;
+  logic [VoxelBits-1:0]       value_6;
+  cube4_pipe_delay #(.Width(3 * A), .Depth(5)) u_rgb_delay (
+    .clk_i, .d_i({red_i, green_i, blue_i}), .q_o(rgb_5)
+  );
+  cube4_pipe_delay #(.Width(VoxelBits), .Depth(6)) u_value_delay (.clk_i, .d_i(value_i), .q_o(value_6));
 
   always_ff @(posedge clk_i) begin : stage1_regs
     visible1_q[0] <= crop_visible && (!window_enabled_i || in_window) && before_z;
-    rgb_q[0 +: 3*A]           <= {red_i, green_i, blue_i};
     alpha_q[0 +: A]           <= alpha_i;
-    value_q[0 +: VoxelBits]   <= value_i;
   end
 
   // The sample's data waits for the cut factor.
   always_ff @(posedge clk_i) begin : sample_delay
     for (int unsigned k = 1; k < 4; k++) visible1_q[k] <= visible1_q[k-1];
-    for (int unsigned k = 1; k < 5; k++) rgb_q[k*3*A +: 3*A] <= rgb_q[(k-1)*3*A +: 3*A];
     for (int unsigned k = 1; k < 4; k++) alpha_q[k*A +: A] <= alpha_q[(k-1)*A +: A];
-    for (int unsigned k = 1; k < 6; k++) begin
-      value_q[k*VoxelBits +: VoxelBits] <= value_q[(k-1)*VoxelBits +: VoxelBits];
-    end
   end
 
   // The cut factor of the sample in stage 5 (one: no cut-plane hardware).
@@ -408,7 +406,7 @@ module cube4_composite #(
   for (genvar ch = 0; ch < 3; ch++) begin : g_premultiply
     logic [AB-1:0] colour;
     cube4_to_acc #(.AlphaBits(A), .AccGuardBits(G)) u_colour_acc (
-      .pixel_i(rgb_q[4*3*A + ch*A +: A]), .acc_o(colour));
+      .pixel_i(rgb_5[ch*A +: A]), .acc_o(colour));
     cube4_mul_frac #(.XBits(AB), .FBits(A)) u_product (
       .x_i(colour), .f_i(cut_alpha_q), .y_o(pre_product[ch*AB +: AB]));
     if (G > 0) begin : g_clamp
@@ -470,7 +468,7 @@ module cube4_composite #(
     .back_green_i     (back_green),
     .back_blue_i      (back_blue),
     .back_alpha_i     (back_alpha),
-    .back_value_i     (value_q[5*VoxelBits +: VoxelBits]),
+    .back_value_i     (value_6),
     .back_selected_i  (pre_visible_q),
     .valid_o          (blend_valid),
     .red_o            (blend_red),

@@ -260,7 +260,6 @@ module cube4_composite_unit #(
   // output. Only the valid delay is reset.
   logic [AccDelay-1:0]          step_q;
   logic [AccDelay*CtrlBits-1:0] ctrl_q;
-  logic [Latency*ExitBits-1:0]  exit_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -273,7 +272,6 @@ module cube4_composite_unit #(
   always_ff @(posedge clk_i) begin
     ctrl_q <= {ctrl_q[(AccDelay-1)*CtrlBits-1:0],
                first_slice_i, slice_start_i, slice_end_i, beam_start_i, beam_end_i, dx_i, dy_i};
-    exit_q <= {exit_q[(Latency-1)*ExitBits-1:0], exit_d, u_d, v_d};
   end
 
   // Stage AccDelay: one step of the ray storage per sample.
@@ -606,7 +604,9 @@ module cube4_composite_unit #(
 
   logic               exit_o;
   logic [PosBits-1:0] u_o, v_o;
-  assign {exit_o, u_o, v_o} = exit_q[(Latency-1)*ExitBits +: ExitBits];
+  cube4_pipe_delay #(.Width(ExitBits), .Depth(Latency)) u_exit_delay (
+    .clk_i, .d_i({exit_d, u_d, v_d}), .q_o({exit_o, u_o, v_o})
+  );
 
   assign pixel_valid_o = result_valid && exit_o;
   assign pixel_u_o     = u_o;

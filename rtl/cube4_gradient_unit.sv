@@ -527,19 +527,16 @@ module cube4_gradient_unit #(
 
   // Sample, position, flags and tag beside cube4_gradient (data: not reset).
   localparam int unsigned SideBits = V + 2 * DimBits + 4 + UserTagBits;
-  logic [DimBits-1:0]               x_fire;
-  logic [GradLatency*SideBits-1:0]  side_q;
+  logic [DimBits-1:0] x_fire;
 
   assign x_fire = DimBits'(j_col_q) * DimBits'(NumPipes) + DimBits'(PipeIndex);
 
-  always_ff @(posedge clk_i) begin
-    side_q <= {side_q[(GradLatency-1)*SideBits-1:0],
-               ctl_q[CtrlBits +: UserTagBits], y_col_q, x_fire, own[0 +: V],
-               slice_end_q, slice_start_q, beam_end_q, beam_start_q};
-  end
-
-  assign {tag_o, y_o, x_o, sample_o, slice_end_o, slice_start_o, beam_end_o, beam_start_o} =
-      side_q[(GradLatency-1)*SideBits +: SideBits];
+  cube4_pipe_delay #(.Width(SideBits), .Depth(GradLatency)) u_side_delay (
+    .clk_i,
+    .d_i ({ctl_q[CtrlBits +: UserTagBits], y_col_q, x_fire, own[0 +: V],
+           slice_end_q, slice_start_q, beam_end_q, beam_start_q}),
+    .q_o ({tag_o, y_o, x_o, sample_o, slice_end_o, slice_start_o, beam_end_o, beam_start_o})
+  );
 
   // -------------------------------------------------------------------------
   // The centre sample's side data: its voxel tag and (HasVoxelZ) its

@@ -416,17 +416,12 @@ module cube4_interp_unit #(
     assign zdiff_o      = '0;
   end
 
-  // Flags and tag beside the trilinear pipeline (data: not reset). Packed:
-  // yosys 0.23 does not take assignments to unpacked arrays of this kind.
+  // Flags and tag beside the trilinear pipeline (data: not reset).
   localparam int unsigned SideBits = 4 + TagBits;
-  logic [TriLatency*SideBits-1:0] side_q;
-
-  always_ff @(posedge clk_i) begin
-    side_q <= {side_q[(TriLatency-1)*SideBits-1:0],
-               tag_q, drain_q, second_q, beam_end_q, beam_start_q};
-  end
-
-  assign {tag_o, slice_end_o, slice_start_o, beam_end_o, beam_start_o} =
-      side_q[(TriLatency-1)*SideBits +: SideBits];
+  cube4_pipe_delay #(.Width(SideBits), .Depth(TriLatency)) u_side_delay (
+    .clk_i,
+    .d_i ({tag_q, drain_q, second_q, beam_end_q, beam_start_q}),
+    .q_o ({tag_o, slice_end_o, slice_start_o, beam_end_o, beam_start_o})
+  );
 
 endmodule

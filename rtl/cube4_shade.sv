@@ -145,22 +145,18 @@ module cube4_shade #(
   // Classification, timed to meet Id and Is //
   /////////////////////////////////////////////
   // The sample travels to the output (value_o); classify taps it at ClassDelay.
-  logic [Latency*VoxelBits-1:0]        sample_delay_q;
-  logic [Latency*SideBits-1:0]         side_delay_q;
-  logic [ClassDelay*MagnitudeBits-1:0] mag_delay_q;
-  always_ff @(posedge clk_i) begin : sample_delay
-    sample_delay_q[0 +: VoxelBits] <= sample_i;
-    side_delay_q[0 +: SideBits] <= side_i;
-    for (int unsigned k = 1; k < Latency; k++) begin
-      sample_delay_q[k*VoxelBits +: VoxelBits] <= sample_delay_q[(k-1)*VoxelBits +: VoxelBits];
-      side_delay_q[k*SideBits +: SideBits] <= side_delay_q[(k-1)*SideBits +: SideBits];
-    end
-    mag_delay_q[0 +: MagnitudeBits] <= grad_mag_i;
-    for (int unsigned k = 1; k < ClassDelay; k++) begin
-      mag_delay_q[k*MagnitudeBits +: MagnitudeBits] <=
-          mag_delay_q[(k-1)*MagnitudeBits +: MagnitudeBits];
-    end
-  end
+  logic [VoxelBits-1:0]     class_sample, out_sample;
+  logic [MagnitudeBits-1:0] class_mag;
+  cube4_pipe_delay #(.Width(VoxelBits), .Depth(ClassDelay)) u_sample_to_class (
+    .clk_i, .d_i(sample_i), .q_o(class_sample)
+  );
+  cube4_pipe_delay #(.Width(VoxelBits), .Depth(Latency - ClassDelay)) u_sample_to_out (
+    .clk_i, .d_i(class_sample), .q_o(out_sample)
+  );
+  cube4_pipe_delay #(.Width(SideBits), .Depth(Latency)) u_side_delay (.clk_i, .d_i(side_i), .q_o(side_o));
+  cube4_pipe_delay #(.Width(MagnitudeBits), .Depth(ClassDelay)) u_mag_delay (
+    .clk_i, .d_i(grad_mag_i), .q_o(class_mag)
+  );
 
   logic [ClassDelay-1:0] class_valid_delay_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin : class_valid_delay
@@ -180,14 +176,7 @@ module cube4_shade #(
 
   // The tag meets the sample at the classifier's tap.
   if (VoxelTagBits > 0) begin : g_vtag_delay
-    logic [ClassDelay*VT-1:0] vtag_delay_q;
-    always_ff @(posedge clk_i) begin : vtag_delay
-      vtag_delay_q[0 +: VT] <= vtag_i;
-      for (int unsigned k = 1; k < ClassDelay; k++) begin
-        vtag_delay_q[k*VT +: VT] <= vtag_delay_q[(k-1)*VT +: VT];
-      end
-    end
-    assign class_vtag_in = vtag_delay_q[(ClassDelay-1)*VT +: VT];
+    cube4_pipe_delay #(.Width(VT), .Depth(ClassDelay)) u_vtag_delay (.clk_i, .d_i(vtag_i), .q_o(class_vtag_in));
   end else begin : g_no_vtag_delay
     logic unused_vtag_in;
     assign unused_vtag_in = ^vtag_i;
@@ -213,8 +202,8 @@ module cube4_shade #(
     .gmlut_waddr_i,
     .gmlut_wdata_i,
     .valid_i    (class_valid_delay_q[ClassDelay-1]),
-    .sample_i   (sample_delay_q[(ClassDelay-1)*VoxelBits +: VoxelBits]),
-    .grad_mag_i (mag_delay_q[(ClassDelay-1)*MagnitudeBits +: MagnitudeBits]),
+    .sample_i   (class_sample),
+    .grad_mag_i (class_mag),
     .vtag_i     (class_vtag_in),
     .valid_o    (class_valid),
     .red_o      (class_red),
@@ -284,16 +273,8 @@ module cube4_shade #(
     );
 
     // Id waits for the reflection vector's latency.
-    logic [LatRefl*MapBits-1:0] id_delay_q;
-    always_ff @(posedge clk_i) begin : id_delay
-      id_delay_q[0 +: MapBits] <= id_early;
-      for (int unsigned k = 1; k < LatRefl; k++) begin
-        id_delay_q[k*MapBits +: MapBits] <= id_delay_q[(k-1)*MapBits +: MapBits];
-      end
-    end
-
     logic [MapBits-1:0] id;
-    assign id = id_delay_q[(LatRefl-1)*MapBits +: MapBits];
+    cube4_pipe_delay #(.Width(MapBits), .Depth(LatRefl)) u_id_delay (.clk_i, .d_i(id_early), .q_o(id));
 
     ////////////////////////////////////////
     // Specular path: g -> R -> Is        //
@@ -451,7 +432,6 @@ module cube4_shade #(
     // No reflectance-map hardware: the colour is the classified colour (what
     // phong returns with shading off), timed as the phong stage would.
     logic [LatPhong-1:0]       valid_delay_q;
-    logic [LatPhong*3*A-1:0]   rgb_delay_q;
     always_ff @(posedge clk_i or negedge rst_ni) begin : valid_delay
       if (!rst_ni) begin
         valid_delay_q <= '0;
@@ -459,14 +439,10 @@ module cube4_shade #(
         valid_delay_q <= {valid_delay_q[LatPhong-2:0], class_valid};
       end
     end
-    always_ff @(posedge clk_i) begin : rgb_delay
-      rgb_delay_q[0 +: 3*A] <= {class_red, class_green, class_blue};
-      for (int unsigned k = 1; k < LatPhong; k++) begin
-        rgb_delay_q[k*3*A +: 3*A] <= rgb_delay_q[(k-1)*3*A +: 3*A];
-      end
-    end
+    cube4_pipe_delay #(.Width(3 * A), .Depth(LatPhong)) u_rgb_delay (
+      .clk_i, .d_i({class_red, class_green, class_blue}), .q_o({red_o, green_o, blue_o})
+    );
     assign valid_o = valid_delay_q[LatPhong-1];
-    assign {red_o, green_o, blue_o} = rgb_delay_q[(LatPhong-1)*3*A +: 3*A];
     // The shading registers, the gradient and the map write ports stay
     // ports, so that both variants connect alike.
     logic unused_shading_inputs;
@@ -478,16 +454,8 @@ module cube4_shade #(
   end
 
   // Alpha waits for phong.
-  logic [LatPhong*A-1:0] alpha_delay_q;
-  always_ff @(posedge clk_i) begin : alpha_delay
-    alpha_delay_q[0 +: A] <= class_alpha;
-    for (int unsigned k = 1; k < LatPhong; k++) begin
-      alpha_delay_q[k*A +: A] <= alpha_delay_q[(k-1)*A +: A];
-    end
-  end
+  cube4_pipe_delay #(.Width(A), .Depth(LatPhong)) u_alpha_delay (.clk_i, .d_i(class_alpha), .q_o(alpha_o));
 
-  assign alpha_o = alpha_delay_q[(LatPhong-1)*A +: A];
-  assign value_o = sample_delay_q[(Latency-1)*VoxelBits +: VoxelBits];
-  assign side_o  = side_delay_q[(Latency-1)*SideBits +: SideBits];
+  assign value_o = out_sample;
 
 endmodule

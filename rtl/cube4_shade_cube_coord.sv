@@ -99,72 +99,74 @@ module cube4_shade_cube_coord #(
   //////////////////////////////////
   // Stages 1..: restoring divider //
   //////////////////////////////////
-  // Per divider stage k: the inputs (registers, *_q) and outputs (comb,
-  // *_d), flattened: stage k's field is [k*Width +: Width].
+  // Divider stage k, a generate block each: its registers (*_q: the
+  // previous stage's outputs, stage 0's the face selection's) and its
+  // outputs (*_d). A block per stage, not one flattened vector of all
+  // stages: Verilator then evaluates each stage's fields as words, not as
+  // part-selects of a vector of several words (docs/performance.md).
   localparam int unsigned N = NumDivStages;
-  logic [N*NumBits-1:0] rem_u_q, rem_v_q, rem_u_d, rem_v_d;
-  logic [N*QuoBits-1:0] quo_u_q, quo_v_q, quo_u_d, quo_v_d;
-  logic [N*G-1:0]       major_q;
-  logic [N*3-1:0]       face_q;
-  logic [N-1:0]         far_u_q, far_v_q, nonzero_q, valid_q;
+  for (genvar k = 0; k < N; k++) begin : g_div
+    logic [NumBits-1:0] rem_u_q, rem_v_q, rem_u_d, rem_v_d;
+    logic [QuoBits-1:0] quo_u_q, quo_v_q, quo_u_d, quo_v_d;
+    logic [G-1:0]       major_q;
+    logic [2:0]         face_q;
+    logic               far_u_q, far_v_q, nonzero_q;
 
-  logic [NumBits-1:0] step_divisor;
-
-  always_comb begin : divider
-    step_divisor = '0;
-    rem_u_d = rem_u_q;
-    rem_v_d = rem_v_q;
-    quo_u_d = quo_u_q;
-    quo_v_d = quo_v_q;
-    for (int k = 0; k < N; k++) begin
+    always_comb begin : divide
+      logic [NumBits-1:0] step_divisor;
+      rem_u_d = rem_u_q;
+      rem_v_d = rem_v_q;
+      quo_u_d = quo_u_q;
+      quo_v_d = quo_v_q;
       // Quotient bit QuoBits-1 - (k*DivBitsPerStage + j).
       for (int j = 0; j < DivBitsPerStage; j++) begin
         if (k * DivBitsPerStage + j < QuoBits) begin
           // 2m << bit
-          step_divisor = NumBits'(major_q[k*G +: G])
-                         << (QuoBits - k * DivBitsPerStage - j);
-          if (rem_u_d[k*NumBits +: NumBits] >= step_divisor) begin
-            rem_u_d[k*NumBits +: NumBits] = rem_u_d[k*NumBits +: NumBits] - step_divisor;
-            quo_u_d[k*QuoBits + QuoBits - 1 - k * DivBitsPerStage - j] = 1'b1;
+          step_divisor = NumBits'(major_q) << (QuoBits - k * DivBitsPerStage - j);
+          if (rem_u_d >= step_divisor) begin
+            rem_u_d = rem_u_d - step_divisor;
+            quo_u_d[QuoBits - 1 - k * DivBitsPerStage - j] = 1'b1;
           end
-          if (rem_v_d[k*NumBits +: NumBits] >= step_divisor) begin
-            rem_v_d[k*NumBits +: NumBits] = rem_v_d[k*NumBits +: NumBits] - step_divisor;
-            quo_v_d[k*QuoBits + QuoBits - 1 - k * DivBitsPerStage - j] = 1'b1;
+          if (rem_v_d >= step_divisor) begin
+            rem_v_d = rem_v_d - step_divisor;
+            quo_v_d[QuoBits - 1 - k * DivBitsPerStage - j] = 1'b1;
           end
         end
       end
     end
-  end
 
-  always_ff @(posedge clk_i) begin : divider_regs
-    rem_u_q[0 +: NumBits] <= {hi_u, {WeightBits{1'b0}}};
-    rem_v_q[0 +: NumBits] <= {hi_v, {WeightBits{1'b0}}};
-    quo_u_q[0 +: QuoBits] <= '0;
-    quo_v_q[0 +: QuoBits] <= '0;
-    major_q[0 +: G]       <= major;
-    face_q[0 +: 3]        <= {axis, negative};
-    far_u_q[0]            <= (t_u == two_m);
-    far_v_q[0]            <= (t_v == two_m);
-    nonzero_q[0]          <= |{x_i, y_i, z_i};
-    for (int k = 1; k < N; k++) begin
-      rem_u_q[k*NumBits +: NumBits] <= rem_u_d[(k-1)*NumBits +: NumBits];
-      rem_v_q[k*NumBits +: NumBits] <= rem_v_d[(k-1)*NumBits +: NumBits];
-      quo_u_q[k*QuoBits +: QuoBits] <= quo_u_d[(k-1)*QuoBits +: QuoBits];
-      quo_v_q[k*QuoBits +: QuoBits] <= quo_v_d[(k-1)*QuoBits +: QuoBits];
-      major_q[k*G +: G]             <= major_q[(k-1)*G +: G];
-      face_q[k*3 +: 3]              <= face_q[(k-1)*3 +: 3];
-      far_u_q[k]                    <= far_u_q[k-1];
-      far_v_q[k]                    <= far_v_q[k-1];
-      nonzero_q[k]                  <= nonzero_q[k-1];
+    if (k == 0) begin : g_first
+      always_ff @(posedge clk_i) begin : divider_regs
+        rem_u_q   <= {hi_u, {WeightBits{1'b0}}};
+        rem_v_q   <= {hi_v, {WeightBits{1'b0}}};
+        quo_u_q   <= '0;
+        quo_v_q   <= '0;
+        major_q   <= major;
+        face_q    <= {axis, negative};
+        far_u_q   <= (t_u == two_m);
+        far_v_q   <= (t_v == two_m);
+        nonzero_q <= |{x_i, y_i, z_i};
+      end
+    end else begin : g_next
+      always_ff @(posedge clk_i) begin : divider_regs
+        rem_u_q   <= g_div[k-1].rem_u_d;
+        rem_v_q   <= g_div[k-1].rem_v_d;
+        quo_u_q   <= g_div[k-1].quo_u_d;
+        quo_v_q   <= g_div[k-1].quo_v_d;
+        major_q   <= g_div[k-1].major_q;
+        face_q    <= g_div[k-1].face_q;
+        far_u_q   <= g_div[k-1].far_u_q;
+        far_v_q   <= g_div[k-1].far_v_q;
+        nonzero_q <= g_div[k-1].nonzero_q;
+      end
     end
   end
 
-  // Only the last stage's quotients are used: its remainders, and the
-  // stage outputs that the next stage's registers take, are not.
+  // Only the last stage's quotients are used, not its remainders.
   logic unused_d;
-  assign unused_d = ^{rem_u_d[LastStage*NumBits +: NumBits], rem_v_d[LastStage*NumBits +: NumBits],
-                      quo_u_d[0 +: LastStage*QuoBits], quo_v_d[0 +: LastStage*QuoBits]};
+  assign unused_d = ^{g_div[LastStage].rem_u_d, g_div[LastStage].rem_v_d};
 
+  logic [N-1:0] valid_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin : valid_regs
     if (!rst_ni) begin
       valid_q <= '0;
@@ -181,22 +183,22 @@ module cube4_shade_cube_coord #(
   ////////////////////////////////////////
   logic [QuoBits-1:0] pos_u, pos_v;
   logic               nonzero;
-  assign pos_u   = quo_u_d[LastStage*QuoBits +: QuoBits];
-  assign pos_v   = quo_v_d[LastStage*QuoBits +: QuoBits];
-  assign nonzero = nonzero_q[LastStage];
+  assign pos_u   = g_div[LastStage].quo_u_d;
+  assign pos_v   = g_div[LastStage].quo_v_d;
+  assign nonzero = g_div[LastStage].nonzero_q;
 
   logic [CellBits-1:0] u_d, v_d;
   logic [WeightBits:0] wu_d, wv_d;
 
   always_comb begin : fixup
-    if (far_u_q[LastStage]) begin
+    if (g_div[LastStage].far_u_q) begin
       u_d  = CellBits'(MapFaceRes - 2);
       wu_d = {1'b1, {WeightBits{1'b0}}};
     end else begin
       u_d  = pos_u[QuoBits-1:WeightBits];
       wu_d = {1'b0, pos_u[WeightBits-1:0]};
     end
-    if (far_v_q[LastStage]) begin
+    if (g_div[LastStage].far_v_q) begin
       v_d  = CellBits'(MapFaceRes - 2);
       wv_d = {1'b1, {WeightBits{1'b0}}};
     end else begin
@@ -213,7 +215,7 @@ module cube4_shade_cube_coord #(
 
   always_ff @(posedge clk_i) begin : output_regs
     coord_valid_o <= nonzero;
-    face_o        <= nonzero ? face_q[LastStage*3 +: 3] : 3'd0;
+    face_o        <= nonzero ? g_div[LastStage].face_q : 3'd0;
     u_o           <= u_d;
     v_o           <= v_d;
     wu_o          <= wu_d;

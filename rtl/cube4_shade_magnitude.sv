@@ -88,55 +88,56 @@ module cube4_shade_magnitude #(
     x0_d = XBits'(1) << ((bl + BlBits'(1)) >> 1);
   end
 
-  // Stage registers, packed: slice i of q_q / x_q is the value after stage i.
-  logic [Stages*QBits-1:0]     q_q;
-  logic [(Stages+1)*QBits-1:0] q_chain;
-  logic [Stages*XBits-1:0]     x_d, x_q;
-  logic [Stages-1:0]           zero_q;
-  logic [Stages:0]             zero_chain;
-
-  assign q_chain    = {q_q, q_d};
-  assign zero_chain = {zero_q, ~|q_d};
-
-  assign x_d[XBits-1:0] = x0_d;
-
+  // Stage i (0 .. NrIterations), a generate block each: q_q, x_q and
+  // zero_q are the values after stage i. Not one flattened vector of all
+  // stages: Verilator evaluates each stage's fields as words, not as
+  // part-selects of a vector of several words (docs/performance.md).
   // Stages 1 .. NrIterations: x <- (x + q / x) >> 1.
-  for (genvar i = 1; i < Stages; i++) begin : g_nr
-    logic [QBits-1:0] quot;
-    logic [XBits-1:0] unused_rem;
-    logic [QBits:0]   sum;
-    cube4_udiv #(
-      .DividendBits(QBits),
-      .DivisorBits (XBits)
-    ) u_div (
-      .dividend_i (q_q[(i-1)*QBits +: QBits]),
-      .divisor_i  (x_q[(i-1)*XBits +: XBits]),
-      .quotient_o (quot),
-      .remainder_o(unused_rem)
-    );
-    assign sum = (QBits+1)'(x_q[(i-1)*XBits +: XBits]) + (QBits+1)'(quot);
-    // sum / 2 <= max(x_{i-1}, x0) fits XBits (see XBits above).
-    assign x_d[i*XBits +: XBits] = sum[XBits:1];
-    logic unused_sum;
-    assign unused_sum = ^{sum[QBits:XBits+1], sum[0]};
-  end
-
-  always_ff @(posedge clk_i) begin
-    q_q    <= q_chain[Stages*QBits-1:0];
-    x_q    <= x_d;
-    zero_q <= zero_chain[Stages-1:0];
+  for (genvar i = 0; i < Stages; i++) begin : g_stage
+    logic [QBits-1:0] q_q;
+    logic [XBits-1:0] x_q;
+    logic             zero_q;
+    if (i == 0) begin : g_start
+      always_ff @(posedge clk_i) begin
+        q_q    <= q_d;
+        x_q    <= x0_d;
+        zero_q <= ~|q_d;
+      end
+    end else begin : g_nr
+      logic [QBits-1:0] quot;
+      logic [XBits-1:0] unused_rem;
+      logic [QBits:0]   sum;
+      cube4_udiv #(
+        .DividendBits(QBits),
+        .DivisorBits (XBits)
+      ) u_div (
+        .dividend_i (g_stage[i-1].q_q),
+        .divisor_i  (g_stage[i-1].x_q),
+        .quotient_o (quot),
+        .remainder_o(unused_rem)
+      );
+      assign sum = (QBits+1)'(g_stage[i-1].x_q) + (QBits+1)'(quot);
+      logic unused_sum;
+      assign unused_sum = ^{sum[QBits:XBits+1], sum[0]};
+      always_ff @(posedge clk_i) begin
+        q_q    <= g_stage[i-1].q_q;
+        // sum / 2 <= max(x_{i-1}, x0) fits XBits (see XBits above).
+        x_q    <= sum[XBits:1];
+        zero_q <= g_stage[i-1].zero_q;
+      end
+    end
   end
 
   // q of the last stage feeds no divider.
   logic unused_q;
-  assign unused_q = ^{q_chain[(Stages+1)*QBits-1 -: QBits], zero_chain[Stages], valid_chain[Stages]};
+  assign unused_q = ^{g_stage[Stages-1].q_q, valid_chain[Stages]};
 
   // Zero test and saturation.
   logic [CmpBits-1:0] x_last;
-  assign x_last      = CmpBits'(x_q[(Stages-1)*XBits +: XBits]);
+  assign x_last      = CmpBits'(g_stage[Stages-1].x_q);
   logic saturated;  // also the coverage checker's (rtl/assert)
   assign saturated   = x_last > MaxM;
-  assign magnitude_o = zero_q[Stages-1] ? '0
+  assign magnitude_o = g_stage[Stages-1].zero_q ? '0
                      : saturated        ? MaxM[MagnitudeBits-1:0]
                      :                    x_last[MagnitudeBits-1:0];
 

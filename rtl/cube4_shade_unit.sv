@@ -145,31 +145,23 @@ module cube4_shade_unit #(
 
   // Sample, gradient and side bits wait for their magnitude. Not reset: the
   // magnitude's valid chain says when they mean something.
-  logic [MagLatency*Carried-1:0] carry_q;
-  always_ff @(posedge clk_i) begin : carry_delay
-    carry_q[0 +: Carried] <= {side_i, grad_z_i, grad_y_i, grad_x_i, sample_i};
-    for (int unsigned k = 1; k < MagLatency; k++) begin
-      carry_q[k*Carried +: Carried] <= carry_q[(k-1)*Carried +: Carried];
-    end
-  end
+  logic [Carried-1:0] carried;
+  cube4_pipe_delay #(.Width(Carried), .Depth(MagLatency)) u_carry_delay (
+    .clk_i, .d_i({side_i, grad_z_i, grad_y_i, grad_x_i, sample_i}), .q_o(carried)
+  );
 
   logic [VoxelBits-1:0]           sh_sample;
   logic signed [GradientBits-1:0] sh_gx, sh_gy, sh_gz;
   logic [SideBits-1:0]            sh_side;
-  assign {sh_side, sh_gz, sh_gy, sh_gx, sh_sample} = carry_q[(MagLatency-1)*Carried +: Carried];
+  assign {sh_side, sh_gz, sh_gy, sh_gx, sh_sample} = carried;
 
   // The voxel tag waits likewise, in a delay of its own that exists only
   // with tags.
   logic [VTagPortBits-1:0] sh_vtag;
   if (VoxelTagBits > 0) begin : g_vtag
-    logic [MagLatency*VoxelTagBits-1:0] vtag_q;
-    always_ff @(posedge clk_i) begin : vtag_delay
-      vtag_q[0 +: VoxelTagBits] <= vtag_i;
-      for (int unsigned k = 1; k < MagLatency; k++) begin
-        vtag_q[k*VoxelTagBits +: VoxelTagBits] <= vtag_q[(k-1)*VoxelTagBits +: VoxelTagBits];
-      end
-    end
-    assign sh_vtag = vtag_q[(MagLatency-1)*VoxelTagBits +: VoxelTagBits];
+    cube4_pipe_delay #(.Width(VoxelTagBits), .Depth(MagLatency)) u_vtag_delay (
+      .clk_i, .d_i(vtag_i), .q_o(sh_vtag)
+    );
   end else begin : g_no_vtag
     assign sh_vtag = vtag_i;  // unused by cube4_shade without tags
   end

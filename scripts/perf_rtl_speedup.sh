@@ -29,7 +29,10 @@ if [ ! -x "$old/build/tb/cube4" ]; then
     mkdir -p "$old"
     git -C "$here" worktree add --detach "$old/src" "$rev" >/dev/null
   fi
-  cmake -S "$old/src" -B "$old/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCUBE4_SYSTEM_PIPES=4 >/dev/null
+  # Every list of built p at 4 (a revision older than a list ignores it).
+  cmake -S "$old/src" -B "$old/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCUBE4_SYSTEM_PIPES=4 \
+    -DCUBE4_SYSTEM_TAG_PIPES=4 -DCUBE4_SYSTEM_POLYGON_PIPES=4 -DCUBE4_SYSTEM_ZDIFF_PIPES=4 \
+    -DCUBE4_SYSTEM_PERSP_PIPES=4 >/dev/null
   cmake --build "$old/build" --target cube4 >/dev/null
 fi
 [ -x "$build/tb/cube4" ] || cmake --build "$build" --target cube4 >/dev/null

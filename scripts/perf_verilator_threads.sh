@@ -16,7 +16,7 @@ command -v verilator >/dev/null || "$here/scripts/setup.sh" --packages-only >/de
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 r=$here/rtl
-src=("$r/cube4_pkg.sv" "$r/cube4_udiv.sv" "$r/cube4_lerp.sv" "$r/cube4_mul_frac.sv" "$r/cube4_shade_magnitude.sv"
+src=("$r/cube4_pkg.sv" "$r/cube4_udiv.sv" "$r/cube4_lerp.sv" "$r/cube4_mul_frac.sv" "$r/cube4_pipe_delay.sv" "$r/cube4_shade_magnitude.sv"
      "$r/cube4_shade_classify.sv" "$r/cube4_shade_cube_coord.sv" "$r/cube4_shade_reflection.sv"
      "$r/cube4_shade_reflectance.sv" "$r/cube4_shade_phong.sv" "$r/cube4_shade.sv" "$r/cube4_shade_unit.sv")
 declare -A opts=(

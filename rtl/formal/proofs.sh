@@ -33,15 +33,15 @@ proof delay_ram_fifo_d8     slow  ind 1 delay_ram_fv "$DR_FILES" "MaxDepth=8" pr
 proof bug_delay_ram_lap     bug   bug 16 delay_ram_fv "$F/mutants/delay_ram_lap.sed $F/delay_ram_fv.sv" "MaxDepth=5" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
 proof bug_delay_ram_noforward bug bug 16 delay_ram_fv "$F/mutants/delay_ram_noforward.sed $F/delay_ram_fv.sv" "MaxDepth=5" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
 # cube4_composite: saturation limits (alpha and colours never wrap).
-CO_FILES="rtl/cube4_mul_frac.sv rtl/cube4_to_acc.sv rtl/cube4_compose_node.sv rtl/cube4_composite.sv $F/composite_fv.sv"
+CO_FILES="rtl/cube4_mul_frac.sv rtl/cube4_to_acc.sv rtl/cube4_compose_node.sv rtl/cube4_pipe_delay.sv rtl/cube4_composite.sv $F/composite_fv.sv"
 CO_PROBES="probe_alpha_q=u_dut.alpha_q probe_cut_alpha_q=u_dut.cut_alpha_q probe_pre_alpha_q=u_dut.pre_alpha_q probe_pre_red_q=u_dut.pre_red_q probe_pre_green_q=u_dut.pre_green_q probe_pre_blue_q=u_dut.pre_blue_q"
 # Quick at 8-bit samples and 4 guard bits (the same datapath, parametric);
 # slow at the default 16 + 8 (about 90 s on two loaded cores).
 CO_NARROW="AlphaBits=8 AccGuardBits=4 +noincr"
 proof composite_sat_a8g4    quick ind 1 composite_fv "$CO_FILES" "$CO_NARROW" $CO_PROBES
 proof composite_sat         slow  ind 1 composite_fv "$CO_FILES" "+noincr" $CO_PROBES
-proof bug_composite_frac_round bug bug 10 composite_fv "$F/mutants/composite_frac_round.sed rtl/cube4_to_acc.sv rtl/cube4_compose_node.sv rtl/cube4_composite.sv $F/composite_fv.sv" "$CO_NARROW" $CO_PROBES
-proof bug_composite_no_sat  bug   bug 10 composite_fv "rtl/cube4_mul_frac.sv rtl/cube4_to_acc.sv $F/mutants/composite_no_sat.sed rtl/cube4_composite.sv $F/composite_fv.sv" "$CO_NARROW" $CO_PROBES
+proof bug_composite_frac_round bug bug 10 composite_fv "$F/mutants/composite_frac_round.sed rtl/cube4_to_acc.sv rtl/cube4_compose_node.sv rtl/cube4_pipe_delay.sv rtl/cube4_composite.sv $F/composite_fv.sv" "$CO_NARROW" $CO_PROBES
+proof bug_composite_no_sat  bug   bug 10 composite_fv "rtl/cube4_mul_frac.sv rtl/cube4_to_acc.sv $F/mutants/composite_no_sat.sed rtl/cube4_pipe_delay.sv rtl/cube4_composite.sv $F/composite_fv.sv" "$CO_NARROW" $CO_PROBES
 # cube4_addr: conflict-free, correct addresses for every traversal.
 ADDR_FILES="rtl/cube4_addr.sv $F/addr_fv.sv"
 # z3 gets nowhere on this model (no answer for the first cycle in 5

@@ -11,7 +11,7 @@ set(_shade_units
   cube4_shade_reflection
   cube4_shade_reflectance
   cube4_shade_phong)
-set(_shade_sources cube4_lerp.sv cube4_mul_frac.sv)
+set(_shade_sources cube4_lerp.sv cube4_mul_frac.sv cube4_pipe_delay.sv)
 foreach(u ${_shade_units})
   list(APPEND _shade_sources ${u}.sv)
 endforeach()
@@ -49,7 +49,7 @@ cube4_rtl_variant(test_rtl_shade cube4_shade Vcube4_shade_noshade SOURCES ${_sha
 # The gradient magnitude and its divider, default and other parameters
 # (test_shade_magnitude.cpp holds the same values).
 cube4_rtl_variant(test_rtl_shade cube4_udiv Vcube4_udiv)
-cube4_rtl_variant(test_rtl_shade cube4_shade_magnitude Vcube4_shade_magnitude SOURCES cube4_udiv.sv)
+cube4_rtl_variant(test_rtl_shade cube4_shade_magnitude Vcube4_shade_magnitude SOURCES cube4_udiv.sv cube4_pipe_delay.sv)
 cube4_rtl_variant(test_rtl_shade cube4_shade_magnitude Vcube4_shade_magnitude_g10 SOURCES cube4_udiv.sv
   PARAMS GradientBits=10 MagnitudeBits=9 NrIterations=2)
 cube4_rtl_variant(test_rtl_shade cube4_shade_magnitude Vcube4_shade_magnitude_n0 SOURCES cube4_udiv.sv PARAMS NrIterations=0)
