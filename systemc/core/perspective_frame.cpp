@@ -1,12 +1,17 @@
 #include "systemc/core/perspective_frame.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
+#include <systemc>
 #include <string>
 #include <vector>
 
 #include "golden/permuted_volume.hpp"
 #include "golden/perspective.hpp"
+#include "systemc/core/clocked_tops.hpp"
+#include "systemc/core/edge_clock.hpp"
+#include "systemc/core/link.hpp"
 #include "systemc/core/pass_gate.hpp"
 
 namespace cube4::sysc {
@@ -133,46 +138,169 @@ class RaySamples final : public golden::PerspectiveSamples {
   std::optional<Mismatch> first_;
 };
 
+// The stream and the unit a clock at a time, on either schedule. The
+// former's edge makes the beat the link holds for the next clock (none
+// while a polygon gate holds the stream); the unit's edge takes the link's
+// beat of the clock before and gives its samples to `samples`.
+class PerspectiveStream {
+ public:
+  PerspectiveStream(const PerspectiveFrameInput& in, StreamFormer& former, PerspInterpIf& interp, RaySamples& samples,
+                    PerspectiveFrameResult& res)
+      : in_(in), former_(former), interp_(interp), samples_(samples), res_(res),
+        total_(static_cast<uint64_t>(in.frames) * in.plan.passes * in.plan.pass_beats() +
+               static_cast<uint64_t>(in.plan.flush_beams()) * in.plan.B) {
+    if (in.source) gate_.emplace(*in.source);
+  }
+
+  void former_edge(uint64_t cycle, VoxelBeat& beat) {
+    if (!former_.done() && !(gate_ && gate_->holds(former_, cycle))) {
+      beat = former_.next();
+      res_.last_beat_cycle = cycle;
+    }
+    idle_ = former_.done() && !beat.valid ? idle_ + 1 : 0;
+    if (in_.progress && (cycle & 0xffff) == 0)
+      in_.progress(std::min(1.0, static_cast<double>(cycle) / static_cast<double>(total_)));
+  }
+
+  void interp_edge(uint64_t cycle, const VoxelBeat& link) {
+    interp_.clock(link, out_);
+    for (int k = 0; out_.valid && k < in_.plan.p; ++k) {
+      if (!(out_.valid >> k & 1)) continue;
+      const auto i = static_cast<size_t>(k);
+      samples_.take(out_.tag[i], out_.u[i], out_.v[i], out_.sample[i], out_.vtag[i]);
+      res_.last_sample_cycle = cycle;
+    }
+  }
+
+  // After the former's last beat: the link, the unit's drain (4 cycles)
+  // and a margin in which nothing more may leave.
+  bool finished() const { return idle_ >= kDrain + kMargin; }
+
+  uint64_t first_frame_stalls() const { return gate_ ? gate_->first_frame_stalls(in_.frames) : 0; }
+
+ private:
+  static constexpr uint64_t kDrain = 1 + 4, kMargin = 8;
+  const PerspectiveFrameInput& in_;
+  StreamFormer& former_;
+  PerspInterpIf& interp_;
+  RaySamples& samples_;
+  PerspectiveFrameResult& res_;
+  uint64_t total_;
+  std::optional<PassGate> gate_;
+  RaySampleBeat out_;
+  uint64_t idle_ = 0;
+};
+
+// Returns the cycles clocked.
+uint64_t run_plain(PerspectiveStream& stream) {
+  VoxelBeat link;
+  uint64_t cycle = 0;
+  while (!stream.finished()) {
+    ++cycle;
+    VoxelBeat beat;
+    stream.former_edge(cycle, beat);
+    stream.interp_edge(cycle, link);
+    link = beat;
+  }
+  return cycle;
+}
+
+// The SystemC schedule: the former and the unit each a process on the
+// machine's clock, a registered link between them. SystemC elaborates
+// once, so the top is built with the machine's (clocked_tops.hpp) and each
+// frame plugs its stream in; idle, the processes wait for the next frame
+// instead of waking every cycle.
+SC_MODULE(PerspectiveTop) {
+  Link<VoxelBeat> link{"voxels"};
+  PerspectiveStream* run = nullptr;
+  std::exception_ptr error;
+  sc_core::sc_event go;
+  uint64_t cycle = 0;
+
+  PerspectiveTop(sc_core::sc_module_name name, const EdgeClock& clk) : sc_core::sc_module(name) {
+    SC_METHOD(former_step);
+    sensitive << clk.posedge_event();
+    dont_initialize();
+    SC_METHOD(interp_step);
+    sensitive << clk.posedge_event();
+    dont_initialize();
+  }
+  SC_HAS_PROCESS(PerspectiveTop);
+
+  void start(PerspectiveStream& s) {
+    run = &s;
+    error = nullptr;
+    cycle = 0;
+    edge_ = sc_core::SC_ZERO_TIME;
+    first_ = true;
+    link.reset();
+    go.notify(sc_core::SC_ZERO_TIME);
+  }
+  void stop() { run = nullptr; }
+
+  // Both processes of an edge see its cycle number, whichever runs first.
+  void tick() {
+    const sc_core::sc_time now = sc_core::sc_time_stamp();
+    if (first_ || now != edge_) ++cycle;
+    first_ = false;
+    edge_ = now;
+  }
+  template <class F>
+  void guarded(F&& f) {
+    if (!run) {
+      next_trigger(go);
+      return;
+    }
+    if (error) return;
+    try {
+      tick();
+      f();
+    } catch (...) {
+      error = std::current_exception();
+      sc_core::sc_pause();
+    }
+  }
+  void former_step() {
+    guarded([&] {
+      VoxelBeat& beat = link.next();
+      beat = VoxelBeat{};
+      run->former_edge(cycle, beat);
+      // The unit still takes this edge's beat (sc_pause() ends the delta).
+      if (run->finished()) sc_core::sc_pause();
+    });
+  }
+  void interp_step() {
+    guarded([&] { run->interp_edge(cycle, link.read()); });
+  }
+
+ private:
+  sc_core::sc_time edge_;
+  bool first_ = true;
+};
+
+uint64_t run_systemc(PerspectiveStream& stream) {
+  auto& top = dynamic_cast<PerspectiveTop&>(perspective_top());
+  top.start(stream);
+  sc_core::sc_start();
+  top.stop();
+  if (top.error) std::rethrow_exception(top.error);
+  return top.cycle;
+}
+
 }  // namespace
+
+sc_core::sc_module* build_perspective_top(const EdgeClock& clk) { return new PerspectiveTop("cube4_perspective", clk); }
 
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
                                              PerspInterpIf& interp) {
   const FramePlan& plan = in.plan;
   RaySamples samples(plan, in.vol, in.frames, in.check);
   PerspectiveFrameResult res;
-  // The former's beats, then the link and the unit's drain (4 cycles) and
-  // a margin in which nothing more may leave.
-  const uint64_t total = static_cast<uint64_t>(in.frames) * plan.passes * plan.pass_beats() +
-                         static_cast<uint64_t>(plan.flush_beams()) * plan.B;
-  constexpr uint64_t kDrain = 1 + 4, kMargin = 8;
-  VoxelBeat link;
-  RaySampleBeat out;
-  std::optional<PassGate> gate;
-  if (in.source) gate.emplace(*in.source);
-  uint64_t cycle = 0, idle = 0;
-  while (idle < kDrain + kMargin) {
-    ++cycle;
-    VoxelBeat beat;
-    if (!former.done() && !(gate && gate->holds(former, cycle))) {
-      beat = former.next();
-      res.last_beat_cycle = cycle;
-    }
-    interp.clock(link, out);
-    link = beat;
-    for (int k = 0; out.valid && k < plan.p; ++k) {
-      if (!(out.valid >> k & 1)) continue;
-      const auto i = static_cast<size_t>(k);
-      samples.take(out.tag[i], out.u[i], out.v[i], out.sample[i], out.vtag[i]);
-      res.last_sample_cycle = cycle;
-    }
-    idle = former.done() && !link.valid ? idle + 1 : 0;
-    if (in.progress && (cycle & 0xffff) == 0)
-      in.progress(std::min(1.0, static_cast<double>(cycle) / static_cast<double>(total)));
-  }
+  PerspectiveStream stream(in, former, interp, samples, res);
+  res.cycles = in.kernel == Kernel::SystemC ? run_systemc(stream) : run_plain(stream);
   samples.check_complete();
-  if (gate) res.polygon_stall_cycles = gate->first_frame_stalls(in.frames);
+  res.polygon_stall_cycles = stream.first_frame_stalls();
   res.beats = former.beats();
-  res.cycles = cycle;
   res.samples = samples.taken();
   res.mismatch = samples.first();
   if (res.mismatch && !in.check)

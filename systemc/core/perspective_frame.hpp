@@ -2,16 +2,18 @@
 // frames"): the stream former's voxel beats (address generation, skewed
 // memory, de-skew; the perspective stream's three flush beams at the end)
 // through the perspective interpolation unit, clocked TLM or RTL, a beat a
-// clock on a plain loop with the parallel schedule's registered link in
-// between. Every sample that leaves the unit is kept by its slice and ray
-// and checked: each ray of each slice leaves once per frame, and with
-// `check` its value equals golden perspective_sample()'s (the first
-// difference is the frame's mismatch). The gradient, shading and
-// compositing of perspective samples have no clocked models or rings yet:
-// the unit's samples go through them loosely timed, golden
-// render_perspective() given those samples (FixedOptions::given_samples).
-// With a polygon source the stream waits for each pass's slab image at its
-// first beat, as a parallel frame's does (pass_gate.hpp).
+// clock with a registered link in between: under the SystemC kernel (a
+// process for the former, one for the unit, on the machine's clock) or on
+// a plain loop, with the same cycles and samples. Every sample that leaves
+// the unit is kept by its slice and ray and checked: each ray of each
+// slice leaves once per frame, and with `check` its value equals golden
+// perspective_sample()'s (the first difference is the frame's mismatch).
+// The gradient, shading and compositing of perspective samples have no
+// clocked models or rings yet: the unit's samples go through them loosely
+// timed, golden render_perspective() given those samples
+// (FixedOptions::given_samples). With a polygon source the stream waits
+// for each pass's slab image at its first beat, as a parallel frame's does
+// (pass_gate.hpp).
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -47,6 +49,7 @@ struct PerspectiveFrameInput {
   const golden::PolygonFrame* polygons = nullptr;
   golden::Progress progress;
   PolygonSource* source = nullptr;  // the slab images' connection in time, or none (ideal)
+  Kernel kernel = Kernel::SystemC;
 };
 
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,

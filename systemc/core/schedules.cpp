@@ -312,11 +312,12 @@ void run_plain_front(FrameUnits& u, BackEnd& back) {
 struct ClockedTops {
   CycleTop* cycle;
   sc_core::sc_module* network;
+  sc_core::sc_module* perspective;
 };
 ClockedTops& clocked_tops() {
   static ClockedTops tops = [] {
     auto* top = new CycleTop("cube4");
-    return ClockedTops{top, build_network_top(top->clk)};
+    return ClockedTops{top, build_network_top(top->clk), build_perspective_top(top->clk)};
   }();
   return tops;
 }
@@ -333,6 +334,7 @@ void run_systemc(FrameUnits& u, BackEnd* back) {
 }  // namespace
 
 sc_core::sc_module& network_top() { return *clocked_tops().network; }
+sc_core::sc_module& perspective_top() { return *clocked_tops().perspective; }
 
 void run_units(FrameUnits& u, Kernel kernel) {
   if (!u.threaded) {

@@ -184,7 +184,8 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
   else
     interp = std::make_unique<TlmInterpPersp>(plan);
   const PerspectiveFrameResult pr =
-      run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress, f.source},
+      run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress, f.source,
+                             cfg.kernel},
                             former, *interp);
   res.plane = pr.plane;
   // The units after interpolation are loosely timed: the frame's cycles

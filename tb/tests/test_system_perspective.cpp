@@ -259,6 +259,62 @@ TEST(SystemPerspective, ClockedFramesBackToBackWithAndWithoutGradients) {
   }
 }
 
+// The SystemC schedule (a process for the stream former and one for the
+// unit, on the machine's clock) and the plain loop give the same frames:
+// image, beats, the last beat's and last sample's cycles and the cycles
+// simulated, for one frame and two back to back, with the unit at clocked
+// TLM and RTL. A parallel frame between two perspective ones (the machine's
+// top runs on the same clock while the perspective top waits) and a frame
+// after one that failed in a process (a throwing progress callback) run as
+// they would alone.
+TEST(SystemPerspective, SystemCAndThePlainLoopClockTheSameFrames) {
+  const test::Setup s = setup(scene(kEyes[4]));
+  golden::RenderStats stats;
+  const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, &stats);
+  for (const bool rtl : {false, true}) {
+    if (rtl && !rtl_perspective(5)) continue;
+    for (const int frames : {1, 2}) {
+      SCOPED_TRACE(std::string(rtl ? "RTL" : "clocked TLM") + ", frames " + std::to_string(frames));
+      sysc::SystemConfig cfg = clocked_config(5, rtl);
+      cfg.frames = frames;
+      cfg.kernel = sysc::Kernel::PlainLoop;
+      const sysc::SystemResult plain = sysc::run_frame(s.host.regs, s.volume, cfg);
+      cfg.kernel = sysc::Kernel::SystemC;
+      expect_clocked(s, cfg, want, stats);
+      const sysc::SystemResult sc = sysc::run_frame(s.host.regs, s.volume, cfg);
+      ASSERT_FALSE(plain.mismatch);
+      ASSERT_FALSE(sc.mismatch);
+      expect_plane(plain.plane, sc.plane);
+      EXPECT_EQ(sc.last_beat, plain.last_beat);
+      EXPECT_EQ(sc.simulated_cycles, plain.simulated_cycles);
+      EXPECT_EQ(sc.frame_cycles, plain.frame_cycles);
+    }
+  }
+  // A parallel frame on the machine's top between perspective ones.
+  const test::Setup par = setup(R"({"volume": {"synthetic": "sphere", "size": [21, 17, 13]}, "shading": true,
+      "output": {"width": 48, "height": 48}})");
+  ASSERT_FALSE(par.host.regs.perspective);
+  const sysc::SystemResult pr = sysc::run_frame(par.host.regs, par.volume, clocked_config(4, false));
+  EXPECT_FALSE(pr.mismatch);
+  expect_plane(golden::render_fixed(par.volume, par.host.regs), pr.plane);
+  // A frame whose unit fails in its process, then one that runs.
+  struct Failing final : sysc::PerspInterpIf {
+    void clock(const sysc::VoxelBeat&, sysc::RaySampleBeat&) override {
+      if (++clocks == 100) throw std::runtime_error("the unit failed");
+    }
+    sysc::Level level() const override { return sysc::Level::Tlm; }
+    int clocks = 0;
+  } failing;
+  const sysc::FramePlan plan(s.host.regs, 4);
+  sysc::VoxelMemory mem(s.volume, 4);
+  sysc::TlmAddr addr(mem.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
+  sysc::StreamFormer former(plan, mem, addr, 1);
+  const sysc::PerspectiveFrameInput in{plan, s.volume, 1, false, false, nullptr, {}, nullptr, sysc::Kernel::SystemC};
+  EXPECT_THROW(sysc::run_perspective_frame(in, former, failing), std::runtime_error);
+  EXPECT_EQ(failing.clocks, 100);
+  expect_clocked(s, clocked_config(4, false), want, stats);
+}
+
 // The clocked TLM unit is the ring, beat by beat: the same stream through
 // both, every output beat compared (lanes, samples, rays, tags), over two
 // frames of several views.
