@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "golden/precision.hpp"
@@ -114,5 +116,36 @@ struct Registers {
     return {std::min(a.lo, b.lo), std::max(a.hi, b.hi)};
   }
 };
+
+// The parallel view's DDA registers as the machine is built for them: rays
+// move forwards by at most one voxel a sample slice (0 <= step <= 1.0: the
+// view's permutation and flips make every shear so, and the compositor's
+// rays move at most one cell a slice) from a start at or past 0 (a block's
+// start is its first slice's offset). Outside that the base plane's origin
+// and the rays leaving through a side face are not what the renderers
+// assume (a negative step read and wrote outside the ray memory). Returns
+// the first field outside its range ("x_start", "x_step", "y_start",
+// "y_step"), or nullptr (always for perspective registers).
+inline const char* parallel_dda_out_of_range(const Registers& r) {
+  if (r.perspective) return nullptr;
+  const int64_t one = int64_t{1} << r.p.dda_frac_bits;
+  if (r.x_start < 0) return "x_start";
+  if (r.x_step < 0 || r.x_step > one) return "x_step";
+  if (r.y_start < 0) return "y_start";
+  if (r.y_step < 0 || r.y_step > one) return "y_step";
+  return nullptr;
+}
+
+// parallel_dda_out_of_range() as an error naming the field and its value.
+inline void check_parallel_dda(const Registers& r) {
+  const char* field = parallel_dda_out_of_range(r);
+  if (!field) return;
+  const std::string f = field;
+  const int64_t v = f == "x_start" ? r.x_start : f == "x_step" ? r.x_step : f == "y_start" ? r.y_start : r.y_step;
+  throw std::invalid_argument("registers: " + f + " = " + std::to_string(v) + " (" +
+                              std::to_string(static_cast<double>(v) / static_cast<double>(int64_t{1} << r.p.dda_frac_bits)) +
+                              " voxels) is outside what a parallel view takes: " +
+                              (f.find("step") != std::string::npos ? "0 to 1 voxel a sample slice" : "0 or more voxels"));
+}
 
 }  // namespace cube4::golden

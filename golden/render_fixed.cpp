@@ -231,6 +231,7 @@ int default_threads() { return std::max(1, static_cast<int>(std::thread::hardwar
 
 BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions& opt) {
   if (r.perspective) return render_perspective(vol, r, opt);
+  check_parallel_dda(r);
   BasePlane bp = empty_base_plane(r);
   if (opt.accumulators) bp.acc.assign(static_cast<size_t>(bp.width) * bp.height, RayAcc{});
   const bool may_skip = r.blend == BlendMode::Composite && opt.probe == nullptr;

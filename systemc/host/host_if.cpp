@@ -3,6 +3,7 @@
 #include "systemc/host/host_program.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <exception>
 #include <optional>
@@ -352,6 +353,13 @@ HostInterface::Outcome HostInterface::start_frame() {
       return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of("SCALE_START")};
     if (r.scale_step < 0 || r.scale_start + __int128{r.scale_step} * (r.sample_slices() - 1) > 3 * one)
       return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of("SCALE_STEP")};
+  }
+  // Parallel: shears forwards by at most a voxel a slice, from a start at
+  // or past 0 (golden::parallel_dda_out_of_range()).
+  if (const char* field = golden::parallel_dda_out_of_range(r)) {
+    std::string name = field;
+    for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of(name)};
   }
   // Parallel: the volume's columns and the rays' last offset; perspective:
   // every ray that samples a slice (Registers::rays_entering).

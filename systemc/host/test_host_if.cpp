@@ -1184,14 +1184,30 @@ std::vector<ErrorCase> error_cases() {
        [](Env& e) { ASSERT_EQ(write(e.host, rm::kVolDim, {10, 10, 10}), tlm::TLM_OK_RESPONSE);
                     ASSERT_EQ(write(e.host, rm::kDimX, {10, 10, 11}), tlm::TLM_OK_RESPONSE); },
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::ViewMismatch, rm::kCtrl},
+      // A start far into x (a block's may be deep): the rays' last offset
+      // puts the base plane past BASE_MAX.
       {"START with a base plane past BASE_MAX",
        [](Env& e) { set_volume_and_view(e, {10, 10, 10});
-                    ASSERT_EQ(write(e.host, rm::kXStepLo, {0, 64}), tlm::TLM_OK_RESPONSE); },
+                    ASSERT_EQ(write(e.host, rm::address_of("X_START"), {0, 64}), tlm::TLM_OK_RESPONSE); },
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::BasePlaneTooLarge, rm::kCtrl},
-      {"START with a negative base plane",
+      // A parallel view's rays move forwards by at most a voxel a slice,
+      // from a start at or past 0 (golden::parallel_dda_out_of_range()):
+      // a negative shear read and wrote outside the ray memory.
+      {"START with a negative start",
        [](Env& e) { set_volume_and_view(e, {10, 10, 10});
                     ASSERT_EQ(write(e.host, rm::kYStartHi, {0xFFFF'FFFF}), tlm::TLM_OK_RESPONSE); },
-       TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::BasePlaneTooLarge, rm::kCtrl},
+       TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::FieldRange, rm::address_of("Y_START")},
+      {"START with a negative shear",
+       [](Env& e) { set_volume_and_view(e, {10, 10, 10});
+                    ASSERT_EQ(write(e.host, rm::address_of("X_STEP"), {0xFFF8'0000, 0xFFFF'FFFF}), tlm::TLM_OK_RESPONSE); },
+       TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::FieldRange, rm::address_of("X_STEP")},
+      {"START with a shear past a voxel a slice",
+       [](Env& e) { set_volume_and_view(e, {10, 10, 10});
+                    const uint64_t one = uint64_t{1} << golden::Precision{}.dda_frac_bits;
+                    ASSERT_EQ(write(e.host, rm::address_of("Y_STEP"),
+                                    {static_cast<uint32_t>(one + 1), static_cast<uint32_t>((one + 1) >> 32)}),
+                              tlm::TLM_OK_RESPONSE); },
+       TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::FieldRange, rm::address_of("Y_STEP")},
       {"START with a negative falloff",
        [](Env& e) { set_volume_and_view(e, {10, 10, 10});
                     ASSERT_EQ(write(e.host, rm::kMode, {rm::kModeCut}), tlm::TLM_OK_RESPONSE);

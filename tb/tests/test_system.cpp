@@ -11,6 +11,7 @@
 #include "systemc/core/machine.hpp"
 #include "systemc/host/register_map.hpp"
 #include "tb/tests/system_support.hpp"
+#include "tb/tests/test_support.hpp"
 
 namespace {
 
@@ -710,3 +711,42 @@ TEST(System, ClockedTlmSkipsTheSamplesOfStoppedRaysFrameByFrame) {
   }
 }
 }  // namespace
+
+// A parallel view's DDA registers outside what the machine is built for
+// (rays moving backwards, or more than a voxel a slice, or starting before
+// 0; golden::parallel_dda_out_of_range()) are refused by the golden
+// renderer and the system model naming the field and its value; a negative
+// shear once read and wrote outside the ray memory. The host interface
+// refuses them at START (FieldRange, test_host_if).
+TEST(System, ParallelShearsOutsideTheMachinesRangeAreRefusedNamingTheField) {
+  const test::Setup s = setup(R"({"volume": {"synthetic": "sphere", "size": [21, 17, 13]}, "shading": true,
+      "output": {"width": 48, "height": 48}})");
+  const int64_t one = int64_t{1} << s.host.regs.p.dda_frac_bits;
+  struct Bad {
+    const char* field;
+    int64_t golden::Registers::*reg;
+    int64_t value;
+  };
+  for (const Bad& b : {Bad{"x_step", &golden::Registers::x_step, -one / 2}, Bad{"y_step", &golden::Registers::y_step, one + 1},
+                       Bad{"x_start", &golden::Registers::x_start, -1}, Bad{"y_start", &golden::Registers::y_start, -one}}) {
+    SCOPED_TRACE(b.field);
+    golden::Registers r = s.host.regs;
+    r.*b.reg = b.value;
+    EXPECT_STREQ(golden::parallel_dda_out_of_range(r), b.field);
+    const std::string want = std::string("registers: ") + b.field + " = " + std::to_string(b.value);
+    try {
+      golden::render_fixed(s.volume, r);
+      ADD_FAILURE() << "golden rendered";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(want, 0), 0u) << e.what();
+    }
+    sysc::SystemConfig cfg;
+    cfg.levels = kTlm;
+    EXPECT_THROW(sysc::run_frame(r, s.volume, cfg), std::invalid_argument);
+  }
+  // The edges are in range: a shear of exactly a voxel a slice, a start deep in x.
+  golden::Registers r = s.host.regs;
+  r.x_step = one;
+  r.y_start = 5 * one;
+  EXPECT_EQ(golden::parallel_dda_out_of_range(r), nullptr);
+}
