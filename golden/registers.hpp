@@ -117,17 +117,29 @@ struct Registers {
   }
 };
 
-// The parallel view's DDA registers as the machine is built for them: rays
+// The view's DDA registers as the machine is built for them. Parallel: rays
 // move forwards by at most one voxel a sample slice (0 <= step <= 1.0: the
 // view's permutation and flips make every shear so, and the compositor's
 // rays move at most one cell a slice) from a start at or past 0 (a block's
-// start is its first slice's offset). Outside that the base plane's origin
+// start is its first slice's offset); outside that the base plane's origin
 // and the rays leaving through a side face are not what the renderers
-// assume (a negative step read and wrote outside the ray memory). Returns
-// the first field outside its range ("x_start", "x_step", "y_start",
-// "y_step"), or nullptr (always for perspective registers).
-inline const char* parallel_dda_out_of_range(const Registers& r) {
-  if (r.perspective) return nullptr;
+// assume (a negative step read and wrote outside the ray memory).
+// Perspective: ray 0's position on every slice within ±2^61 (|start| +
+// |step|·(K − 1), in 128 bits), so that no sum of the DDA, no ray's
+// position and no ray index times the spacing overflows 64 bits. Returns
+// the first field outside ("x_start", "x_step", "y_start", "y_step"), or
+// nullptr.
+inline const char* dda_out_of_range(const Registers& r) {
+  if (r.perspective) {
+    const __int128 bound = __int128{1} << 61;
+    const __int128 k = r.sample_slices() > 0 ? r.sample_slices() - 1 : 0;
+    auto magnitude = [](int64_t v) { return v < 0 ? -__int128{v} : __int128{v}; };
+    if (magnitude(r.x_start) > bound) return "x_start";
+    if (magnitude(r.x_start) + magnitude(r.x_step) * k > bound) return "x_step";
+    if (magnitude(r.y_start) > bound) return "y_start";
+    if (magnitude(r.y_start) + magnitude(r.y_step) * k > bound) return "y_step";
+    return nullptr;
+  }
   const int64_t one = int64_t{1} << r.p.dda_frac_bits;
   if (r.x_start < 0) return "x_start";
   if (r.x_step < 0 || r.x_step > one) return "x_step";
@@ -136,16 +148,19 @@ inline const char* parallel_dda_out_of_range(const Registers& r) {
   return nullptr;
 }
 
-// parallel_dda_out_of_range() as an error naming the field and its value.
-inline void check_parallel_dda(const Registers& r) {
-  const char* field = parallel_dda_out_of_range(r);
+// dda_out_of_range() as an error naming the field and its value.
+inline void check_dda(const Registers& r) {
+  const char* field = dda_out_of_range(r);
   if (!field) return;
   const std::string f = field;
   const int64_t v = f == "x_start" ? r.x_start : f == "x_step" ? r.x_step : f == "y_start" ? r.y_start : r.y_step;
+  const std::string range = r.perspective ? "ray 0 within 2^41 voxels of the volume's origin on every slice"
+                            : f.find("step") != std::string::npos ? "0 to 1 voxel a sample slice"
+                                                                   : "0 or more voxels";
   throw std::invalid_argument("registers: " + f + " = " + std::to_string(v) + " (" +
                               std::to_string(static_cast<double>(v) / static_cast<double>(int64_t{1} << r.p.dda_frac_bits)) +
-                              " voxels) is outside what a parallel view takes: " +
-                              (f.find("step") != std::string::npos ? "0 to 1 voxel a sample slice" : "0 or more voxels"));
+                              " voxels) is outside what a " + (r.perspective ? "perspective" : "parallel") +
+                              " view takes: " + range);
 }
 
 }  // namespace cube4::golden

@@ -230,8 +230,8 @@ std::vector<int> band_edges(const Registers& r, const SkipMap& skip, int bands) 
 int default_threads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
 
 BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions& opt) {
+  check_dda(r);
   if (r.perspective) return render_perspective(vol, r, opt);
-  check_parallel_dda(r);
   BasePlane bp = empty_base_plane(r);
   if (opt.accumulators) bp.acc.assign(static_cast<size_t>(bp.width) * bp.height, RayAcc{});
   const bool may_skip = r.blend == BlendMode::Composite && opt.probe == nullptr;

@@ -279,7 +279,7 @@ void run_parallel(const ClockedFrame& f, SystemResult& res) {
 SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, const SystemConfig& cfg,
                        const golden::Progress& progress, const golden::PolygonFrame* polygons) {
   const auto t0 = std::chrono::steady_clock::now();
-  golden::check_parallel_dda(r);
+  golden::check_dda(r);
   // A scene without gradients does not run the gradient unit (and its
   // frame has no zero pass), unless asked to simulate it anyway (to measure
   // what skipping saves): its gradients are then computed and not used.

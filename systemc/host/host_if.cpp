@@ -355,8 +355,9 @@ HostInterface::Outcome HostInterface::start_frame() {
       return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of("SCALE_STEP")};
   }
   // Parallel: shears forwards by at most a voxel a slice, from a start at
-  // or past 0 (golden::parallel_dda_out_of_range()).
-  if (const char* field = golden::parallel_dda_out_of_range(r)) {
+  // or past 0; perspective: ray 0 where no sum overflows
+  // (golden::dda_out_of_range()).
+  if (const char* field = golden::dda_out_of_range(r)) {
     std::string name = field;
     for (char& c : name) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return {status_of(ErrorCode::FieldRange), ErrorCode::FieldRange, rm::address_of(name)};

@@ -1191,7 +1191,7 @@ std::vector<ErrorCase> error_cases() {
                     ASSERT_EQ(write(e.host, rm::address_of("X_START"), {0, 64}), tlm::TLM_OK_RESPONSE); },
        TLM_WRITE_COMMAND, rm::kCtrl, {rm::kCtrlStart}, 0, false, 0, gen, ErrorCode::BasePlaneTooLarge, rm::kCtrl},
       // A parallel view's rays move forwards by at most a voxel a slice,
-      // from a start at or past 0 (golden::parallel_dda_out_of_range()):
+      // from a start at or past 0 (golden::dda_out_of_range()):
       // a negative shear read and wrote outside the ray memory.
       {"START with a negative start",
        [](Env& e) { set_volume_and_view(e, {10, 10, 10});

@@ -714,7 +714,7 @@ TEST(System, ClockedTlmSkipsTheSamplesOfStoppedRaysFrameByFrame) {
 
 // A parallel view's DDA registers outside what the machine is built for
 // (rays moving backwards, or more than a voxel a slice, or starting before
-// 0; golden::parallel_dda_out_of_range()) are refused by the golden
+// 0; golden::dda_out_of_range()) are refused by the golden
 // renderer and the system model naming the field and its value; a negative
 // shear once read and wrote outside the ray memory. The host interface
 // refuses them at START (FieldRange, test_host_if).
@@ -732,7 +732,7 @@ TEST(System, ParallelShearsOutsideTheMachinesRangeAreRefusedNamingTheField) {
     SCOPED_TRACE(b.field);
     golden::Registers r = s.host.regs;
     r.*b.reg = b.value;
-    EXPECT_STREQ(golden::parallel_dda_out_of_range(r), b.field);
+    EXPECT_STREQ(golden::dda_out_of_range(r), b.field);
     const std::string want = std::string("registers: ") + b.field + " = " + std::to_string(b.value);
     try {
       golden::render_fixed(s.volume, r);
@@ -748,5 +748,18 @@ TEST(System, ParallelShearsOutsideTheMachinesRangeAreRefusedNamingTheField) {
   golden::Registers r = s.host.regs;
   r.x_step = one;
   r.y_start = 5 * one;
-  EXPECT_EQ(golden::parallel_dda_out_of_range(r), nullptr);
+  EXPECT_EQ(golden::dda_out_of_range(r), nullptr);
+  // Perspective: ray 0's DDA would overflow 64 bits (fuzz_host found it in
+  // START's own base-plane check).
+  const test::Setup ps = setup(R"({"volume": {"synthetic": "sphere", "size": [21, 17, 13]}, "shading": true,
+      "view": {"projection": "perspective", "fov": 50, "eye": [10, 8, -20]}, "output": {"width": 48, "height": 48}})");
+  golden::Registers pr = ps.host.regs;
+  ASSERT_TRUE(pr.perspective);
+  EXPECT_EQ(golden::dda_out_of_range(pr), nullptr);
+  pr.x_step = int64_t{1} << 61;
+  EXPECT_STREQ(golden::dda_out_of_range(pr), "x_step");
+  EXPECT_THROW(golden::render_fixed(ps.volume, pr), std::invalid_argument);
+  pr = ps.host.regs;
+  pr.y_start = -(int64_t{1} << 62);
+  EXPECT_STREQ(golden::dda_out_of_range(pr), "y_start");
 }
