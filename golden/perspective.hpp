@@ -128,4 +128,20 @@ uint32_t realigned_sample(const Registers& r, const RealignDda& dx, const Realig
                     sample(px.ray + 1, py.ray + 1), px.weight, py.weight, W);
 }
 
+// Ray (u, v)'s gradient on slice s with the 12-neighbourhood z
+// (docs/perspective.md, "Gradient"): its neighbouring rays' samples on the
+// slice, and the samples straight behind and ahead realigned from the
+// neighbouring slices' rays. `current(u, v)`, `behind(u, v)` and
+// `ahead(u, v)` read slices k, k - 1 and k + 1 (0 for rays that miss them).
+// The renderer and the gradient ring's model (systemc/tlm/
+// tlm_gradient_persp.hpp) both take it from here.
+template <class Current, class Behind, class Ahead>
+Gradient perspective_gradient(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v, Current&& current,
+                              Behind&& behind, Ahead&& ahead) {
+  return gradient_perspective(current(u - 1, v), current(u + 1, v), current(u, v - 1), current(u, v + 1),
+                              realigned_sample(r, s.behind_x, s.behind_y, u, v, behind),
+                              realigned_sample(r, s.ahead_x, s.ahead_y, u, v, ahead), r.supersampling,
+                              s.lateral_reciprocal, r.p);
+}
+
 }  // namespace cube4::golden

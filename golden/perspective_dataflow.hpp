@@ -60,10 +60,11 @@ struct FormedCell {
   bool valid = false;
   int64_t pass = 0, x = 0, y = 0;
 };
-constexpr int kFormedAfterColumns = 2, kFormedAfterBeams = 2;
-inline FormedCell formed_cell(int64_t position, int64_t row, int nx, int ny) {
+// The cell of a pass that a unit works on at `position` when it works on
+// each cell `beams` beams and `columns` columns after the stream reads it.
+inline FormedCell cell_behind(int64_t position, int64_t beams, int64_t columns, int64_t row, int nx, int ny) {
   FormedCell c;
-  const int64_t q = position - kFormedAfterBeams * row - kFormedAfterColumns;
+  const int64_t q = position - beams * row - columns;
   if (q < 0) return c;
   const int64_t beam = q / row;
   c.x = q % row;
@@ -72,9 +73,33 @@ inline FormedCell formed_cell(int64_t position, int64_t row, int nx, int ny) {
   c.valid = c.x < nx;
   return c;
 }
+constexpr int kFormedAfterColumns = 2, kFormedAfterBeams = 2;
+inline FormedCell formed_cell(int64_t position, int64_t row, int nx, int ny) {
+  return cell_behind(position, kFormedAfterBeams, kFormedAfterColumns, row, nx, ny);
+}
 // Its inverse: the stream position that forms cell (x, y) of a pass.
 constexpr int64_t forming_position(int64_t pass, int64_t x, int64_t y, int64_t row, int ny) {
   return (pass * ny + y + kFormedAfterBeams) * row + x + kFormedAfterColumns;
+}
+
+// Where the gradient ring is to form a ray's gradient (docs/perspective.md,
+// "Gradient"): at its home cell + (5, 5) in the next pass. The operands
+// straight ahead have their homes at most three cells further on in each
+// axis and are formed two cells after those (formed_cell()), so by then
+// every operand has been formed; one gradient per cell keeps the passes
+// back to back. gradient_cell(position) is the cell, of the pass before
+// the one streaming at `position`, whose gradient that position forms; a
+// stream's last slice spills up to six beams past the pass after it.
+constexpr int kGradientAfterColumns = 5, kGradientAfterBeams = 5;
+inline FormedCell gradient_cell(int64_t position, int64_t row, int nx, int ny) {
+  FormedCell c = cell_behind(position, kGradientAfterBeams, kGradientAfterColumns, row, nx, ny);
+  c.valid = c.valid && c.pass >= 1;
+  c.pass -= 1;
+  return c;
+}
+// Its inverse: the stream position that forms the gradient of cell (x, y) of a pass.
+constexpr int64_t gradient_forming_position(int64_t pass, int64_t x, int64_t y, int64_t row, int ny) {
+  return ((pass + 1) * ny + y + kGradientAfterBeams) * row + x + kGradientAfterColumns;
 }
 
 // The range of cell offsets, relative to the sample's own home, at which

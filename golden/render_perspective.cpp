@@ -223,12 +223,8 @@ class Traversal {
       return gradient_perspective_z(current_.at(u - 1, v), current_.at(u + 1, v), current_.at(u, v - 1),
                                     current_.at(u, v + 1), current_.z[current_.index(u, v)], s.lateral_reciprocal,
                                     r_.p);
-    auto behind = [&](int64_t a, int64_t b) { return behind_.at(a, b); };
-    auto ahead = [&](int64_t a, int64_t b) { return ahead_.at(a, b); };
-    return gradient_perspective(current_.at(u - 1, v), current_.at(u + 1, v), current_.at(u, v - 1),
-                                current_.at(u, v + 1), realigned_sample(r_, s.behind_x, s.behind_y, u, v, behind),
-                                realigned_sample(r_, s.ahead_x, s.ahead_y, u, v, ahead), r_.supersampling,
-                                s.lateral_reciprocal, r_.p);
+    auto at = [](const RayPlane& plane) { return [&plane](int64_t a, int64_t b) { return plane.at(a, b); }; };
+    return perspective_gradient(r_, s, u, v, at(current_), at(behind_), at(ahead_));
   }
 
   // Slice k's constants into the planes. Returns the voxel slice z whose

@@ -49,10 +49,29 @@ struct SampleBeat {
 // voxel position. Pipeline k's lane carries the sample it formed this
 // clock, if any (bit k of `valid`), with its ray (u, v), its pass's stream
 // tag and its voxel tag (docs/rtl-interp-persp.md: a sample leaves on the
-// pipeline of the column two after its ray's home cell).
+// pipeline of the column two after its ray's home cell). `step` is the
+// stream's step (its valid voxel beats counted from 0) that formed the
+// beat, lane k at stream position step * p + k, or -1 on a clock that
+// carries no step: the position the units behind form their own work at
+// (golden/perspective_dataflow.hpp), as the ring's control would travel
+// with it.
 struct RaySampleBeat {
   uint32_t valid = 0;
+  int64_t step = -1;
   std::array<uint16_t, kMaxLanes> sample{};
+  std::array<int32_t, kMaxLanes> u{}, v{};
+  std::array<uint32_t, kMaxLanes> tag{};
+  std::array<uint8_t, kMaxLanes> vtag{};
+};
+
+// Perspective gradient -> shading: each ray's sample with its gradient,
+// by ray (RaySampleBeat's lanes, `step` the position that formed the
+// gradient: gradient_cell()).
+struct RayGradientBeat {
+  uint32_t valid = 0;
+  int64_t step = -1;
+  std::array<uint16_t, kMaxLanes> sample{};
+  std::array<int16_t, kMaxLanes> gx{}, gy{}, gz{};
   std::array<int32_t, kMaxLanes> u{}, v{};
   std::array<uint32_t, kMaxLanes> tag{};
   std::array<uint8_t, kMaxLanes> vtag{};

@@ -39,6 +39,7 @@ struct CompositeOut {
 
 using InterpIf = UnitIf<VoxelBeat, SampleBeat>;
 using PerspInterpIf = UnitIf<VoxelBeat, RaySampleBeat>;  // perspective frames' interpolation unit
+using PerspGradientIf = UnitIf<RaySampleBeat, RayGradientBeat>;  // and their gradient unit
 using GradientIf = UnitIf<SampleBeat, GradientBeat>;
 using ShadeIf = UnitIf<GradientBeat, ShadedBeat>;
 using CompositeIf = UnitIf<ShadedBeat, CompositeOut>;

@@ -8,6 +8,7 @@
 // hardware: the voxel words {tag, value} go in whole, each sample's tag
 // comes out beside it.
 #pragma once
+#include <array>
 #include <cstdint>
 
 #include "systemc/core/frame_plan.hpp"
@@ -40,6 +41,10 @@ class RtlInterpPersp final : public PerspInterpIf {
     put_bits(m.tag_i, 0, tag_bits_, in.tag);
     if (in.valid) drive_pass(in.tag);
     m_.settle();
+    // The ring's control travels with its samples; the model counts the
+    // steps beside it (TlmInterpPersp's delay).
+    out.step = steps_[clocks_ & 3];
+    steps_[clocks_++ & 3] = in.valid ? next_step_++ : -1;
     out.valid = 0;
     for (int k = 0; k < p_; ++k) {
       if (!get_bits(m.valid_o, k, 1)) continue;
@@ -75,6 +80,9 @@ class RtlInterpPersp final : public PerspInterpIf {
   const FramePlan& plan_;
   int p_, v_, tag_bits_, vtag_bits_;  // vtag_bits_: the model's VoxelTagBits
   RtlModel<M> m_;
+  std::array<int64_t, 4> steps_{-1, -1, -1, -1};  // the ring's 4 cycles, by clock % 4
+  int64_t next_step_ = 0;
+  uint64_t clocks_ = 0;
 };
 
 }  // namespace cube4::sysc

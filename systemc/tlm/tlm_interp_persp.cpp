@@ -84,7 +84,7 @@ void TlmInterpPersp::clock(const VoxelBeat& in, RaySampleBeat& out) {
     }
   }
   for (int k = 0; k < plan_.p; ++k) form(steps_ * plan_.p + k, k, slot);
-  ++steps_;
+  slot.step = steps_++;
 }
 
 }  // namespace cube4::sysc

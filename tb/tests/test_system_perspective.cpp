@@ -339,7 +339,7 @@ TEST(SystemPerspective, TheClockedTlmInterpolationUnitIsTheRingBeatByBeat) {
         const sysc::VoxelBeat in = former.done() ? sysc::VoxelBeat{} : former.next();
         ring->clock(in, a);
         tlm.clock(in, b);
-        ASSERT_EQ(a.valid, b.valid) << "cycle " << cycle;
+        ASSERT_EQ(std::make_tuple(a.valid, a.step), std::make_tuple(b.valid, b.step)) << "cycle " << cycle;
         for (int k = 0; k < p; ++k) {
           if (!(a.valid >> k & 1)) continue;
           const auto i = static_cast<size_t>(k);
