@@ -170,7 +170,9 @@ class Traversal {
         RayAcc& ray = rays_[i];
         const uint32_t centre = current_.at(u, v), tag = tagged_ ? tag_.at(u, v) : 0;
         if (may_skip_ && classify(r_.classification, tag, centre, r_.p).a == 0) continue;
-        const Gradient g = r_.gradient ? gradient(u, v) : Gradient{};
+        const Gradient g = !r_.gradient              ? Gradient{}
+                           : opt_.given_gradients ? opt_.given_gradients->gradient(k, u, v)
+                                                  : gradient(u, v);
         const SamplePlace place = sample_place(r_, s, u, v);
         SliceControl c;
         c.k = k;

@@ -78,9 +78,15 @@ struct PerspectiveSamples {
   virtual uint32_t sample(int k, int64_t u, int64_t v) const = 0;
   virtual uint32_t vtag(int k, int64_t u, int64_t v) const = 0;
 };
+// Likewise a perspective frame's gradients (the clocked gradient unit's,
+// systemc/tlm/tlm_gradient_persp.hpp), for a ray that samples slice k.
+struct PerspectiveGradients {
+  virtual ~PerspectiveGradients() = default;
+  virtual Gradient gradient(int k, int64_t u, int64_t v) const = 0;
+};
 
 // How render_fixed() runs; none of it but `polygons` (and `given_samples`
-// that differ from golden's) changes the base plane.
+// or `given_gradients` that differ from golden's) changes the base plane.
 struct FixedOptions {
   RenderStats* stats = nullptr;
   Progress progress;          // called from the calling thread
@@ -100,6 +106,8 @@ struct FixedOptions {
   // Perspective only: take each sample (and tag) from here, not from the
   // volume. The volume's voxels still serve VolumePro's z gradient.
   const PerspectiveSamples* given_samples = nullptr;
+  // Perspective only: take each composited sample's gradient from here.
+  const PerspectiveGradients* given_gradients = nullptr;
 };
 
 BasePlane render_fixed(const Volume& vol, const Registers& regs, const FixedOptions& options);

@@ -9,9 +9,9 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
   nlohmann::json units = nlohmann::json::object();
   for (int u = 0; u < sysc::kUnits; ++u) {
     const auto i = static_cast<size_t>(u);
-    const bool loose = r.back_loosely_timed && (u == static_cast<int>(sysc::Unit::Gradient) ||
-                                                u == static_cast<int>(sysc::Unit::Shade) ||
-                                                u == static_cast<int>(sysc::Unit::Composite));
+    const bool loose =
+        r.back_loosely_timed && ((u == static_cast<int>(sysc::Unit::Gradient) && !r.gradient_clocked) ||
+                                 u == static_cast<int>(sysc::Unit::Shade) || u == static_cast<int>(sysc::Unit::Composite));
     units[sysc::unit_name(static_cast<sysc::Unit>(u))] =
         !r.simulated[i] ? "not simulated (not needed by the scene)" : loose ? "tlm (loosely timed)" : sysc::level_name(r.levels[i]);
   }
@@ -40,7 +40,13 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
       {"simulation_threads", cfg.all_tlm() && !cfg.cycle_level ? 1 : sysc::simulation_threads(cfg)},
       {"seed", cfg.seed},
       {"rtl_assertions", cfg.assertions ? "on" : "off (--no-assert)"},
-      {"timing", r.back_loosely_timed
+      {"timing", r.back_loosely_timed && r.gradient_clocked
+                     ? "simulated clock cycles through the interpolation unit (its last sample in cycle " +
+                           std::to_string(r.last_beat[1]) + ") and the gradient unit (its last gradient in cycle " +
+                           std::to_string(r.last_beat[2]) +
+                           "), then shading and compositing loosely timed (perspective: no clocked models of them "
+                           "yet); cycles_per_frame is the cycle model's"
+                 : r.back_loosely_timed
                      ? "simulated clock cycles through the interpolation unit (its last sample in cycle " +
                            std::to_string(r.last_beat[1]) +
                            "), then gradient, shading and compositing loosely timed (perspective: no clocked "
@@ -49,8 +55,11 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
                                                      : "simulated clock cycles"},
       {"check", !cfg.check                ? std::string("off")
                 : !check_failure.empty()     ? check_failure
-                : r.back_loosely_timed       ? std::string("passed: base plane and the interpolation unit's samples bit-exact "
-                                                           "(the units after it loosely timed)")
+                : r.back_loosely_timed && r.gradient_clocked
+                    ? std::string("passed: base plane, the interpolation unit's samples and the gradient unit's "
+                                  "gradients bit-exact (shading and compositing loosely timed)")
+                : r.back_loosely_timed ? std::string("passed: base plane and the interpolation unit's samples bit-exact "
+                                                     "(the units after it loosely timed)")
                                              : std::string("passed: base plane and unit streams bit-exact")},
   };
   if (!r.polygon_connection.empty()) {

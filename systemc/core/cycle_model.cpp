@@ -13,13 +13,16 @@
 //             z gradient for the next frame's priming pass too
 // A perspective frame (docs/perspective.md, "The dataflow") streams the
 // same passes (no priming pass: its voxel z differences come with the
-// slices it reads) and ends with three flush beams, not one; its
-// interpolation ring gives a sample 4 cycles after the step that forms it,
-// not 3. The units after it are counted with the parallel rings' latencies
-// and the zero pass, as the perspective gradient ring's plan keeps them
-// (slice k's gradients formed in pass k + 1); they are not built yet.
+// slices it reads) and ends with three flush beams, not one, or six with
+// the gradient ring (stream_flush_beams()); its interpolation ring gives a
+// sample 4 cycles after the step that forms it, not 3, and its gradient
+// ring a gradient 3 cycles after the step that forms it (TlmGradientPersp:
+// slice k's gradients formed in pass k + 1, the zero pass for the last
+// slice, so no zero beam). Shading and compositing are counted with the
+// parallel units' latencies; their perspective rings are not built yet.
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/system.hpp"
+#include "systemc/tlm/tlm_gradient_persp.hpp"
 #include "systemc/tlm/tlm_shade.hpp"
 
 namespace cube4::sysc {
@@ -31,7 +34,7 @@ CycleCount frame_cycles(const golden::Registers& r, int p) {
   const uint64_t passes = static_cast<uint64_t>(r.sample_slices()) + (zdiff ? 1 : 0);
   CycleCount c;
   c.stream = passes * static_cast<uint64_t>(ny) * B;
-  const uint64_t flush_beams = r.perspective ? 3 : 1;
+  const auto flush_beams = static_cast<uint64_t>(stream_flush_beams(r.perspective, r.gradient));
   c.flush = (r.gradient ? static_cast<uint64_t>(ny) * B : 0) + flush_beams * B;
   // After the stream's last beat (the flush beam's last, which ends a
   // beam), each registered link adds a cycle, then:
@@ -45,7 +48,9 @@ CycleCount frame_cycles(const golden::Registers& r, int p) {
   constexpr uint64_t kLink = 1, kGradientStages = 3, kComposite = 7;
   const uint64_t interp = r.perspective ? 4 : 3;
   const uint64_t shade = static_cast<uint64_t>(shade_latency(r.p));
-  const uint64_t gradient = r.gradient ? kLink + B + 1 + kGradientStages : kLink;
+  const uint64_t gradient = !r.gradient      ? kLink
+                            : r.perspective ? kLink + TlmGradientPersp::kLatency
+                                            : kLink + B + 1 + kGradientStages;
   const uint64_t drain = kLink + interp + gradient + kLink + shade + kLink + kComposite;
   c.latency = c.stream + c.flush + drain;
   c.latency_followed = c.latency + (zdiff ? static_cast<uint64_t>(ny) * B : 0);

@@ -33,6 +33,13 @@ struct PassStep {
   bool reads = false;               // a memory read: y < ny and voxel_slice < nz
 };
 
+// The flush beams that end a stream, after its last pass (passes back to
+// back, docs/rtl-interp.md): one for the interpolation ring; in
+// perspective three for its ring (docs/rtl-interp-persp.md), six with the
+// gradient ring, whose last slice's gradients are formed up to six beams
+// past the pass after it (golden gradient_cell()).
+constexpr int stream_flush_beams(bool perspective, bool gradient) { return !perspective ? 1 : gradient ? 6 : 3; }
+
 struct FramePlan {
   // user_tag_bits and tag_base shape the tag's user field (the system's:
   // the pass number in kUserTagBits); a testbench that streams frames back
@@ -76,9 +83,8 @@ struct FramePlan {
   // frame's last, docs/rtl-gradient.md).
   int passes_in_stream(bool stream_last_frame) const { return stream_last_frame ? passes : K; }
   // The beams the stream gives a pass: ny, and the flush beams (beams ny ..)
-  // after the stream's last (passes back to back, docs/rtl-interp.md): one,
-  // or three in perspective (docs/rtl-interp-persp.md).
-  int flush_beams() const { return perspective ? 3 : 1; }
+  // after the stream's last (stream_flush_beams()).
+  int flush_beams() const { return stream_flush_beams(perspective, r.gradient); }
   int beams(bool stream_last_pass) const { return ny + (stream_last_pass ? flush_beams() : 0); }
   // A pass's beats in a stream of passes (the last pass's flush aside).
   uint64_t pass_beats() const { return static_cast<uint64_t>(ny) * static_cast<uint64_t>(B); }

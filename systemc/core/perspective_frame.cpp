@@ -13,6 +13,7 @@
 #include "systemc/core/edge_clock.hpp"
 #include "systemc/core/link.hpp"
 #include "systemc/core/pass_gate.hpp"
+#include "systemc/core/ray_gradients.hpp"
 
 namespace cube4::sysc {
 namespace {
@@ -138,15 +139,19 @@ class RaySamples final : public golden::PerspectiveSamples {
   std::optional<Mismatch> first_;
 };
 
-// The stream and the unit a clock at a time, on either schedule. The
+// The stream and the units a clock at a time, on either schedule. The
 // former's edge makes the beat the link holds for the next clock (none
-// while a polygon gate holds the stream); the unit's edge takes the link's
-// beat of the clock before and gives its samples to `samples`.
+// while a polygon gate holds the stream); each unit's edge takes its
+// link's beat of the clock before: the interpolation unit's samples go to
+// `samples` and on to the gradient unit, if there is one, whose gradients
+// go to `gradients`.
 class PerspectiveStream {
  public:
-  PerspectiveStream(const PerspectiveFrameInput& in, StreamFormer& former, PerspInterpIf& interp, RaySamples& samples,
+  PerspectiveStream(const PerspectiveFrameInput& in, StreamFormer& former, PerspInterpIf& interp,
+                    PerspGradientIf* gradient, RaySamples& samples, RayGradients& gradients,
                     PerspectiveFrameResult& res)
-      : in_(in), former_(former), interp_(interp), samples_(samples), res_(res),
+      : in_(in), former_(former), interp_(interp), gradient_(gradient), samples_(samples), gradients_(gradients),
+        res_(res),
         total_(static_cast<uint64_t>(in.frames) * in.plan.passes * in.plan.pass_beats() +
                static_cast<uint64_t>(in.plan.flush_beams()) * in.plan.B) {
     if (in.source) gate_.emplace(*in.source);
@@ -162,56 +167,75 @@ class PerspectiveStream {
       in_.progress(std::min(1.0, static_cast<double>(cycle) / static_cast<double>(total_)));
   }
 
-  void interp_edge(uint64_t cycle, const VoxelBeat& link) {
-    interp_.clock(link, out_);
-    for (int k = 0; out_.valid && k < in_.plan.p; ++k) {
-      if (!(out_.valid >> k & 1)) continue;
+  void interp_edge(uint64_t cycle, const VoxelBeat& link, RaySampleBeat& out) {
+    interp_.clock(link, out);
+    for (int k = 0; out.valid && k < in_.plan.p; ++k) {
+      if (!(out.valid >> k & 1)) continue;
       const auto i = static_cast<size_t>(k);
-      samples_.take(out_.tag[i], out_.u[i], out_.v[i], out_.sample[i], out_.vtag[i]);
+      samples_.take(out.tag[i], out.u[i], out.v[i], out.sample[i], out.vtag[i]);
       res_.last_sample_cycle = cycle;
     }
   }
 
-  // After the former's last beat: the link, the unit's drain (4 cycles)
-  // and a margin in which nothing more may leave.
+  void gradient_edge(uint64_t cycle, const RaySampleBeat& link) {
+    if (!gradient_) return;
+    gradient_->clock(link, gradient_out_);
+    const RayGradientBeat& g = gradient_out_;
+    for (int k = 0; g.valid && k < in_.plan.p; ++k) {
+      if (!(g.valid >> k & 1)) continue;
+      const auto i = static_cast<size_t>(k);
+      gradients_.take(g.tag[i], g.u[i], g.v[i], golden::Gradient{g.gx[i], g.gy[i], g.gz[i]});
+      res_.last_gradient_cycle = cycle;
+    }
+  }
+
+  // After the former's last beat: the links, the units' drain (4 and 3
+  // cycles) and a margin in which nothing more may leave.
   bool finished() const { return idle_ >= kDrain + kMargin; }
 
   uint64_t first_frame_stalls() const { return gate_ ? gate_->first_frame_stalls(in_.frames) : 0; }
 
  private:
-  static constexpr uint64_t kDrain = 1 + 4, kMargin = 8;
+  static constexpr uint64_t kDrain = 1 + 4 + 1 + 3, kMargin = 8;
   const PerspectiveFrameInput& in_;
   StreamFormer& former_;
   PerspInterpIf& interp_;
+  PerspGradientIf* gradient_;
   RaySamples& samples_;
+  RayGradients& gradients_;
   PerspectiveFrameResult& res_;
   uint64_t total_;
   std::optional<PassGate> gate_;
-  RaySampleBeat out_;
+  RayGradientBeat gradient_out_;
   uint64_t idle_ = 0;
 };
 
 // Returns the cycles clocked.
 uint64_t run_plain(PerspectiveStream& stream) {
   VoxelBeat link;
+  RaySampleBeat samples;
   uint64_t cycle = 0;
   while (!stream.finished()) {
     ++cycle;
     VoxelBeat beat;
+    RaySampleBeat out;
     stream.former_edge(cycle, beat);
-    stream.interp_edge(cycle, link);
+    stream.interp_edge(cycle, link, out);
+    stream.gradient_edge(cycle, samples);
     link = beat;
+    samples = out;
   }
   return cycle;
 }
 
-// The SystemC schedule: the former and the unit each a process on the
-// machine's clock, a registered link between them. SystemC elaborates
+// The SystemC schedule: the former and each unit a process on the
+// machine's clock, registered links between them. SystemC elaborates
 // once, so the top is built with the machine's (clocked_tops.hpp) and each
 // frame plugs its stream in; idle, the processes wait for the next frame
 // instead of waking every cycle.
 SC_MODULE(PerspectiveTop) {
   Link<VoxelBeat> link{"voxels"};
+  Link<RaySampleBeat> samples{"samples"};
   PerspectiveStream* run = nullptr;
   std::exception_ptr error;
   sc_core::sc_event go;
@@ -224,6 +248,9 @@ SC_MODULE(PerspectiveTop) {
     SC_METHOD(interp_step);
     sensitive << clk.posedge_event();
     dont_initialize();
+    SC_METHOD(gradient_step);
+    sensitive << clk.posedge_event();
+    dont_initialize();
   }
   SC_HAS_PROCESS(PerspectiveTop);
 
@@ -234,6 +261,7 @@ SC_MODULE(PerspectiveTop) {
     edge_ = sc_core::SC_ZERO_TIME;
     first_ = true;
     link.reset();
+    samples.reset();
     go.notify(sc_core::SC_ZERO_TIME);
   }
   void stop() { run = nullptr; }
@@ -270,7 +298,10 @@ SC_MODULE(PerspectiveTop) {
     });
   }
   void interp_step() {
-    guarded([&] { run->interp_edge(cycle, link.read()); });
+    guarded([&] { run->interp_edge(cycle, link.read(), samples.next()); });
+  }
+  void gradient_step() {
+    guarded([&] { run->gradient_edge(cycle, samples.read()); });
   }
 
  private:
@@ -292,25 +323,32 @@ uint64_t run_systemc(PerspectiveStream& stream) {
 sc_core::sc_module* build_perspective_top(const EdgeClock& clk) { return new PerspectiveTop("cube4_perspective", clk); }
 
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
-                                             PerspInterpIf& interp) {
+                                             PerspInterpIf& interp, PerspGradientIf* gradient) {
   const FramePlan& plan = in.plan;
   RaySamples samples(plan, in.vol, in.frames, in.check);
+  RayGradients gradients(plan, in.frames);
   PerspectiveFrameResult res;
-  PerspectiveStream stream(in, former, interp, samples, res);
+  PerspectiveStream stream(in, former, interp, gradient, samples, gradients, res);
   res.cycles = in.kernel == Kernel::SystemC ? run_systemc(stream) : run_plain(stream);
   samples.check_complete();
+  if (gradient) gradients.finish(samples, in.check);
   res.polygon_stall_cycles = stream.first_frame_stalls();
   res.beats = former.beats();
   res.samples = samples.taken();
-  res.mismatch = samples.first();
-  if (res.mismatch && !in.check)
-    throw std::logic_error("perspective interpolation (" + std::string(level_name(interp.level())) +
+  res.gradients = gradients.taken();
+  res.mismatch = samples.first() ? samples.first() : gradients.first();
+  if (res.mismatch && !in.check) {
+    const bool interpolation = res.mismatch->unit == Unit::Interp;
+    throw std::logic_error(std::string(interpolation ? "perspective interpolation (" : "perspective gradient (") +
+                           level_name(interpolation ? interp.level() : gradient->level()) +
                            "): " + res.mismatch->describe());
-  // The rest of the pipeline, loosely timed, on the unit's samples.
+  }
+  // The rest of the pipeline, loosely timed, on the units' samples and gradients.
   golden::FixedOptions opt;
   opt.accumulators = in.accumulators;
   opt.polygons = in.polygons;
   opt.given_samples = &samples;
+  if (gradient) opt.given_gradients = &gradients;
   res.plane = golden::render_perspective(in.vol, plan.r, opt);
   return res;
 }

@@ -1,19 +1,20 @@
 // A perspective frame clocked (Cube-4 §3; docs/system.md, "Perspective
 // frames"): the stream former's voxel beats (address generation, skewed
-// memory, de-skew; the perspective stream's three flush beams at the end)
-// through the perspective interpolation unit, clocked TLM or RTL, a beat a
-// clock with a registered link in between: under the SystemC kernel (a
-// process for the former, one for the unit, on the machine's clock) or on
-// a plain loop, with the same cycles and samples. Every sample that leaves
-// the unit is kept by its slice and ray and checked: each ray of each
-// slice leaves once per frame, and with `check` its value equals golden
-// perspective_sample()'s (the first difference is the frame's mismatch).
-// The gradient, shading and compositing of perspective samples have no
-// clocked models or rings yet: the unit's samples go through them loosely
-// timed, golden render_perspective() given those samples
-// (FixedOptions::given_samples). With a polygon source the stream waits
-// for each pass's slab image at its first beat, as a parallel frame's does
-// (pass_gate.hpp).
+// memory, de-skew; the perspective stream's flush beams at the end)
+// through the perspective interpolation unit, clocked TLM or RTL, and with
+// gradients through the gradient unit (clocked TLM: the gradient ring's
+// schedule), a beat a clock with registered links in between: under the
+// SystemC kernel (a process for the former and one per unit, on the
+// machine's clock) or on a plain loop, with the same cycles, samples and
+// gradients. Every sample and gradient that leaves a unit is kept by its
+// slice and ray and checked: each ray of each slice leaves once per
+// frame, and with `check` its value equals golden's (the first difference
+// is the frame's mismatch). Shading and compositing of perspective samples
+// have no clocked models or rings yet: the units' samples and gradients go
+// through them loosely timed, golden render_perspective() given those
+// (FixedOptions::given_samples, given_gradients). With a polygon source
+// the stream waits for each pass's slab image at its first beat, as a
+// parallel frame's does (pass_gate.hpp).
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -34,8 +35,10 @@ struct PerspectiveFrameResult {
   uint64_t beats = 0;              // voxel beats the former gave, all frames
   uint64_t last_beat_cycle = 0;    // the cycle of the former's last beat
   uint64_t last_sample_cycle = 0;  // the cycle the unit's last sample left
+  uint64_t last_gradient_cycle = 0;  // the cycle the gradient unit's last gradient left (0: none ran)
   uint64_t cycles = 0;             // clock cycles simulated
   uint64_t samples = 0;            // samples that left the unit, all frames
+  uint64_t gradients = 0;          // gradients that left the gradient unit, all frames
   uint64_t polygon_stall_cycles = 0;  // the first frame's waits for slab images
   std::optional<Mismatch> mismatch;
 };
@@ -52,7 +55,9 @@ struct PerspectiveFrameInput {
   Kernel kernel = Kernel::SystemC;
 };
 
+// `gradient`: the gradient unit behind the interpolation unit, or none
+// (the gradients then loosely timed, golden's from the unit's samples).
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
-                                             PerspInterpIf& interp);
+                                             PerspInterpIf& interp, PerspGradientIf* gradient = nullptr);
 
 }  // namespace cube4::sysc

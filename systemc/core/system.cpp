@@ -27,6 +27,7 @@
 #include "systemc/tlm/tlm_frame.hpp"
 #include "systemc/tlm/tlm_gradient.hpp"
 #include "systemc/tlm/tlm_interp.hpp"
+#include "systemc/tlm/tlm_gradient_persp.hpp"
 #include "systemc/tlm/tlm_interp_persp.hpp"
 #include "systemc/tlm/tlm_shade.hpp"
 
@@ -183,20 +184,25 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
     interp = make_rtl_interp_persp(plan, *f.ctx, cfg.trace);
   else
     interp = std::make_unique<TlmInterpPersp>(plan);
+  // The gradient ring's schedule at TLM (check_perspective_levels() refuses
+  // RTL, and VolumePro's z gradient at any clocked level).
+  std::unique_ptr<PerspGradientIf> gradient;
+  if (f.r.gradient) gradient = std::make_unique<TlmGradientPersp>(plan);
   const PerspectiveFrameResult pr =
       run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress, f.source,
                              cfg.kernel},
-                            former, *interp);
+                            former, *interp, gradient.get());
   res.plane = pr.plane;
-  // The units after interpolation are loosely timed: the frame's cycles
-  // are the cycle model's, whose stream and interpolation the run measured.
+  // Shading and compositing are loosely timed: the frame's cycles are the
+  // cycle model's, whose stream, interpolation and gradients the run measured.
   res.polygon_stall_cycles = pr.polygon_stall_cycles;
   res.frame_cycles = (cfg.frames > 1 ? f.cc.latency_followed : f.cc.latency) + res.polygon_stall_cycles;
-  res.last_beat = {pr.last_beat_cycle, pr.last_sample_cycle, 0, 0};
+  res.last_beat = {pr.last_beat_cycle, pr.last_sample_cycle, pr.last_gradient_cycle, 0};
   res.simulated_cycles = pr.cycles;
   res.voxel_reads = f.mem.reads();
   res.mismatch = pr.mismatch;
   res.back_loosely_timed = true;
+  res.gradient_clocked = gradient != nullptr;
 }
 
 // A clocked parallel frame: the units on the schedule of cfg.kernel.

@@ -103,10 +103,12 @@ struct SystemResult {
   std::vector<std::string> skipped;      // logic the scene does not need, not simulated
   std::vector<std::string> unused;       // logic the scene does not need, simulated inside an RTL unit
   std::optional<Mismatch> mismatch;      // --check: the first unit output that differs
-  // A clocked perspective frame: the units after interpolation ran loosely
-  // timed after the stream (systemc/core/perspective_frame.hpp), so
-  // frame_cycles is the cycle model's; last_beat[0..1] were measured.
+  // A clocked perspective frame: shading and compositing ran loosely timed
+  // after the stream (systemc/core/perspective_frame.hpp), so frame_cycles
+  // is the cycle model's; last_beat[0..1] were measured, and last_beat[2]
+  // when the gradient unit ran clocked.
   bool back_loosely_timed = false;
+  bool gradient_clocked = false;  // ... and its gradient unit ran on the clock, before them
 };
 
 // `polygons`: the frame's polygon images (Cube-5; golden/polygon_frame.hpp,

@@ -2,11 +2,12 @@
 // transaction through the golden perspective renderer, the cycle model's
 // count), directly and through the host interface (MODE's perspective bit,
 // SCALE_START, SCALE_STEP); clocked, with the perspective interpolation
-// unit as clocked TLM or RTL (cube4_interp_persp_ring) and the units after
-// it loosely timed: every sample checked against golden, the stream's
-// beats and the last sample's cycle exactly the dataflow's, the clocked TLM
-// unit beat for beat the ring; and refused where a unit has no perspective
-// model at the level asked for.
+// unit as clocked TLM or RTL (cube4_interp_persp_ring), the gradient unit
+// as clocked TLM (its ring's schedule) and shading and compositing loosely
+// timed: every sample and gradient checked against golden, the stream's
+// beats and the last sample's and gradient's cycles exactly the
+// dataflow's, the clocked TLM interpolation unit beat for beat the ring;
+// and refused where a unit has no perspective model at the level asked for.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +26,7 @@
 #include "systemc/core/system.hpp"
 #include "systemc/core/voxel_memory.hpp"
 #include "systemc/tlm/tlm_addr.hpp"
+#include "systemc/tlm/tlm_gradient_persp.hpp"
 #include "systemc/tlm/tlm_interp_persp.hpp"
 #include "tb/tests/system_support.hpp"
 #include "tb/tests/test_support.hpp"
@@ -79,15 +81,18 @@ TEST(SystemPerspective, LooselyTimedTlmEqualsGoldenFromEveryFaceAtP1458) {
       EXPECT_EQ(res.samples, stats.samples);
       EXPECT_LT(res.samples, static_cast<uint64_t>(r.dim[0]) * r.dim[1] * r.sample_slices());
       // The cycle model's count: a perspective frame streams the volume as a
-      // parallel one does (one voxel per pipeline per cycle), with two flush
-      // beams more and a cycle more in the interpolation ring (measured by
-      // the clocked tests below).
+      // parallel one does (one voxel per pipeline per cycle), with five
+      // flush beams more (the gradient ring's last slice), a cycle more in
+      // the interpolation ring and the parallel gradient ring's zero beam
+      // and alignment register fewer (measured by the clocked tests below).
+      ASSERT_TRUE(r.gradient);
       golden::Registers parallel = s.host.regs;
       parallel.perspective = false;
       const uint64_t B = static_cast<uint64_t>((r.dim[0] + p - 1) / p);
       EXPECT_EQ(res.frame_cycles, sysc::frame_cycles(s.host.regs, p).latency);
       EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).stream, sysc::frame_cycles(parallel, p).stream);
-      EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).latency, sysc::frame_cycles(parallel, p).latency + 2 * B + 1);
+      EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).latency,
+                sysc::frame_cycles(parallel, p).latency + 5 * B + 1 - (B + 1));
     }
   }
 }
@@ -157,8 +162,10 @@ bool rtl_perspective(int p) {
 // The cycle the interpolation unit's last sample of a stream of `frames`
 // frames leaves, by the dataflow: the stream position that forms it
 // (golden forming_position()), a beat per cycle from cycle 1, the link's
-// cycle and the ring's 4.
-uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames) {
+// cycle and the ring's 4. With `gradient`, the gradient unit's last
+// gradient instead: its position (gradient_forming_position()), then the
+// next link and the unit's 3 cycles.
+uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool gradient = false) {
   const int nx = r.dim[0], ny = r.dim[1], K = r.sample_slices();
   const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
   const int F = r.p.dda_frac_bits;
@@ -169,9 +176,11 @@ uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames) {
     // The last-formed ray of a slice: the largest home row, then column.
     const int64_t hy = golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, s.rays_y.hi - 1), F);
     const int64_t hx = golden::home_cell(golden::ray_position(s.ray0_x, s.spacing, s.rays_x.hi - 1), F);
-    last = std::max(last, golden::forming_position(int64_t{frames - 1} * K + k, hx, hy, row, ny));
+    const int64_t pass = int64_t{frames - 1} * K + k;
+    last = std::max(last, gradient ? golden::gradient_forming_position(pass, hx, hy, row, ny)
+                                   : golden::forming_position(pass, hx, hy, row, ny));
   }
-  return static_cast<uint64_t>(last / p) + 1 + 1 + 4;
+  return static_cast<uint64_t>(last / p) + 1 + 1 + 4 + (gradient ? 1 + sysc::TlmGradientPersp::kLatency : 0);
 }
 
 void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const golden::BasePlane& want,
@@ -184,14 +193,18 @@ void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const g
   // The weight generator runs at the interpolation unit's level.
   EXPECT_EQ(res.weight_generator, cfg.levels[static_cast<size_t>(sysc::Unit::Interp)]);
   EXPECT_EQ(res.samples, stats.samples);
-  // The stream: every pass back to back, then the zero pass (with
-  // gradients) and three flush beams, a beat a cycle from cycle 1.
+  // The stream: every pass back to back, then the zero pass and six flush
+  // beams with gradients (three without), a beat a cycle from cycle 1.
   const sysc::CycleCount cc = sysc::frame_cycles(r, cfg.p);
   EXPECT_EQ(res.last_beat[0], cc.stream * static_cast<uint64_t>(cfg.frames) + cc.flush);
   EXPECT_EQ(res.last_beat[1], last_sample_cycle(r, cfg.p, cfg.frames));
   // The model's interpolation latency bounds it: no sample after the
   // stream's last beat, the link and the ring's 4 cycles.
   EXPECT_LE(res.last_beat[1], res.last_beat[0] + 1 + 4);
+  // With gradients the gradient unit's last gradient, in the cycle its
+  // schedule gives, and within the stream's drain.
+  EXPECT_EQ(res.last_beat[2], r.gradient ? last_sample_cycle(r, cfg.p, cfg.frames, true) : 0);
+  EXPECT_LE(res.last_beat[2], res.last_beat[0] + 1 + 4 + 1 + sysc::TlmGradientPersp::kLatency);
   EXPECT_EQ(res.frame_cycles, cfg.frames > 1 ? cc.latency_followed : cc.latency);
 }
 
@@ -356,18 +369,24 @@ TEST(SystemPerspective, TheClockedTlmInterpolationUnitIsTheRingBeatByBeat) {
 #endif
 }
 
-// A unit whose output is wrong: the checker names the first sample that
-// differs (its slice and ray), and a ray that never leaves.
+// A unit whose output is wrong: the checker names the first sample (or
+// gradient) that differs (its slice and ray), and a ray that never leaves.
+// Faulty<Inner> drops, or spoils with `spoil`, the first lane of slice
+// `slice` that the clocked TLM unit Inner gives.
 namespace {
-class Faulty final : public sysc::PerspInterpIf {
+template <class Inner>
+class Faulty final : public Inner::Interface {
  public:
-  Faulty(const sysc::FramePlan& plan, bool drop) : inner_(plan), drop_(drop) {}
-  void clock(const sysc::VoxelBeat& in, sysc::RaySampleBeat& out) override {
+  using In = typename Inner::In;
+  using Out = typename Inner::Out;
+  Faulty(const sysc::FramePlan& plan, bool drop, uint32_t slice, void (*spoil)(Out&, size_t))
+      : inner_(plan), drop_(drop), slice_(slice), spoil_(spoil) {}
+  void clock(const In& in, Out& out) override {
     inner_.clock(in, out);
     for (int k = 0; k < 16 && !done_; ++k)
-      if (out.valid >> k & 1 && out.tag[static_cast<size_t>(k)] == 3) {
+      if (out.valid >> k & 1 && out.tag[static_cast<size_t>(k)] == slice_) {
         if (drop_) out.valid &= ~(1u << k);
-        else out.sample[static_cast<size_t>(k)] ^= 1;
+        else spoil_(out, static_cast<size_t>(k));
         u_ = out.u[static_cast<size_t>(k)];
         v_ = out.v[static_cast<size_t>(k)];
         done_ = true;
@@ -378,9 +397,25 @@ class Faulty final : public sysc::PerspInterpIf {
   bool done_ = false;
 
  private:
-  sysc::TlmInterpPersp inner_;
+  typename Inner::Unit inner_;
   bool drop_;
+  uint32_t slice_;
+  void (*spoil_)(Out&, size_t);
 };
+struct InterpUnit {
+  using Interface = sysc::PerspInterpIf;
+  using Unit = sysc::TlmInterpPersp;
+  using In = sysc::VoxelBeat;
+  using Out = sysc::RaySampleBeat;
+};
+struct GradientUnit {
+  using Interface = sysc::PerspGradientIf;
+  using Unit = sysc::TlmGradientPersp;
+  using In = sysc::RaySampleBeat;
+  using Out = sysc::RayGradientBeat;
+};
+void flip_sample(sysc::RaySampleBeat& b, size_t lane) { b.sample[lane] ^= 1; }
+void flip_gradient(sysc::RayGradientBeat& b, size_t lane) { b.gy[lane] ^= 2; }
 }  // namespace
 
 TEST(SystemPerspective, TheCheckNamesAWrongOrMissingSampleBySliceAndRay) {
@@ -391,7 +426,7 @@ TEST(SystemPerspective, TheCheckNamesAWrongOrMissingSampleBySliceAndRay) {
     sysc::VoxelMemory mem(s.volume, 4);
     sysc::TlmAddr addr(mem.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
     sysc::StreamFormer former(plan, mem, addr, 1);
-    Faulty unit(plan, drop);
+    Faulty<InterpUnit> unit(plan, drop, 3, flip_sample);
     const sysc::PerspectiveFrameResult res = sysc::run_perspective_frame({plan, s.volume, 1, true, false, nullptr, {}}, former, unit);
     ASSERT_TRUE(unit.done_);
     ASSERT_TRUE(res.mismatch);
@@ -406,11 +441,46 @@ TEST(SystemPerspective, TheCheckNamesAWrongOrMissingSampleBySliceAndRay) {
     sysc::VoxelMemory mem2(s.volume, 4);
     sysc::TlmAddr addr2(mem2.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
     sysc::StreamFormer former2(plan, mem2, addr2, 1);
-    Faulty unit2(plan, drop);
+    Faulty<InterpUnit> unit2(plan, drop, 3, flip_sample);
     if (drop) {
       EXPECT_THROW(sysc::run_perspective_frame({plan, s.volume, 1, false, false, nullptr, {}}, former2, unit2), std::logic_error);
     }
   }
+}
+
+// Likewise a gradient unit whose output is wrong: the check names the
+// first gradient that differs from golden's of the interpolation unit's
+// samples, and a ray whose gradient never leaves.
+TEST(SystemPerspective, TheCheckNamesAWrongOrMissingGradientBySliceAndRay) {
+  const test::Setup s = setup(scene(kEyes[2]));
+  ASSERT_TRUE(s.host.regs.gradient);
+  for (const bool drop : {false, true})
+    for (const bool check : {true, false}) {
+      SCOPED_TRACE(std::string(drop ? "dropped" : "flipped") + (check ? ", checked" : ", unchecked"));
+      const sysc::FramePlan plan(s.host.regs, 4);
+      sysc::VoxelMemory mem(s.volume, 4);
+      sysc::TlmAddr addr(mem.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
+      sysc::StreamFormer former(plan, mem, addr, 1);
+      sysc::TlmInterpPersp interp(plan);
+      Faulty<GradientUnit> unit(plan, drop, 4, flip_gradient);
+      const sysc::PerspectiveFrameInput in{plan, s.volume, 1, check, false, nullptr, {}};
+      if (!check) {
+        // Unchecked, a missing gradient is still an error, not an image; a
+        // wrong one goes into it.
+        if (drop) EXPECT_THROW(sysc::run_perspective_frame(in, former, interp, &unit), std::logic_error);
+        else EXPECT_NO_THROW(sysc::run_perspective_frame(in, former, interp, &unit));
+        continue;
+      }
+      const sysc::PerspectiveFrameResult res = sysc::run_perspective_frame(in, former, interp, &unit);
+      ASSERT_TRUE(unit.done_);
+      ASSERT_TRUE(res.mismatch);
+      EXPECT_EQ(res.mismatch->unit, sysc::Unit::Gradient);
+      EXPECT_EQ(res.mismatch->slice, 4);
+      EXPECT_EQ(res.mismatch->x, unit.u_);
+      EXPECT_EQ(res.mismatch->y, unit.v_);
+      if (drop) EXPECT_EQ(res.mismatch->got, "0 time(s)");
+      else EXPECT_NE(res.mismatch->got.find("gradient ("), std::string::npos) << res.mismatch->got;
+    }
 }
 
 // The system's RTL weight generator (cube4_persp_slice) gives every slice
