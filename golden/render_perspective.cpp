@@ -141,12 +141,7 @@ class Traversal {
     for (std::thread& w : workers) w.join();
     for (const std::exception_ptr& e : failed)
       if (e) std::rethrow_exception(e);
-    for (int y = 0; y < bp_.height; ++y)
-      for (int x = 0; x < bp_.width; ++x) {
-        const size_t i = static_cast<size_t>(y) * bp_.width + x;
-        write_pixel(bp_, x, y, poly_ ? leave_with_polygons(rays_[i], poly_->back[i], r_.p) : pixel_of(rays_[i], r_.p));
-        if (!bp_.acc.empty()) bp_.acc[i] = rays_[i];
-      }
+    write_rays(bp_, rays_, r_.p, poly_);
     if (opt_.stats) {
       opt_.stats->samples = 0;
       for (uint64_t c : counts) opt_.stats->samples += c;

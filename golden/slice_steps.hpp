@@ -95,6 +95,21 @@ inline void write_pixel(BasePlane& bp, int u, int v, const Pixel& a) {
   px[0] = a.r; px[1] = a.g; px[2] = a.b; px[3] = a.a;
 }
 
+// The base plane of rays that have all left, one accumulator per pixel
+// (row-major, the plane's size): each pixel the ray's (over the polygons'
+// back image with a polygon frame), and with `bp.acc` the accumulators.
+// A perspective frame ends so (render_perspective(), the clocked
+// compositor of systemc/tlm/tlm_composite_persp.hpp).
+inline void write_rays(BasePlane& bp, const std::vector<RayAcc>& rays, const Precision& p,
+                       const PolygonFrame* polygons = nullptr) {
+  for (int y = 0; y < bp.height; ++y)
+    for (int x = 0; x < bp.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * bp.width + x;
+      write_pixel(bp, x, y, polygons ? leave_with_polygons(rays[i], polygons->back[i], p) : pixel_of(rays[i], p));
+      if (!bp.acc.empty()) bp.acc[i] = rays[i];
+    }
+}
+
 // The compositing unit over whole slices: the ray store, ray alignment,
 // blending, and the base-plane pixels of the rays that leave. Per slice,
 // `shade(x, y, ray, out)` supplies the cropped and cut sample of (x, y) and

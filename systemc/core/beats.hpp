@@ -77,6 +77,15 @@ struct RayGradientBeat {
   std::array<uint8_t, kMaxLanes> vtag{};
 };
 
+// Perspective shading -> compositing: each ray's shaded sample before
+// cropping and the cut plane, by ray (the gradient beat's lanes).
+struct RayShadedBeat {
+  uint32_t valid = 0;
+  std::array<uint16_t, kMaxLanes> red{}, green{}, blue{}, alpha{}, value{};
+  std::array<int32_t, kMaxLanes> u{}, v{};
+  std::array<uint32_t, kMaxLanes> tag{};
+};
+
 // Gradient -> shading: the centre sample, its gradient and its position.
 struct GradientBeat {
   bool valid = false;

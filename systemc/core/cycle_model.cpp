@@ -14,18 +14,45 @@
 // A perspective frame (docs/perspective.md, "The dataflow") streams the
 // same passes (no priming pass: its voxel z differences come with the
 // slices it reads) and ends with three flush beams, not one, or six with
-// the gradient ring (stream_flush_beams()); its interpolation ring gives a
-// sample 4 cycles after the step that forms it, not 3, and its gradient
-// ring a gradient 3 cycles after the step that forms it (TlmGradientPersp:
-// slice k's gradients formed in pass k + 1, the zero pass for the last
-// slice, so no zero beam). Shading and compositing are counted with the
-// parallel units' latencies; their perspective rings are not built yet.
+// the gradient ring (stream_flush_beams()). Its units are clocked by ray,
+// so its latency is that of the frame's last-formed ray: the stream
+// position that forms its gradient (gradient_forming_position(): its home
+// cell + (5, 5) in the next pass), or without gradients its sample
+// (forming_position()), a beat a cycle from cycle 1; then the links, the
+// interpolation ring's 4 cycles, the gradient ring's 3 (no zero beam), the
+// shading unit and the compositor's 7 (systemc/tlm/tlm_composite_persp.hpp).
+#include <algorithm>
+
+#include "golden/perspective.hpp"
+#include "golden/perspective_dataflow.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/system.hpp"
+#include "systemc/tlm/tlm_composite_persp.hpp"
 #include "systemc/tlm/tlm_gradient_persp.hpp"
 #include "systemc/tlm/tlm_shade.hpp"
 
 namespace cube4::sysc {
+namespace {
+
+// The stream position that forms a frame's last ray (its sample, or with
+// gradients its gradient): the largest over the slices of their last home
+// row, then column. -1 for a frame no ray samples.
+int64_t last_ray_position(const golden::Registers& r, int p) {
+  const int nx = r.dim[0], ny = r.dim[1], F = r.p.dda_frac_bits;
+  const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
+  int64_t last = -1;
+  for (int k = 0; k < r.sample_slices(); ++k) {
+    const golden::PerspectiveSlice s = golden::perspective_slice(r, k);
+    if (s.rays_x.empty() || s.rays_y.empty()) continue;
+    const int64_t hx = golden::home_cell(golden::ray_position(s.ray0_x, s.spacing, s.rays_x.hi - 1), F);
+    const int64_t hy = golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, s.rays_y.hi - 1), F);
+    last = std::max(last, r.gradient ? golden::gradient_forming_position(k, hx, hy, row, ny)
+                                     : golden::forming_position(k, hx, hy, row, ny));
+  }
+  return last;
+}
+
+}  // namespace
 
 CycleCount frame_cycles(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1];
@@ -53,6 +80,10 @@ CycleCount frame_cycles(const golden::Registers& r, int p) {
                                             : kLink + B + 1 + kGradientStages;
   const uint64_t drain = kLink + interp + gradient + kLink + shade + kLink + kComposite;
   c.latency = c.stream + c.flush + drain;
+  // In perspective the drain follows the beat of the frame's last ray.
+  static_assert(TlmCompositePersp::kLatency == kComposite);
+  if (const int64_t last = r.perspective ? last_ray_position(r, p) : -1; last >= 0)
+    c.latency = static_cast<uint64_t>(last / p) + 1 + drain;
   c.latency_followed = c.latency + (zdiff ? static_cast<uint64_t>(ny) * B : 0);
   return c;
 }

@@ -14,6 +14,9 @@
 #include "systemc/core/link.hpp"
 #include "systemc/core/pass_gate.hpp"
 #include "systemc/core/ray_gradients.hpp"
+#include "systemc/tlm/gradient_bypass.hpp"
+#include "systemc/tlm/tlm_gradient_persp.hpp"
+#include "systemc/tlm/tlm_shade.hpp"
 
 namespace cube4::sysc {
 namespace {
@@ -142,19 +145,23 @@ class RaySamples final : public golden::PerspectiveSamples {
 // The stream and the units a clock at a time, on either schedule. The
 // former's edge makes the beat the link holds for the next clock (none
 // while a polygon gate holds the stream); each unit's edge takes its
-// link's beat of the clock before: the interpolation unit's samples go to
-// `samples` and on to the gradient unit, if there is one, whose gradients
-// go to `gradients`.
+// link's beat of the clock before and gives the beat for the next unit's:
+// the interpolation unit's samples are kept in `samples`, the gradient
+// unit's gradients in `gradients`, and the compositor's frame ends in the
+// result.
 class PerspectiveStream {
  public:
-  PerspectiveStream(const PerspectiveFrameInput& in, StreamFormer& former, PerspInterpIf& interp,
-                    PerspGradientIf* gradient, RaySamples& samples, RayGradients& gradients,
-                    PerspectiveFrameResult& res)
-      : in_(in), former_(former), interp_(interp), gradient_(gradient), samples_(samples), gradients_(gradients),
-        res_(res),
+  PerspectiveStream(const PerspectiveFrameInput& in, StreamFormer& former, const PerspectiveUnits& units,
+                    RaySamples& samples, RayGradients& gradients, PerspectiveFrameResult& res)
+      : in_(in), former_(former), units_(units), gradient_(units.gradient), samples_(samples),
+        gradients_(gradients), res_(res),
         total_(static_cast<uint64_t>(in.frames) * in.plan.passes * in.plan.pass_beats() +
-               static_cast<uint64_t>(in.plan.flush_beams()) * in.plan.B) {
+               static_cast<uint64_t>(in.plan.flush_beams()) * in.plan.B),
+        drain_(1 + 4 + 1 + TlmGradientPersp::kLatency +
+               (units.shade ? 1 + static_cast<uint64_t>(shade_latency(in.plan.r.p)) + 1 + TlmCompositePersp::kLatency
+                            : 0)) {
     if (in.source) gate_.emplace(*in.source);
+    if (!gradient_ && units.shade) gradient_ = &bypass_;
   }
 
   void former_edge(uint64_t cycle, VoxelBeat& beat) {
@@ -168,7 +175,7 @@ class PerspectiveStream {
   }
 
   void interp_edge(uint64_t cycle, const VoxelBeat& link, RaySampleBeat& out) {
-    interp_.clock(link, out);
+    units_.interp.clock(link, out);
     for (int k = 0; out.valid && k < in_.plan.p; ++k) {
       if (!(out.valid >> k & 1)) continue;
       const auto i = static_cast<size_t>(k);
@@ -177,53 +184,72 @@ class PerspectiveStream {
     }
   }
 
-  void gradient_edge(uint64_t cycle, const RaySampleBeat& link) {
+  void gradient_edge(uint64_t cycle, const RaySampleBeat& link, RayGradientBeat& out) {
     if (!gradient_) return;
-    gradient_->clock(link, gradient_out_);
-    const RayGradientBeat& g = gradient_out_;
-    for (int k = 0; g.valid && k < in_.plan.p; ++k) {
-      if (!(g.valid >> k & 1)) continue;
+    gradient_->clock(link, out);
+    if (!units_.gradient) return;  // the bypass's zero gradients are not the scene's
+    for (int k = 0; out.valid && k < in_.plan.p; ++k) {
+      if (!(out.valid >> k & 1)) continue;
       const auto i = static_cast<size_t>(k);
-      gradients_.take(g.tag[i], g.u[i], g.v[i], golden::Gradient{g.gx[i], g.gy[i], g.gz[i]});
+      gradients_.take(out.tag[i], out.u[i], out.v[i], golden::Gradient{out.gx[i], out.gy[i], out.gz[i]});
       res_.last_gradient_cycle = cycle;
     }
   }
 
-  // After the former's last beat: the links, the units' drain (4 and 3
-  // cycles) and a margin in which nothing more may leave.
-  bool finished() const { return idle_ >= kDrain + kMargin; }
+  void shade_edge(const RayGradientBeat& link, RayShadedBeat& out) {
+    if (units_.shade) units_.shade->clock(link, out);
+  }
+
+  void composite_edge(uint64_t cycle, const RayShadedBeat& link) {
+    if (!units_.composite) return;
+    CompositeOut out;
+    units_.composite->clock(link, out);
+    if (out.frame_done) res_.frame_done_cycles.push_back(cycle);
+  }
+
+  // After the former's last beat: the links, the units' drain and a margin
+  // in which nothing more may leave.
+  bool finished() const { return idle_ >= drain_ + kMargin; }
 
   uint64_t first_frame_stalls() const { return gate_ ? gate_->first_frame_stalls(in_.frames) : 0; }
 
  private:
-  static constexpr uint64_t kDrain = 1 + 4 + 1 + 3, kMargin = 8;
+  static constexpr uint64_t kMargin = 8;
   const PerspectiveFrameInput& in_;
   StreamFormer& former_;
-  PerspInterpIf& interp_;
-  PerspGradientIf* gradient_;
+  const PerspectiveUnits& units_;
+  PerspGradientIf* gradient_;  // the unit's, or the bypass
+  PerspGradientBypass bypass_;
   RaySamples& samples_;
   RayGradients& gradients_;
   PerspectiveFrameResult& res_;
-  uint64_t total_;
+  uint64_t total_, drain_;
   std::optional<PassGate> gate_;
-  RayGradientBeat gradient_out_;
   uint64_t idle_ = 0;
 };
 
 // Returns the cycles clocked.
 uint64_t run_plain(PerspectiveStream& stream) {
-  VoxelBeat link;
+  VoxelBeat voxels;
   RaySampleBeat samples;
+  RayGradientBeat gradients;
+  RayShadedBeat shaded;
   uint64_t cycle = 0;
   while (!stream.finished()) {
     ++cycle;
-    VoxelBeat beat;
-    RaySampleBeat out;
-    stream.former_edge(cycle, beat);
-    stream.interp_edge(cycle, link, out);
-    stream.gradient_edge(cycle, samples);
-    link = beat;
-    samples = out;
+    VoxelBeat next_voxels;
+    RaySampleBeat next_samples;
+    RayGradientBeat next_gradients;
+    RayShadedBeat next_shaded;
+    stream.former_edge(cycle, next_voxels);
+    stream.interp_edge(cycle, voxels, next_samples);
+    stream.gradient_edge(cycle, samples, next_gradients);
+    stream.shade_edge(gradients, next_shaded);
+    stream.composite_edge(cycle, shaded);
+    voxels = next_voxels;
+    samples = next_samples;
+    gradients = next_gradients;
+    shaded = next_shaded;
   }
   return cycle;
 }
@@ -236,6 +262,8 @@ uint64_t run_plain(PerspectiveStream& stream) {
 SC_MODULE(PerspectiveTop) {
   Link<VoxelBeat> link{"voxels"};
   Link<RaySampleBeat> samples{"samples"};
+  Link<RayGradientBeat> gradients{"gradients"};
+  Link<RayShadedBeat> shaded{"shaded"};
   PerspectiveStream* run = nullptr;
   std::exception_ptr error;
   sc_core::sc_event go;
@@ -251,6 +279,12 @@ SC_MODULE(PerspectiveTop) {
     SC_METHOD(gradient_step);
     sensitive << clk.posedge_event();
     dont_initialize();
+    SC_METHOD(shade_step);
+    sensitive << clk.posedge_event();
+    dont_initialize();
+    SC_METHOD(composite_step);
+    sensitive << clk.posedge_event();
+    dont_initialize();
   }
   SC_HAS_PROCESS(PerspectiveTop);
 
@@ -262,6 +296,8 @@ SC_MODULE(PerspectiveTop) {
     first_ = true;
     link.reset();
     samples.reset();
+    gradients.reset();
+    shaded.reset();
     go.notify(sc_core::SC_ZERO_TIME);
   }
   void stop() { run = nullptr; }
@@ -301,7 +337,13 @@ SC_MODULE(PerspectiveTop) {
     guarded([&] { run->interp_edge(cycle, link.read(), samples.next()); });
   }
   void gradient_step() {
-    guarded([&] { run->gradient_edge(cycle, samples.read()); });
+    guarded([&] { run->gradient_edge(cycle, samples.read(), gradients.next()); });
+  }
+  void shade_step() {
+    guarded([&] { run->shade_edge(gradients.read(), shaded.next()); });
+  }
+  void composite_step() {
+    guarded([&] { run->composite_edge(cycle, shaded.read()); });
   }
 
  private:
@@ -323,15 +365,19 @@ uint64_t run_systemc(PerspectiveStream& stream) {
 sc_core::sc_module* build_perspective_top(const EdgeClock& clk) { return new PerspectiveTop("cube4_perspective", clk); }
 
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
-                                             PerspInterpIf& interp, PerspGradientIf* gradient) {
+                                             const PerspectiveUnits& units) {
   const FramePlan& plan = in.plan;
+  if ((units.shade == nullptr) != (units.composite == nullptr))
+    throw std::logic_error("run_perspective_frame: shading and compositing are clocked together or not at all");
+  if (units.composite && in.polygons)
+    throw std::logic_error("run_perspective_frame: the clocked perspective compositor draws no polygons");
   RaySamples samples(plan, in.vol, in.frames, in.check);
   RayGradients gradients(plan, in.frames);
   PerspectiveFrameResult res;
-  PerspectiveStream stream(in, former, interp, gradient, samples, gradients, res);
+  PerspectiveStream stream(in, former, units, samples, gradients, res);
   res.cycles = in.kernel == Kernel::SystemC ? run_systemc(stream) : run_plain(stream);
   samples.check_complete();
-  if (gradient) gradients.finish(samples, in.check);
+  if (units.gradient) gradients.finish(samples, in.check);
   res.polygon_stall_cycles = stream.first_frame_stalls();
   res.beats = former.beats();
   res.samples = samples.taken();
@@ -340,15 +386,23 @@ PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, St
   if (res.mismatch && !in.check) {
     const bool interpolation = res.mismatch->unit == Unit::Interp;
     throw std::logic_error(std::string(interpolation ? "perspective interpolation (" : "perspective gradient (") +
-                           level_name(interpolation ? interp.level() : gradient->level()) +
+                           level_name(interpolation ? units.interp.level() : units.gradient->level()) +
                            "): " + res.mismatch->describe());
   }
-  // The rest of the pipeline, loosely timed, on the units' samples and gradients.
+  if (units.composite) {
+    if (res.frame_done_cycles.size() != static_cast<size_t>(in.frames))
+      throw std::logic_error("perspective compositing: " + std::to_string(res.frame_done_cycles.size()) + " of " +
+                             std::to_string(in.frames) + " frame(s) ended (" +
+                             std::to_string(units.composite->samples_per_frame()) + " samples a frame)");
+    res.plane = units.composite->plane();
+    return res;
+  }
+  // Shading and compositing loosely timed, on the units' samples and gradients.
   golden::FixedOptions opt;
   opt.accumulators = in.accumulators;
   opt.polygons = in.polygons;
   opt.given_samples = &samples;
-  if (gradient) opt.given_gradients = &gradients;
+  if (units.gradient) opt.given_gradients = &gradients;
   res.plane = golden::render_perspective(in.vol, plan.r, opt);
   return res;
 }

@@ -1,23 +1,24 @@
 // A perspective frame clocked (Cube-4 §3; docs/system.md, "Perspective
 // frames"): the stream former's voxel beats (address generation, skewed
 // memory, de-skew; the perspective stream's flush beams at the end)
-// through the perspective interpolation unit, clocked TLM or RTL, and with
-// gradients through the gradient unit (clocked TLM: the gradient ring's
-// schedule), a beat a clock with registered links in between: under the
-// SystemC kernel (a process for the former and one per unit, on the
-// machine's clock) or on a plain loop, with the same cycles, samples and
-// gradients. Every sample and gradient that leaves a unit is kept by its
-// slice and ray and checked: each ray of each slice leaves once per
-// frame, and with `check` its value equals golden's (the first difference
-// is the frame's mismatch). Shading and compositing of perspective samples
-// have no clocked models or rings yet: the units' samples and gradients go
-// through them loosely timed, golden render_perspective() given those
-// (FixedOptions::given_samples, given_gradients). With a polygon source
-// the stream waits for each pass's slab image at its first beat, as a
-// parallel frame's does (pass_gate.hpp).
+// through the perspective interpolation unit (clocked TLM or RTL), the
+// gradient unit (clocked TLM: the gradient ring's schedule; a bypass
+// without gradients), the shading unit and the compositor (clocked TLM), a
+// beat a clock with registered links in between: under the SystemC kernel
+// (a process for the former and one per unit, on the machine's clock) or
+// on a plain loop, with the same cycles, samples, gradients and pixels.
+// Every sample and gradient that leaves a unit is kept by its slice and
+// ray and checked: each ray of each slice leaves once per frame, and with
+// `check` its value equals golden's (the first difference is the frame's
+// mismatch). A frame with polygons keeps shading and compositing loosely
+// timed, golden render_perspective() given the units' samples and
+// gradients (FixedOptions::given_samples, given_gradients), since the
+// clocked compositor draws no slabs; its stream waits for each pass's
+// slab image at its first beat, as a parallel frame's does (pass_gate.hpp).
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "golden/polygon_frame.hpp"
 #include "golden/renderers.hpp"
@@ -27,6 +28,7 @@
 #include "systemc/core/stream_former.hpp"
 #include "systemc/core/system.hpp"
 #include "systemc/core/unit_if.hpp"
+#include "systemc/tlm/tlm_composite_persp.hpp"
 
 namespace cube4::sysc {
 
@@ -40,6 +42,9 @@ struct PerspectiveFrameResult {
   uint64_t samples = 0;            // samples that left the unit, all frames
   uint64_t gradients = 0;          // gradients that left the gradient unit, all frames
   uint64_t polygon_stall_cycles = 0;  // the first frame's waits for slab images
+  // With shading and compositing clocked: the cycle each frame's end left
+  // the compositor (its last pixel written), frame by frame.
+  std::vector<uint64_t> frame_done_cycles;
   std::optional<Mismatch> mismatch;
 };
 
@@ -55,9 +60,23 @@ struct PerspectiveFrameInput {
   Kernel kernel = Kernel::SystemC;
 };
 
-// `gradient`: the gradient unit behind the interpolation unit, or none
-// (the gradients then loosely timed, golden's from the unit's samples).
+// The units behind the stream former, in pipeline order. `gradient`: the
+// gradient unit, or none (gradients loosely timed, golden's from the
+// interpolation unit's samples; or, with shading clocked and no gradients
+// in the scene, a bypass). `shade` and `composite`: shading and
+// compositing clocked, or none (loosely timed after the stream: a
+// frame with polygons, whose slabs the clocked compositor does not draw).
+struct PerspectiveUnits {
+  PerspInterpIf& interp;
+  PerspGradientIf* gradient = nullptr;
+  PerspShadeIf* shade = nullptr;
+  TlmCompositePersp* composite = nullptr;
+};
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
-                                             PerspInterpIf& interp, PerspGradientIf* gradient = nullptr);
+                                             const PerspectiveUnits& units);
+inline PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
+                                                    PerspInterpIf& interp, PerspGradientIf* gradient = nullptr) {
+  return run_perspective_frame(in, former, PerspectiveUnits{interp, gradient});
+}
 
 }  // namespace cube4::sysc

@@ -27,8 +27,10 @@
 #include "systemc/tlm/tlm_frame.hpp"
 #include "systemc/tlm/tlm_gradient.hpp"
 #include "systemc/tlm/tlm_interp.hpp"
+#include "systemc/tlm/tlm_composite_persp.hpp"
 #include "systemc/tlm/tlm_gradient_persp.hpp"
 #include "systemc/tlm/tlm_interp_persp.hpp"
+#include "systemc/tlm/tlm_shade_persp.hpp"
 #include "systemc/tlm/tlm_shade.hpp"
 
 #ifdef CUBE4_HAVE_RTL
@@ -185,23 +187,37 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
   else
     interp = std::make_unique<TlmInterpPersp>(plan);
   // The gradient ring's schedule at TLM (check_perspective_levels() refuses
-  // RTL, and VolumePro's z gradient at any clocked level).
+  // RTL, and VolumePro's z gradient at any clocked level); shading and
+  // compositing clocked at TLM too, but for a frame with polygons, whose
+  // slabs only the loosely timed path draws.
   std::unique_ptr<PerspGradientIf> gradient;
   if (f.r.gradient) gradient = std::make_unique<TlmGradientPersp>(plan);
+  std::unique_ptr<TlmShadePersp> shade;
+  std::unique_ptr<TlmCompositePersp> composite;
+  if (!f.polygons) {
+    shade = std::make_unique<TlmShadePersp>(plan);
+    composite = std::make_unique<TlmCompositePersp>(plan, cfg.accumulators);
+  }
   const PerspectiveFrameResult pr =
       run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress, f.source,
                              cfg.kernel},
-                            former, *interp, gradient.get());
+                            former, PerspectiveUnits{*interp, gradient.get(), shade.get(), composite.get()});
   res.plane = pr.plane;
-  // Shading and compositing are loosely timed: the frame's cycles are the
-  // cycle model's, whose stream, interpolation and gradients the run measured.
   res.polygon_stall_cycles = pr.polygon_stall_cycles;
-  res.frame_cycles = (cfg.frames > 1 ? f.cc.latency_followed : f.cc.latency) + res.polygon_stall_cycles;
+  if (composite) {
+    // Every unit clocked: the frame's cycles are measured, to its last pixel.
+    res.frame_cycles = pr.frame_done_cycles.front();
+    if (cfg.frames > 1) res.measured_interval = pr.frame_done_cycles[1] - pr.frame_done_cycles[0];
+  } else {
+    // Shading and compositing loosely timed: the frame's cycles are the cycle
+    // model's, whose stream, interpolation and gradients the run measured.
+    res.frame_cycles = (cfg.frames > 1 ? f.cc.latency_followed : f.cc.latency) + res.polygon_stall_cycles;
+  }
   res.last_beat = {pr.last_beat_cycle, pr.last_sample_cycle, pr.last_gradient_cycle, 0};
   res.simulated_cycles = pr.cycles;
   res.voxel_reads = f.mem.reads();
   res.mismatch = pr.mismatch;
-  res.back_loosely_timed = true;
+  res.back_loosely_timed = !composite;
   res.gradient_clocked = gradient != nullptr;
 }
 

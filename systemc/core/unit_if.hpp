@@ -39,7 +39,9 @@ struct CompositeOut {
 
 using InterpIf = UnitIf<VoxelBeat, SampleBeat>;
 using PerspInterpIf = UnitIf<VoxelBeat, RaySampleBeat>;  // perspective frames' interpolation unit
-using PerspGradientIf = UnitIf<RaySampleBeat, RayGradientBeat>;  // and their gradient unit
+using PerspGradientIf = UnitIf<RaySampleBeat, RayGradientBeat>;  // and their gradient unit,
+using PerspShadeIf = UnitIf<RayGradientBeat, RayShadedBeat>;      // shading unit
+using PerspCompositeIf = UnitIf<RayShadedBeat, CompositeOut>;     // and compositing unit
 using GradientIf = UnitIf<SampleBeat, GradientBeat>;
 using ShadeIf = UnitIf<GradientBeat, ShadedBeat>;
 using CompositeIf = UnitIf<ShadedBeat, CompositeOut>;

@@ -36,4 +36,21 @@ class GradientBypass final : public GradientIf {
   int y_ = 0, j_ = 0;
 };
 
+// The same for perspective frames: each ray's sample passes on its lane
+// with a zero gradient, in the cycle it arrives.
+class PerspGradientBypass final : public PerspGradientIf {
+ public:
+  void clock(const RaySampleBeat& in, RayGradientBeat& out) override {
+    out = RayGradientBeat{};
+    out.valid = in.valid;
+    out.step = in.step;
+    out.sample = in.sample;
+    out.u = in.u;
+    out.v = in.v;
+    out.tag = in.tag;
+    out.vtag = in.vtag;
+  }
+  Level level() const override { return Level::Tlm; }
+};
+
 }  // namespace cube4::sysc

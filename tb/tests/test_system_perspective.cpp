@@ -26,7 +26,9 @@
 #include "systemc/core/system.hpp"
 #include "systemc/core/voxel_memory.hpp"
 #include "systemc/tlm/tlm_addr.hpp"
+#include "systemc/tlm/tlm_composite_persp.hpp"
 #include "systemc/tlm/tlm_gradient_persp.hpp"
+#include "systemc/tlm/tlm_shade.hpp"
 #include "systemc/tlm/tlm_interp_persp.hpp"
 #include "tb/tests/system_support.hpp"
 #include "tb/tests/test_support.hpp"
@@ -64,6 +66,30 @@ void expect_plane(const golden::BasePlane& want, const golden::BasePlane& got) {
   EXPECT_TRUE(got.rgba == want.rgba) << "the base planes differ";
 }
 
+// The cycle the interpolation unit's last sample of a stream of `frames`
+// frames leaves, by the dataflow: the stream position that forms it
+// (golden forming_position()), a beat per cycle from cycle 1, the link's
+// cycle and the ring's 4. With `gradient`, the gradient unit's last
+// gradient instead: its position (gradient_forming_position()), then the
+// next link and the unit's 3 cycles.
+uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool gradient = false) {
+  const int nx = r.dim[0], ny = r.dim[1], K = r.sample_slices();
+  const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
+  const int F = r.p.dda_frac_bits;
+  int64_t last = -1;
+  for (int k = 0; k < K; ++k) {
+    const golden::PerspectiveSlice s = golden::perspective_slice(r, k);
+    if (s.rays_x.empty() || s.rays_y.empty()) continue;
+    // The last-formed ray of a slice: the largest home row, then column.
+    const int64_t hy = golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, s.rays_y.hi - 1), F);
+    const int64_t hx = golden::home_cell(golden::ray_position(s.ray0_x, s.spacing, s.rays_x.hi - 1), F);
+    const int64_t pass = int64_t{frames - 1} * K + k;
+    last = std::max(last, gradient ? golden::gradient_forming_position(pass, hx, hy, row, ny)
+                                   : golden::forming_position(pass, hx, hy, row, ny));
+  }
+  return static_cast<uint64_t>(last / p) + 1 + 1 + 4 + (gradient ? 1 + sysc::TlmGradientPersp::kLatency : 0);
+}
+
 }  // namespace
 
 TEST(SystemPerspective, LooselyTimedTlmEqualsGoldenFromEveryFaceAtP1458) {
@@ -81,18 +107,21 @@ TEST(SystemPerspective, LooselyTimedTlmEqualsGoldenFromEveryFaceAtP1458) {
       EXPECT_EQ(res.samples, stats.samples);
       EXPECT_LT(res.samples, static_cast<uint64_t>(r.dim[0]) * r.dim[1] * r.sample_slices());
       // The cycle model's count: a perspective frame streams the volume as a
-      // parallel one does (one voxel per pipeline per cycle), with five
-      // flush beams more (the gradient ring's last slice), a cycle more in
-      // the interpolation ring and the parallel gradient ring's zero beam
-      // and alignment register fewer (measured by the clocked tests below).
+      // parallel one does (one voxel per pipeline per cycle), and ends when
+      // its last ray's pixel is written: its last gradient's cycle (the
+      // dataflow's position), the link, the shading unit and the
+      // compositor's 7, no later than the stream's last beat and the drain
+      // (measured by the clocked tests below).
       ASSERT_TRUE(r.gradient);
       golden::Registers parallel = s.host.regs;
       parallel.perspective = false;
-      const uint64_t B = static_cast<uint64_t>((r.dim[0] + p - 1) / p);
-      EXPECT_EQ(res.frame_cycles, sysc::frame_cycles(s.host.regs, p).latency);
-      EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).stream, sysc::frame_cycles(parallel, p).stream);
-      EXPECT_EQ(sysc::frame_cycles(s.host.regs, p).latency,
-                sysc::frame_cycles(parallel, p).latency + 5 * B + 1 - (B + 1));
+      const sysc::CycleCount cc = sysc::frame_cycles(s.host.regs, p);
+      const auto shade = static_cast<uint64_t>(sysc::shade_latency(r.p));
+      EXPECT_EQ(res.frame_cycles, cc.latency);
+      EXPECT_EQ(cc.stream, sysc::frame_cycles(parallel, p).stream);
+      EXPECT_EQ(cc.latency, last_sample_cycle(r, p, 1, true) + 1 + shade + 1 + sysc::TlmCompositePersp::kLatency);
+      EXPECT_LE(cc.latency, cc.stream + cc.flush + 1 + 4 + 1 + sysc::TlmGradientPersp::kLatency + 1 + shade + 1 +
+                                sysc::TlmCompositePersp::kLatency);
     }
   }
 }
@@ -159,37 +188,14 @@ bool rtl_perspective(int p) {
   return std::find(pipes.begin(), pipes.end(), p) != pipes.end();
 }
 
-// The cycle the interpolation unit's last sample of a stream of `frames`
-// frames leaves, by the dataflow: the stream position that forms it
-// (golden forming_position()), a beat per cycle from cycle 1, the link's
-// cycle and the ring's 4. With `gradient`, the gradient unit's last
-// gradient instead: its position (gradient_forming_position()), then the
-// next link and the unit's 3 cycles.
-uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool gradient = false) {
-  const int nx = r.dim[0], ny = r.dim[1], K = r.sample_slices();
-  const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
-  const int F = r.p.dda_frac_bits;
-  int64_t last = -1;
-  for (int k = 0; k < K; ++k) {
-    const golden::PerspectiveSlice s = golden::perspective_slice(r, k);
-    if (s.rays_x.empty() || s.rays_y.empty()) continue;
-    // The last-formed ray of a slice: the largest home row, then column.
-    const int64_t hy = golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, s.rays_y.hi - 1), F);
-    const int64_t hx = golden::home_cell(golden::ray_position(s.ray0_x, s.spacing, s.rays_x.hi - 1), F);
-    const int64_t pass = int64_t{frames - 1} * K + k;
-    last = std::max(last, gradient ? golden::gradient_forming_position(pass, hx, hy, row, ny)
-                                   : golden::forming_position(pass, hx, hy, row, ny));
-  }
-  return static_cast<uint64_t>(last / p) + 1 + 1 + 4 + (gradient ? 1 + sysc::TlmGradientPersp::kLatency : 0);
-}
-
 void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const golden::BasePlane& want,
                     const golden::RenderStats& stats) {
   const golden::Registers& r = s.host.regs;
   const sysc::SystemResult res = sysc::run_frame(r, s.volume, cfg);
   EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
   expect_plane(want, res.plane);
-  EXPECT_TRUE(res.back_loosely_timed);
+  // Every unit clocked: shading and compositing too (no polygons here).
+  EXPECT_FALSE(res.back_loosely_timed);
   // The weight generator runs at the interpolation unit's level.
   EXPECT_EQ(res.weight_generator, cfg.levels[static_cast<size_t>(sysc::Unit::Interp)]);
   EXPECT_EQ(res.samples, stats.samples);
@@ -206,6 +212,7 @@ void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const g
   EXPECT_EQ(res.last_beat[2], r.gradient ? last_sample_cycle(r, cfg.p, cfg.frames, true) : 0);
   EXPECT_LE(res.last_beat[2], res.last_beat[0] + 1 + 4 + 1 + sysc::TlmGradientPersp::kLatency);
   EXPECT_EQ(res.frame_cycles, cfg.frames > 1 ? cc.latency_followed : cc.latency);
+  if (cfg.frames > 1) EXPECT_EQ(res.measured_interval, cc.stream);
 }
 
 }  // namespace
@@ -269,6 +276,36 @@ TEST(SystemPerspective, ClockedFramesBackToBackWithAndWithoutGradients) {
       if (rtl) cfg.levels[static_cast<size_t>(sysc::Unit::Addr)] = sysc::Level::Rtl;
       expect_clocked(s, cfg, want, stats);
     }
+  }
+}
+
+// The clocked compositor keeps golden's accumulators (each ray's, by the
+// full-α rule the renderer keeps them by) and blends by the scene's mode:
+// a maximum intensity projection and a composited frame with the
+// accumulators asked for, both with cropping, give golden's base plane and
+// accumulators exactly.
+TEST(SystemPerspective, ClockedCompositingKeepsGoldensAccumulatorsAndBlendModes) {
+  for (const char* extra : {R"("blend": "mip")", R"("blend": "composite")"}) {
+    std::string json = scene(kEyes[5]);
+    json.insert(1, std::string(extra) + R"(, "cropping": {"x": [2, 18], "y": [0, 12], "z": [1, 11]}, )");
+    const test::Setup s = setup(json);
+    golden::FixedOptions opt;
+    opt.accumulators = true;
+    const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, opt);
+    ASSERT_FALSE(want.acc.empty());
+    SCOPED_TRACE(extra);
+    sysc::SystemConfig cfg = clocked_config(4, false);
+    cfg.accumulators = true;
+    const sysc::SystemResult res = sysc::run_frame(s.host.regs, s.volume, cfg);
+    EXPECT_FALSE(res.mismatch);
+    EXPECT_FALSE(res.back_loosely_timed);
+    expect_plane(want, res.plane);
+    ASSERT_EQ(res.plane.acc.size(), want.acc.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < want.acc.size(); ++i)
+      differ += !(res.plane.acc[i].r == want.acc[i].r && res.plane.acc[i].g == want.acc[i].g &&
+                  res.plane.acc[i].b == want.acc[i].b && res.plane.acc[i].a == want.acc[i].a);
+    EXPECT_EQ(differ, 0u);
   }
 }
 
