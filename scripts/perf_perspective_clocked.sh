@@ -1,9 +1,8 @@
 #!/usr/bin/env bash
 # What a clocked perspective frame costs to simulate: the perspective scenes
 # at --model mixed:interp (the interpolation ring verilated, its weight
-# generator too, the stream clocked; the units after it loosely timed) and
-# the same view in parallel projection at the same level (there every unit
-# after the ring is clocked TLM on the SystemC schedule), with --check; the
+# generator too; every unit after it clocked TLM on the SystemC schedule)
+# and the same view in parallel projection at the same level, with --check; the
 # median of N runs' frame time and the report's simulated cycles per wall
 # second. Writes the "perspective-clocked-speed" section of
 # docs/performance.md.
@@ -49,7 +48,7 @@ rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1])]
 runs, cores, cpu = sys.argv[2:5]
 print(f"Measured {datetime.date.today()} by `scripts/perf_perspective_clocked.sh {runs}` on {cpu} ({cores} cores): "
       f"`cube4 render --model mixed:interp --check`, the median of {runs} runs' frame time (the report's "
-      f"`wall_seconds`: the verilated models' set-up, the clocked stream, the loosely timed back and the check's "
+      f"`wall_seconds`: the verilated models' set-up, the clocked frame and the check's "
       f"golden frame; not the volume's load) and the simulated clock cycles per wall second it gives.")
 print()
 print("| scene | projection | simulated cycles | wall (s) | cycles / s | samples |")
