@@ -60,7 +60,7 @@ int simulation_threads(const SystemConfig& cfg) {
   return rtl_back && std::thread::hardware_concurrency() >= 2 ? 2 : 1;
 }
 
-void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg);
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg, bool polygons = false);
 
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
@@ -113,20 +113,26 @@ void check_polygon_levels(const SystemConfig& cfg) {
   if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl) require_rtl_polygons(cfg.p);
 }
 
-// Perspective frames run loosely timed at TLM, or clocked with the
-// perspective interpolation unit (clocked TLM or RTL) and the address
-// generation at either level; the gradient, shading and compositing units
-// have no perspective models at those levels yet, and run loosely timed
-// after the stream (systemc/core/perspective_frame.hpp).
-void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
+// Perspective frames run loosely timed at TLM, or clocked: the
+// perspective interpolation unit (clocked TLM or RTL), the address
+// generation and the shading unit at either level, the gradient and
+// compositing units at clocked TLM (no perspective RTL of theirs yet;
+// systemc/core/perspective_frame.hpp). With polygons, shading and
+// compositing run loosely timed after the stream, so not at RTL.
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg, bool polygons) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
-  for (const Unit u : {Unit::Gradient, Unit::Shade, Unit::Composite})
+  for (const Unit u : {Unit::Gradient, Unit::Composite})
     if (cfg.levels[static_cast<size_t>(u)] == Level::Rtl)
       throw std::invalid_argument(
           std::string("\"view.projection\": \"perspective\": the ") + unit_name(u) +
-          " unit has no perspective RTL yet; only the interpolation unit and the address generation run "
-          "perspective frames at RTL (--model mixed:interp or mixed:interp,addr), the rest loosely timed "
+          " unit has no perspective RTL yet; the interpolation and shading units and the address generation run "
+          "perspective frames at RTL (--model mixed:interp,shade,addr or fewer of them), the rest at clocked TLM "
           "(docs/perspective.md)");
+  if (polygons && cfg.levels[static_cast<size_t>(Unit::Shade)] == Level::Rtl)
+    throw std::invalid_argument(
+        "\"view.projection\": \"perspective\" with polygons: shading and compositing run loosely timed after the "
+        "stream (the clocked perspective compositor draws no slabs yet), so the shade unit cannot run at RTL; "
+        "leave shade out of --model mixed:... (docs/perspective.md)");
   if (r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences)
     throw std::invalid_argument(
         "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
@@ -187,15 +193,18 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
   else
     interp = std::make_unique<TlmInterpPersp>(plan);
   // The gradient ring's schedule at TLM (check_perspective_levels() refuses
-  // RTL, and VolumePro's z gradient at any clocked level); shading and
-  // compositing clocked at TLM too, but for a frame with polygons, whose
-  // slabs only the loosely timed path draws.
+  // RTL, and VolumePro's z gradient at any clocked level); shading clocked
+  // at either level and compositing at TLM, but for a frame with polygons,
+  // whose slabs only the loosely timed path draws.
   std::unique_ptr<PerspGradientIf> gradient;
   if (f.r.gradient) gradient = std::make_unique<TlmGradientPersp>(plan);
-  std::unique_ptr<TlmShadePersp> shade;
+  std::unique_ptr<PerspShadeIf> shade;
   std::unique_ptr<TlmCompositePersp> composite;
   if (!f.polygons) {
-    shade = std::make_unique<TlmShadePersp>(plan);
+    if (cfg.levels[static_cast<size_t>(Unit::Shade)] == Level::Rtl)
+      shade = make_rtl_shade_persp(plan, *f.ctx, cfg.trace, cfg.simulate_unneeded);
+    else
+      shade = std::make_unique<TlmShadePersp>(plan);
     composite = std::make_unique<TlmCompositePersp>(plan, cfg.accumulators);
   }
   const PerspectiveFrameResult pr =
@@ -313,7 +322,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     rs = &forced;
   }
   if (polygons) check_polygon_levels(cfg);
-  check_perspective_levels(r, cfg);
+  check_perspective_levels(r, cfg, polygons != nullptr);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;

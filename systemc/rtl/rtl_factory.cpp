@@ -278,6 +278,15 @@ std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext&
   return std::make_unique<RtlShade<Vsys_shade_unit>>(plan, ctx, trace, first, last);
 }
 
+std::unique_ptr<PerspShadeIf> make_rtl_shade_persp(const FramePlan& plan, VerilatedContext& ctx,
+                                                   const TraceWindow& trace, bool full) {
+  if (!rtl_available(plan.p)) unavailable(plan.p);
+  if (plan.r.p.tag_bits > 0) return std::make_unique<RtlShadePersp<Vsys_shade_tags>>(plan, ctx, trace);
+  if (!full && !plan.r.shading && !plan.r.magnitude)
+    return std::make_unique<RtlShadePersp<Vsys_shade_lean>>(plan, ctx, trace);
+  return std::make_unique<RtlShadePersp<Vsys_shade_unit>>(plan, ctx, trace);
+}
+
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx,
                                                 const TraceWindow& trace, bool full,
                                                 const golden::PolygonFrame* polygons, int frames) {

@@ -88,6 +88,9 @@ std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan& plan, VerilatedCo
 // split between two threads (RtlShade).
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace,
                                         bool full = false, int first = 0, int last = -1);
+// The same units shading a perspective frame's ray beats (RtlShadePersp).
+std::unique_ptr<PerspShadeIf> make_rtl_shade_persp(const FramePlan& plan, VerilatedContext& ctx,
+                                                   const TraceWindow& trace, bool full = false);
 // Scenes without a cut plane get the ring without cut-plane hardware
 // (HasCutPlane = 0): that logic is not simulated. A frame with polygons
 // gets the ring with polygon hardware (and cut plane), fed the frame's

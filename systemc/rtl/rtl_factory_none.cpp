@@ -40,6 +40,9 @@ std::unique_ptr<GradientIf> make_rtl_gradient(const FramePlan&, VerilatedContext
 std::unique_ptr<ShadeIf> make_rtl_shade(const FramePlan&, VerilatedContext&, const TraceWindow&, bool, int, int) {
   unavailable();
 }
+std::unique_ptr<PerspShadeIf> make_rtl_shade_persp(const FramePlan&, VerilatedContext&, const TraceWindow&, bool) {
+  unavailable();
+}
 std::unique_ptr<CompositeIf> make_rtl_composite(const FramePlan&, PixelMemory&, VerilatedContext&, const TraceWindow&,
                                                 bool, const golden::PolygonFrame*, int) {
   unavailable();

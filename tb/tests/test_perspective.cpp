@@ -333,7 +333,8 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
   // (none in a build without RTL, where the mixed models are refused).
   const bool rtl = !sysc::rtl_persp_pipes().empty();
   std::string hash;
-  for (const char* model : {"fixed", "float", "reference", "tlm --check", "mixed:interp --check", "mixed:interp,addr"}) {
+  for (const char* model : {"fixed", "float", "reference", "tlm --check", "mixed:interp --check", "mixed:interp,addr",
+                            "mixed:interp,shade --check", "mixed:shade"}) {
     const bool mixed = std::string(model).rfind("mixed", 0) == 0;
     const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("o.png") + " --report " +
                                   path("r.json"));
@@ -362,7 +363,7 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
   }
   const std::pair<const char*, const char*> refused[] = {
       {"rtl", "\"view.projection\": \"perspective\": the gradient unit has no perspective RTL yet"},
-      {"mixed:interp,shade", "\"view.projection\": \"perspective\": the shade unit has no perspective RTL yet"},
+      {"mixed:interp,composite", "\"view.projection\": \"perspective\": the composite unit has no perspective RTL yet"},
       {"splat", "\"view.projection\": \"perspective\": the splat model projects voxels in parallel only"}};
   for (const auto& [model, why] : refused) {
     const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("no.png"));

@@ -235,6 +235,28 @@ TEST(SystemPerspective, ClockedInterpolationFromEveryFaceAtP1458) {
   }
 }
 
+// The shading units at RTL (cube4_shade_unit, each lane's ray on its
+// unit's side channel) in a clocked perspective frame, behind the
+// interpolation unit at either level, from every face at p = 1, 4, 5 and
+// 8: golden's image, every sample and gradient checked, and the cycles of
+// the clocked TLM shading unit (the same latency).
+TEST(SystemPerspective, ClockedShadingAtRtlFromEveryFace) {
+  if (!CUBE4_TEST_RTL) GTEST_SKIP() << "a build without RTL";
+  for (const char* eye : kEyes) {
+    const test::Setup s = setup(scene(eye));
+    golden::RenderStats stats;
+    const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, &stats);
+    for (int p : {1, 4, 5, 8})
+      for (const bool rtl_interp : {false, true}) {
+        if (rtl_interp && !rtl_perspective(p)) continue;
+        SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p) + (rtl_interp ? ", RTL ring" : ""));
+        sysc::SystemConfig cfg = clocked_config(p, rtl_interp);
+        cfg.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
+        expect_clocked(s, cfg, want, stats);
+      }
+  }
+}
+
 // Voxel tags (bela §III) in a clocked perspective frame: two spheres with
 // their own classes, each sample's tag the nearest voxel's, through the
 // clocked TLM unit and the ring's tag variant (p = 4, in both
@@ -254,7 +276,12 @@ TEST(SystemPerspective, ClockedVoxelTags) {
   for (const bool rtl : {false, true}) {
     if (rtl && !rtl_perspective(4)) continue;
     SCOPED_TRACE(rtl ? "RTL" : "clocked TLM");
-    expect_clocked(s, clocked_config(4, rtl), want, stats);
+    sysc::SystemConfig cfg = clocked_config(4, rtl);
+    expect_clocked(s, cfg, want, stats);
+    // The shading units' tag variant (each tag's class and material).
+    if (!rtl) continue;
+    cfg.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
+    expect_clocked(s, cfg, want, stats);
   }
 }
 
@@ -576,9 +603,9 @@ TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
   rtl.p = 4;
   rtl.levels = kRtl;
   refused(rtl, s.host.regs, "the gradient unit has no perspective RTL yet");
-  sysc::SystemConfig shade = clocked_config(4, false);
-  shade.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
-  refused(shade, s.host.regs, "the shade unit has no perspective RTL yet");
+  sysc::SystemConfig composite = clocked_config(4, false);
+  composite.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
+  refused(composite, s.host.regs, "the composite unit has no perspective RTL yet");
   golden::Registers zdiff = s.host.regs;
   zdiff.gradient = true;
   zdiff.z_gradient = golden::ZGradient::VoxelDifferences;
