@@ -369,8 +369,6 @@ PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, St
   const FramePlan& plan = in.plan;
   if ((units.shade == nullptr) != (units.composite == nullptr))
     throw std::logic_error("run_perspective_frame: shading and compositing are clocked together or not at all");
-  if (units.composite && in.polygons)
-    throw std::logic_error("run_perspective_frame: the clocked perspective compositor draws no polygons");
   RaySamples samples(plan, in.vol, in.frames, in.check);
   RayGradients gradients(plan, in.frames);
   PerspectiveFrameResult res;

@@ -10,11 +10,11 @@
 // Every sample and gradient that leaves a unit is kept by its slice and
 // ray and checked: each ray of each slice leaves once per frame, and with
 // `check` its value equals golden's (the first difference is the frame's
-// mismatch). A frame with polygons keeps shading and compositing loosely
-// timed, golden render_perspective() given the units' samples and
-// gradients (FixedOptions::given_samples, given_gradients), since the
-// clocked compositor draws no slabs; its stream waits for each pass's
-// slab image at its first beat, as a parallel frame's does (pass_gate.hpp).
+// mismatch). Without a shading unit, shading and compositing run loosely
+// timed after the stream, golden render_perspective() given the units'
+// samples and gradients (FixedOptions::given_samples, given_gradients).
+// With a polygon source the stream waits for each pass's slab image at
+// its first beat, as a parallel frame's does (pass_gate.hpp).
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -64,8 +64,7 @@ struct PerspectiveFrameInput {
 // gradient unit, or none (gradients loosely timed, golden's from the
 // interpolation unit's samples; or, with shading clocked and no gradients
 // in the scene, a bypass). `shade` and `composite`: shading and
-// compositing clocked, or none (loosely timed after the stream: a
-// frame with polygons, whose slabs the clocked compositor does not draw).
+// compositing clocked, or none (loosely timed after the stream).
 struct PerspectiveUnits {
   PerspInterpIf& interp;
   PerspGradientIf* gradient = nullptr;

@@ -60,7 +60,7 @@ int simulation_threads(const SystemConfig& cfg) {
   return rtl_back && std::thread::hardware_concurrency() >= 2 ? 2 : 1;
 }
 
-void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg, bool polygons = false);
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg);
 
 void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
   if (cfg.frames < 1) throw std::invalid_argument("frames: " + std::to_string(cfg.frames) + " (at least 1)");
@@ -117,9 +117,8 @@ void check_polygon_levels(const SystemConfig& cfg) {
 // perspective interpolation unit (clocked TLM or RTL), the address
 // generation and the shading unit at either level, the gradient and
 // compositing units at clocked TLM (no perspective RTL of theirs yet;
-// systemc/core/perspective_frame.hpp). With polygons, shading and
-// compositing run loosely timed after the stream, so not at RTL.
-void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg, bool polygons) {
+// systemc/core/perspective_frame.hpp).
+void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
   for (const Unit u : {Unit::Gradient, Unit::Composite})
     if (cfg.levels[static_cast<size_t>(u)] == Level::Rtl)
@@ -128,11 +127,6 @@ void check_perspective_levels(const golden::Registers& r, const SystemConfig& cf
           " unit has no perspective RTL yet; the interpolation and shading units and the address generation run "
           "perspective frames at RTL (--model mixed:interp,shade,addr or fewer of them), the rest at clocked TLM "
           "(docs/perspective.md)");
-  if (polygons && cfg.levels[static_cast<size_t>(Unit::Shade)] == Level::Rtl)
-    throw std::invalid_argument(
-        "\"view.projection\": \"perspective\" with polygons: shading and compositing run loosely timed after the "
-        "stream (the clocked perspective compositor draws no slabs yet), so the shade unit cannot run at RTL; "
-        "leave shade out of --model mixed:... (docs/perspective.md)");
   if (r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences)
     throw std::invalid_argument(
         "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
@@ -193,40 +187,30 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
   else
     interp = std::make_unique<TlmInterpPersp>(plan);
   // The gradient ring's schedule at TLM (check_perspective_levels() refuses
-  // RTL, and VolumePro's z gradient at any clocked level); shading clocked
-  // at either level and compositing at TLM, but for a frame with polygons,
-  // whose slabs only the loosely timed path draws.
+  // RTL, and VolumePro's z gradient at any clocked level), shading at
+  // either level, compositing (and the polygons' slabs) at TLM.
   std::unique_ptr<PerspGradientIf> gradient;
   if (f.r.gradient) gradient = std::make_unique<TlmGradientPersp>(plan);
   std::unique_ptr<PerspShadeIf> shade;
-  std::unique_ptr<TlmCompositePersp> composite;
-  if (!f.polygons) {
-    if (cfg.levels[static_cast<size_t>(Unit::Shade)] == Level::Rtl)
-      shade = make_rtl_shade_persp(plan, *f.ctx, cfg.trace, cfg.simulate_unneeded);
-    else
-      shade = std::make_unique<TlmShadePersp>(plan);
-    composite = std::make_unique<TlmCompositePersp>(plan, cfg.accumulators);
-  }
+  if (cfg.levels[static_cast<size_t>(Unit::Shade)] == Level::Rtl)
+    shade = make_rtl_shade_persp(plan, *f.ctx, cfg.trace, cfg.simulate_unneeded);
+  else
+    shade = std::make_unique<TlmShadePersp>(plan);
+  const auto composite = std::make_unique<TlmCompositePersp>(plan, cfg.accumulators, f.polygons);
   const PerspectiveFrameResult pr =
       run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress, f.source,
                              cfg.kernel},
                             former, PerspectiveUnits{*interp, gradient.get(), shade.get(), composite.get()});
   res.plane = pr.plane;
   res.polygon_stall_cycles = pr.polygon_stall_cycles;
-  if (composite) {
-    // Every unit clocked: the frame's cycles are measured, to its last pixel.
-    res.frame_cycles = pr.frame_done_cycles.front();
-    if (cfg.frames > 1) res.measured_interval = pr.frame_done_cycles[1] - pr.frame_done_cycles[0];
-  } else {
-    // Shading and compositing loosely timed: the frame's cycles are the cycle
-    // model's, whose stream, interpolation and gradients the run measured.
-    res.frame_cycles = (cfg.frames > 1 ? f.cc.latency_followed : f.cc.latency) + res.polygon_stall_cycles;
-  }
+  // Every unit clocked: the frame's cycles are measured, to its last pixel.
+  res.frame_cycles = pr.frame_done_cycles.front();
+  if (cfg.frames > 1) res.measured_interval = pr.frame_done_cycles[1] - pr.frame_done_cycles[0];
   res.last_beat = {pr.last_beat_cycle, pr.last_sample_cycle, pr.last_gradient_cycle, 0};
   res.simulated_cycles = pr.cycles;
   res.voxel_reads = f.mem.reads();
   res.mismatch = pr.mismatch;
-  res.back_loosely_timed = !composite;
+  res.back_loosely_timed = false;
   res.gradient_clocked = gradient != nullptr;
 }
 
@@ -322,7 +306,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     rs = &forced;
   }
   if (polygons) check_polygon_levels(cfg);
-  check_perspective_levels(r, cfg, polygons != nullptr);
+  check_perspective_levels(r, cfg);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);
   SystemResult res;

@@ -8,9 +8,13 @@
 // (the full-α rule golden keeps them by). A frame ends with its last
 // sample, counted (golden perspective_samples()): then every ray's pixel
 // is written (golden write_rays()) and `frame_done` rises kLatency clocks
-// later, the parallel compositor's to the pixel port. Without polygons:
-// their slabs stay with the loosely timed path (systemc/core/
-// perspective_frame.hpp).
+// later, the parallel compositor's to the pixel port.
+// With a polygon frame (Cube-5 in perspective, docs/perspective.md) each
+// ray starts from its front image pixel, a sample is blended only in front
+// of the ray's Z, each sample is followed by the ray's pixel of its
+// slice's slab image (the slab's pixel (x, y) is the slice's ray of rank
+// (x, y)), and a ray leaves over its back image pixel: golden
+// render_perspective()'s order per ray.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -27,7 +31,7 @@ class TlmCompositePersp final : public PerspCompositeIf {
   static constexpr int kLatency = 7;
 
   // `accumulators`: keep each frame's accumulators in its plane (BasePlane::acc).
-  TlmCompositePersp(const FramePlan& plan, bool accumulators);
+  TlmCompositePersp(const FramePlan& plan, bool accumulators, const golden::PolygonFrame* polygons = nullptr);
   void clock(const RayShadedBeat& in, CompositeOut& out) override;
   Level level() const override { return Level::Tlm; }
 
@@ -38,10 +42,15 @@ class TlmCompositePersp final : public PerspCompositeIf {
 
  private:
   void composite(const RayShadedBeat& in, size_t lane);
+  void start_frame();
   void end_frame();
+  // Slice k's slab image, decoded (the last two slices asked for are kept).
+  const std::vector<golden::Pixel>& slab(uint32_t k);
 
   const FramePlan& plan_;
   bool accumulators_;
+  const golden::PolygonFrame* polygons_;
+  std::array<std::pair<int64_t, std::vector<golden::Pixel>>, 2> slabs_{{{-1, {}}, {-1, {}}}};
   int origin_x_, origin_y_;
   uint64_t per_frame_, composited_ = 0, frames_done_ = 0;
   std::vector<golden::RayAcc> rays_;

@@ -83,7 +83,7 @@ TEST(EmptySpace, SkippingIsExactOnSmoothFieldsWithEmptyNeighbours) {
   // A Gaussian blob: the outside is empty but not zero, so the gradients of
   // the visible shell read samples of skipped blocks; a missing or stale one
   // would change them.
-  for (const std::string& view : {R"({"rotate": [20, 30, 0]})", R"({"rotate": [-50, 200, 15]})",
+  for (const std::string view : {R"({"rotate": [20, 30, 0]})", R"({"rotate": [-50, 200, 15]})",
                                   R"({"direction": [1, 1, 1], "up": [0, 1, 0]})"})
     for (int S : {1, 3})
       expect_exact(test::setup(R"({"volume": {"synthetic": "field", "field": "gaussian", "size": [45, 38, 52]},

@@ -212,7 +212,9 @@ void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const g
   EXPECT_EQ(res.last_beat[2], r.gradient ? last_sample_cycle(r, cfg.p, cfg.frames, true) : 0);
   EXPECT_LE(res.last_beat[2], res.last_beat[0] + 1 + 4 + 1 + sysc::TlmGradientPersp::kLatency);
   EXPECT_EQ(res.frame_cycles, cfg.frames > 1 ? cc.latency_followed : cc.latency);
-  if (cfg.frames > 1) EXPECT_EQ(res.measured_interval, cc.stream);
+  if (cfg.frames > 1) {
+    EXPECT_EQ(res.measured_interval, cc.stream);
+  }
 }
 
 }  // namespace
