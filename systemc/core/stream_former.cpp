@@ -8,7 +8,10 @@ namespace cube4::sysc {
 StreamFormer::StreamFormer(const FramePlan& plan, VoxelMemory& mem, AddrIf& addr, int frames)
     : plan_(plan), mem_(mem), addr_(addr), frames_(frames) {
   at_.pass = plan_.first_pass();
-  for (int pass = plan_.first_pass(); pass < plan_.passes; ++pass) slices_.push_back(plan_.pass_voxel_slice(pass));
+  for (int pass = plan_.first_pass(); pass < plan_.passes; ++pass) {
+    slices_.push_back(plan_.pass_voxel_slice(pass));
+    tags_.push_back(plan_.pass_tag(pass));
+  }
   // The first beat reads: issue it now, so its access arrives with it.
   const Pos first = next_read(at_);
   if (first.frame < frames_) {
@@ -63,7 +66,7 @@ VoxelBeat StreamFormer::next() {
   b.wx = st.wx;
   b.wy = st.wy;
   b.wz = st.wz;
-  b.tag = plan_.pass_tag(cur.pass);
+  b.tag = tags_[static_cast<size_t>(cur.pass - plan_.first_pass())];
   // One edge of the address generator: it answers this beat's read (issued
   // at the previous edge) and takes the next beat's, if that one reads.
   at_ = following(cur);

@@ -58,7 +58,8 @@ class StreamFormer {
   int frames_;
   Pos at_;
   uint64_t beats_ = 0;
-  std::vector<int> slices_;  // of passes first_pass() .. passes - 1
+  std::vector<int> slices_;      // of passes first_pass() .. passes - 1
+  std::vector<uint64_t> tags_;  // FramePlan::pass_tag() of the same passes
 };
 
 }  // namespace cube4::sysc

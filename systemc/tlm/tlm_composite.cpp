@@ -6,7 +6,9 @@ TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels, const gol
     : plan_(plan), pixels_(pixels), polygons_(polygons), slice_(static_cast<size_t>(plan.nx) * plan.ny) {}
 
 void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
-  out = CompositeOut{};
+  // It writes pixel memory directly: its pixel ports stay idle.
+  out.pixels.valid = 0;
+  out.frame_done = false;
   if (!in.valid) return;
   for (int k = 0; k < plan_.p; ++k) {
     const int x = in.x + k;
