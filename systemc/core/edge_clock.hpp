@@ -21,14 +21,18 @@ class EdgeClock : public sc_core::sc_module {
   // sensitive to it run in the edge's evaluation phase and see every link
   // as the previous edge left it.
   const sc_core::sc_event& posedge_event() const { return posedge_; }
+  // Rising edges so far: the current one's number while its processes run.
+  uint64_t edges() const { return edges_; }
 
  private:
   void rise() {
+    ++edges_;
     posedge_.notify();
     next_trigger(period_);
   }
   sc_core::sc_time period_;
   sc_core::sc_event posedge_;
+  uint64_t edges_ = 0;
 };
 
 }  // namespace cube4::sysc

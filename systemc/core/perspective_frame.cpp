@@ -260,16 +260,17 @@ uint64_t run_plain(PerspectiveStream& stream) {
 // frame plugs its stream in; idle, the processes wait for the next frame
 // instead of waking every cycle.
 SC_MODULE(PerspectiveTop) {
-  Link<VoxelBeat> link{"voxels"};
-  Link<RaySampleBeat> samples{"samples"};
-  Link<RayGradientBeat> gradients{"gradients"};
-  Link<RayShadedBeat> shaded{"shaded"};
+  const EdgeClock& clk_;  // first: the links read its edges
+  Link<VoxelBeat> link{"voxels", clk_};
+  Link<RaySampleBeat> samples{"samples", clk_};
+  Link<RayGradientBeat> gradients{"gradients", clk_};
+  Link<RayShadedBeat> shaded{"shaded", clk_};
   PerspectiveStream* run = nullptr;
   std::exception_ptr error;
   sc_core::sc_event go;
   uint64_t cycle = 0;
 
-  PerspectiveTop(sc_core::sc_module_name name, const EdgeClock& clk) : sc_core::sc_module(name) {
+  PerspectiveTop(sc_core::sc_module_name name, const EdgeClock& clk) : sc_core::sc_module(name), clk_(clk) {
     SC_METHOD(former_step);
     sensitive << clk.posedge_event();
     dont_initialize();

@@ -185,10 +185,10 @@ bool finished(const FrameUnits& u, const BackEnd* back) { return back ? back->do
 // two threads the shading and compositing processes only watch the back.
 SC_MODULE(CycleTop) {
   EdgeClock clk{"clk", sc_core::sc_time(1, sc_core::SC_NS)};
-  Link<VoxelBeat> voxels{"voxels"};
-  Link<SampleBeat> samples{"samples"};
-  Link<GradientBeat> gradients{"gradients"};
-  Link<ShadedBeat> shaded{"shaded"};
+  Link<VoxelBeat> voxels{"voxels", clk};
+  Link<SampleBeat> samples{"samples", clk};
+  Link<GradientBeat> gradients{"gradients", clk};
+  Link<ShadedBeat> shaded{"shaded", clk};
 
   FrameUnits* u = nullptr;
   BackEnd* back = nullptr;
