@@ -37,7 +37,7 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
       {"simulated_cycles_per_wall_second",
        wall_seconds > 0 ? static_cast<double>(r.simulated_cycles ? r.simulated_cycles : r.frame_cycles) / wall_seconds
                         : 0.0},
-      {"simulation_threads", cfg.all_tlm() && !cfg.cycle_level ? 1 : sysc::simulation_threads(cfg)},
+      {"simulation_threads", r.threads},
       {"seed", cfg.seed},
       {"rtl_assertions", cfg.assertions ? "on" : "off (--no-assert)"},
       {"timing", r.back_loosely_timed && r.gradient_clocked

@@ -362,8 +362,11 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     for (int pass = plan.first_pass(); pass < plan.passes; ++pass)
       if (plan.pass_voxel_slice(pass) < plan.nz) res.voxel_reads += static_cast<uint64_t>(plan.ny) * plan.B * plan.p;
   } else {
+    // A perspective frame's units run on one thread (its stream is clocked
+    // by one schedule); a parallel frame's back may take the second.
+    const bool threaded = !r.perspective && simulation_threads(cfg) > 1;
+    res.threads = threaded ? 2 : 1;
 #ifdef CUBE4_HAVE_RTL
-    const bool threaded = simulation_threads(cfg) > 1;
     rtl::ScopedVerilatedContext ctx(cfg.seed, !cfg.trace.file.empty(), cfg.assertions);
     // The back's models' own (schedules.hpp), made before any model so that
     // both threads' models draw their random reset as one thread's would.
@@ -372,7 +375,6 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     VerilatedContext* rtl_ctx = ctx.get();
     VerilatedContext* rtl_back_ctx = back_ctx ? back_ctx->get() : rtl_ctx;
 #else
-    const bool threaded = simulation_threads(cfg) > 1;
     VerilatedContext* rtl_ctx = nullptr;  // require_rtl() refused every RTL unit
     VerilatedContext* rtl_back_ctx = nullptr;
 #endif

@@ -109,6 +109,7 @@ struct SystemResult {
   // when the gradient unit ran clocked.
   bool back_loosely_timed = false;
   bool gradient_clocked = false;  // ... and its gradient unit ran on the clock, before them
+  int threads = 1;                // simulation threads the frame ran on
 };
 
 // `polygons`: the frame's polygon images (Cube-5; golden/polygon_frame.hpp,
