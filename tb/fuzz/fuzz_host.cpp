@@ -1,12 +1,15 @@
 // The host interface as a host program drives it: a small scene programmed
 // over TLM (volume, tables, registers), then the input's register writes on
 // top, then START, the frame rendered by the machine at the loosely timed
-// TLM level (the golden renderer). Whatever the registers hold, a write or
+// TLM level (the golden renderer) or, by the first byte's second bit, by
+// one clocked beat by beat at TLM (every unit's clocked model, the
+// perspective units' too). Whatever the registers hold, a write or
 // START may be refused with an error response, a frame may render, but
 // nothing may crash, read or write outside its memory, leak or hang (a
 // parallel view's negative shear once passed START and corrupted the heap).
 //
-// Input: records of 5 bytes, {register, w0, w1, w2, w3}: the register is an
+// Input: a byte choosing the scene (bit 0) and the machine (bit 1), then
+// records of 5 bytes, {register, w0, w1, w2, w3}: the register is an
 // index into the register map's writable registers, the word written to
 // its low word (or, with the register's top bit set, to its high word).
 #include <systemc>
@@ -45,14 +48,21 @@ struct Programmed {
   golden::HostProgram host;
 };
 
+sysc::SystemConfig tlm_config(bool clocked) {
+  sysc::SystemConfig c;
+  c.levels.fill(sysc::Level::Tlm);
+  c.cycle_level = clocked;
+  c.check = clocked;  // every clocked unit's output against golden's
+  return c;
+}
+
 struct Rig {
-  sysc::SystemConfig cfg = [] {
-    sysc::SystemConfig c;
-    c.levels.fill(sysc::Level::Tlm);
-    return c;
-  }();
+  sysc::SystemConfig cfg = tlm_config(false), clocked_cfg = tlm_config(true);
   sysc::Machine machine{cfg, golden::Precision{}.voxel_bits};
+  sysc::Machine clocked_machine{clocked_cfg, golden::Precision{}.voxel_bits};
   sysc::HostInterface host{"host", sysc::HostConfig{sysc::HardwareParams{golden::Precision{}, 4, 64}}, machine};
+  sysc::HostInterface clocked_host{"clocked_host", sysc::HostConfig{sysc::HardwareParams{golden::Precision{}, 4, 64}},
+                                   clocked_machine};
   std::vector<Programmed> scenes;
   std::vector<const rm::Register*> writable;
   Rig() {
@@ -91,6 +101,8 @@ void cube4::fuzz::write_seeds(const std::string& dir) {
   // No writes (each scene as programmed), and a few single writes.
   write_seed(dir, "none0", Bytes{0});
   write_seed(dir, "none1", Bytes{1});
+  write_seed(dir, "clocked0", Bytes{2});
+  write_seed(dir, "clocked1", Bytes{3});
   for (unsigned char reg = 0; reg < 40; reg += 3)
     write_seed(dir, "one" + std::to_string(reg), Bytes{static_cast<unsigned char>(reg & 1), reg, 0xff, 0xff, 0x7f, 0x80});
 }
@@ -99,16 +111,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   Rig& r = rig();
   const Programmed& p = r.scenes[data[0] % r.scenes.size()];
+  sysc::HostInterface& host = data[0] & 2 ? r.clocked_host : r.host;
   sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-  write(r.host, rm::kCtrl, rm::kCtrlReset);
-  sysc::program_over_tlm(r.host.target(), p.host.regs, p.volume, delay);
+  write(host, rm::kCtrl, rm::kCtrlReset);
+  sysc::program_over_tlm(host.target(), p.host.regs, p.volume, delay);
   for (size_t i = 1; i + 5 <= size; i += 5) {
     const rm::Register& reg = *r.writable[(data[i] & 0x7f) % r.writable.size()];
     const bool high = (data[i] & 0x80) && reg.words == 2;
     uint32_t word = 0;
     std::memcpy(&word, data + i + 1, 4);
-    write(r.host, reg.addr + (high ? 4 : 0), word);
+    write(host, reg.addr + (high ? 4 : 0), word);
   }
-  write(r.host, rm::kCtrl, rm::kCtrlStart);
+  write(host, rm::kCtrl, rm::kCtrlStart);
   return 0;
 }
