@@ -62,6 +62,17 @@ nlohmann::json describe_system(const sysc::SystemResult& r, const sysc::SystemCo
                                                      "(the units after it loosely timed)")
                                              : std::string("passed: base plane and unit streams bit-exact")},
   };
+  if (r.parallel_frame_cycles > 0) {
+    // Cube-4 implies perspective costs no cycles (a voxel per pipeline per
+    // cycle either way): the stream is the same, the first frame's end is
+    // not (docs/perspective.md, "The dataflow").
+    j["perspective_cost"] = {
+        {"parallel_projection_cycles_per_frame", r.parallel_frame_cycles},
+        {"extra_cycles_per_frame", static_cast<int64_t>(r.frame_cycles) - static_cast<int64_t>(r.parallel_frame_cycles)},
+        {"parallel_projection_steady_state_interval", r.parallel_stream_cycles},
+        {"extra_cycles_steady_state",
+         static_cast<int64_t>(r.stream_cycles) - static_cast<int64_t>(r.parallel_stream_cycles)}};
+  }
   if (!r.polygon_connection.empty()) {
     j["polygon_connection"] = r.polygon_connection;
     j["polygon_wait_cycles"] = r.polygon_stall_cycles;

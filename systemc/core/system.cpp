@@ -343,6 +343,15 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
   not_needed(r.window_enabled, Unit::Composite, "block-window logic (a partitioned volume's)");
   const CycleCount cc = frame_cycles(*rs, cfg.p);
   res.stream_cycles = cc.stream;
+  if (r.perspective) {
+    // What the same volume costs in parallel projection, for the report's
+    // answer to whether perspective costs cycles (docs/perspective.md).
+    golden::Registers parallel = *rs;
+    parallel.perspective = false;
+    const CycleCount pc = frame_cycles(parallel, cfg.p);
+    res.parallel_frame_cycles = pc.latency;
+    res.parallel_stream_cycles = pc.stream;
+  }
   res.samples = r.perspective ? golden::perspective_samples(r) : static_cast<uint64_t>(plan.nx) * plan.ny * plan.K;
 
   std::unique_ptr<StreamChecker> checker;

@@ -110,6 +110,9 @@ struct SystemResult {
   bool back_loosely_timed = false;
   bool gradient_clocked = false;  // ... and its gradient unit ran on the clock, before them
   int threads = 1;                // simulation threads the frame ran on
+  // A perspective frame: the cycle model's first-frame latency and
+  // steady-state interval of the same volume in parallel projection.
+  uint64_t parallel_frame_cycles = 0, parallel_stream_cycles = 0;
 };
 
 // `polygons`: the frame's polygon images (Cube-5; golden/polygon_frame.hpp,

@@ -355,6 +355,18 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
     EXPECT_EQ(flow["samples"], reach.samples) << model;
     EXPECT_EQ(flow["x"]["box"], nlohmann::json::array({-1, 2})) << model;
     EXPECT_EQ(flow["compositor_reach_needed"], golden::largest_home_move(reach)) << model;
+    // The system levels say what perspective costs in cycles: nothing in
+    // the steady state (a voxel per pipeline per cycle either way).
+    const bool system = std::string(model).rfind("tlm", 0) == 0 || mixed;
+    EXPECT_EQ(report.contains("system"), system) << model;
+    if (system) {
+      const nlohmann::json& cost = report["system"]["perspective_cost"];
+      EXPECT_EQ(cost["extra_cycles_steady_state"], 0) << model;
+      EXPECT_EQ(cost["extra_cycles_per_frame"].get<int64_t>(),
+                report["system"]["cycles_per_frame"].get<int64_t>() -
+                    cost["parallel_projection_cycles_per_frame"].get<int64_t>())
+          << model;
+    }
     // Every fixed-point level draws the golden base plane, bit for bit.
     if (std::string(model) == "float" || std::string(model) == "reference") continue;
     const std::string h = report["baseplane_hash_fnv1a64"].get<std::string>();

@@ -119,6 +119,9 @@ TEST(SystemPerspective, LooselyTimedTlmEqualsGoldenFromEveryFaceAtP1458) {
       const auto shade = static_cast<uint64_t>(sysc::shade_latency(r.p));
       EXPECT_EQ(res.frame_cycles, cc.latency);
       EXPECT_EQ(cc.stream, sysc::frame_cycles(parallel, p).stream);
+      // The result says what the same volume costs in parallel projection.
+      EXPECT_EQ(res.parallel_frame_cycles, sysc::frame_cycles(parallel, p).latency);
+      EXPECT_EQ(res.parallel_stream_cycles, res.stream_cycles);
       EXPECT_EQ(cc.latency, last_sample_cycle(r, p, 1, true) + 1 + shade + 1 + sysc::TlmCompositePersp::kLatency);
       EXPECT_LE(cc.latency, cc.stream + cc.flush + 1 + 4 + 1 + sysc::TlmGradientPersp::kLatency + 1 + shade + 1 +
                                 sysc::TlmCompositePersp::kLatency);
