@@ -115,7 +115,7 @@ TEST(GradientPersp, EveryRaysGradientIsGoldensAtItsPlannedPositionFromEveryFace)
     const golden::Registers& r = s.host.regs;
     ASSERT_TRUE(r.perspective);
     const GoldenSlices want(r, s.volume);
-    for (int p : {1, 4, 5, 8}) {
+    for (int p : {1, 4, 5, 8, 16}) {
       SCOPED_TRACE(json + ", p = " + std::to_string(p));
       const sysc::FramePlan plan(r, p);
       sysc::VoxelMemory mem(s.volume, p);
