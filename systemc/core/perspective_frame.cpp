@@ -12,6 +12,7 @@
 #include "systemc/core/clocked_tops.hpp"
 #include "systemc/core/edge_clock.hpp"
 #include "systemc/core/link.hpp"
+#include "systemc/core/frame_rays.hpp"
 #include "systemc/core/pass_gate.hpp"
 #include "systemc/core/ray_gradients.hpp"
 #include "systemc/tlm/gradient_bypass.hpp"
@@ -24,21 +25,17 @@ namespace {
 // The unit's samples of a frame by slice and ray, as the renderer asks for
 // them; with the count of each ray's arrivals (one per frame streamed).
 // Which rays sample a slice, and what they should sample, is golden's
-// (perspective_slice()), whatever weight generator the unit ran with.
+// (FrameRays), whatever weight generator the unit ran with.
 class RaySamples final : public golden::PerspectiveSamples {
  public:
-  RaySamples(const FramePlan& plan, const golden::Volume& vol, int frames, bool check)
-      : plan_(plan), pv_(vol, plan.r.perm, plan.r.flip), frames_(frames), check_(check),
-        slices_(static_cast<size_t>(plan.K)) {
-    for (int k = 0; k < plan.K; ++k) {
-      const golden::PerspectiveSlice& s = golden_.emplace_back(golden::perspective_slice(plan.r, k));
+  RaySamples(const FramePlan& plan, const FrameRays& rays, const golden::Volume& vol, int frames, bool check)
+      : plan_(plan), rays_(rays), pv_(vol, plan.r.perm, plan.r.flip), frames_(frames), check_(check),
+        slices_(static_cast<size_t>(rays.slices())) {
+    for (int k = 0; k < rays.slices(); ++k) {
       Slice& out = slices_[static_cast<size_t>(k)];
-      out.width = s.rays_x.empty() ? 0 : s.rays_x.hi - s.rays_x.lo;
-      const int64_t height = s.rays_y.empty() ? 0 : s.rays_y.hi - s.rays_y.lo;
-      const auto n = static_cast<size_t>(out.width * height);
-      out.value.assign(n, 0);
-      out.vtag.assign(n, 0);
-      out.count.assign(n, 0);
+      out.value.assign(rays.count(k), 0);
+      out.vtag.assign(rays.count(k), 0);
+      out.count.assign(rays.count(k), 0);
     }
   }
 
@@ -46,41 +43,39 @@ class RaySamples final : public golden::PerspectiveSamples {
   uint32_t vtag(int k, int64_t u, int64_t v) const override { return at(k, u, v, &Slice::vtag); }
 
   // One sample that left the unit on some lane.
-  void take(uint32_t k, int64_t u, int64_t v, uint32_t value, uint32_t vtag) {
+  void take(uint32_t slice, int64_t u, int64_t v, uint32_t value, uint32_t vtag) {
     ++taken_;
-    if (k >= static_cast<uint32_t>(plan_.K) || !golden::samples(slice(k), u, v)) {
-      fail(static_cast<int>(k), u, v, "no sample (the ray does not sample the slice)", describe(value, vtag));
+    const auto k = static_cast<int>(slice);
+    if (!rays_.samples(k, u, v)) {
+      fail(k, u, v, "no sample (the ray does not sample the slice)", describe(value, vtag));
       return;
     }
-    Slice& s = slices_[k];
-    const size_t i = index(k, u, v);
+    Slice& s = slices_[slice];
+    const size_t i = rays_.index(k, u, v);
     if (++s.count[i] > frames_) {
-      fail(static_cast<int>(k), u, v, "the ray's sample " + std::to_string(frames_) + " time(s) a stream",
+      fail(k, u, v, "the ray's sample " + std::to_string(frames_) + " time(s) a stream",
            "one more: " + describe(value, vtag));
       return;
     }
     if (s.count[i] > 1 && (s.value[i] != value || s.vtag[i] != vtag)) {
-      fail(static_cast<int>(k), u, v, describe(s.value[i], s.vtag[i]) + " (the frame before's)", describe(value, vtag));
+      fail(k, u, v, describe(s.value[i], s.vtag[i]) + " (the frame before's)", describe(value, vtag));
       return;
     }
     s.value[i] = static_cast<uint16_t>(value);
     s.vtag[i] = static_cast<uint8_t>(vtag);
     if (check_) {
       const uint32_t want = expected(k, u, v), want_tag = expected_tag(k, u, v);
-      if (want != value || want_tag != vtag) fail(static_cast<int>(k), u, v, describe(want, want_tag), describe(value, vtag));
+      if (want != value || want_tag != vtag) fail(k, u, v, describe(want, want_tag), describe(value, vtag));
     }
   }
 
   // After the stream: the first ray that did not leave `frames` times.
   void check_complete() {
-    for (int k = 0; k < plan_.K && !first_; ++k) {
-      const golden::PerspectiveSlice& s = slice(static_cast<uint32_t>(k));
+    for (int k = 0; k < rays_.slices() && !first_; ++k) {
       const Slice& got = slices_[static_cast<size_t>(k)];
       for (size_t i = 0; i < got.count.size(); ++i)
         if (got.count[i] != frames_) {
-          const int64_t u = s.rays_x.lo + static_cast<int64_t>(i) % got.width;
-          const int64_t v = s.rays_y.lo + static_cast<int64_t>(i) / got.width;
-          fail(k, u, v, "the ray's sample " + std::to_string(frames_) + " time(s)",
+          fail(k, rays_.u_of(k, i), rays_.v_of(k, i), "the ray's sample " + std::to_string(frames_) + " time(s)",
                std::to_string(got.count[i]) + " time(s)");
           return;
         }
@@ -92,28 +87,22 @@ class RaySamples final : public golden::PerspectiveSamples {
 
  private:
   struct Slice {
-    int64_t width = 0;
     std::vector<uint16_t> value;
     std::vector<uint8_t> vtag;
     std::vector<int> count;
   };
-  const golden::PerspectiveSlice& slice(uint32_t k) const { return golden_[k]; }
-  size_t index(uint32_t k, int64_t u, int64_t v) const {
-    const golden::PerspectiveSlice& s = slice(k);
-    return static_cast<size_t>((v - s.rays_y.lo) * slices_[k].width + (u - s.rays_x.lo));
-  }
   template <class T>
   uint32_t at(int k, int64_t u, int64_t v, std::vector<T> Slice::*field) const {
-    return (slices_[static_cast<size_t>(k)].*field)[index(static_cast<uint32_t>(k), u, v)];
+    return (slices_[static_cast<size_t>(k)].*field)[rays_.index(k, u, v)];
   }
-  uint32_t expected(uint32_t k, int64_t u, int64_t v) const {
-    const golden::PerspectiveSlice& s = slice(k);
+  uint32_t expected(int k, int64_t u, int64_t v) const {
+    const golden::PerspectiveSlice& s = rays_.slice(k);
     return golden::perspective_sample(plan_.r, s, u, v,
                                       [&](int x, int y, int dz) { return pv_.at(x, y, s.z_voxel + dz); });
   }
-  uint32_t expected_tag(uint32_t k, int64_t u, int64_t v) const {
+  uint32_t expected_tag(int k, int64_t u, int64_t v) const {
     if (plan_.r.p.tag_bits == 0) return 0;
-    const golden::PerspectiveSlice& s = slice(k);
+    const golden::PerspectiveSlice& s = rays_.slice(k);
     const golden::TagVoxel t = golden::perspective_tag_voxel(plan_.r, s, u, v);
     return pv_.tag_at(t.x, t.y, s.z_voxel + t.dz);
   }
@@ -121,19 +110,11 @@ class RaySamples final : public golden::PerspectiveSamples {
     return std::to_string(value) + (plan_.r.p.tag_bits > 0 ? " (voxel tag " + std::to_string(vtag) + ")" : "");
   }
   void fail(int k, int64_t u, int64_t v, const std::string& expected, const std::string& got) {
-    if (first_) return;
-    Mismatch m;
-    m.unit = Unit::Interp;
-    m.slice = k;
-    m.x = static_cast<int>(u);
-    m.y = static_cast<int>(v);
-    m.expected = expected;
-    m.got = got;
-    first_ = m;
+    if (!first_) first_ = Mismatch{Unit::Interp, k, static_cast<int>(u), static_cast<int>(v), expected, got};
   }
 
   const FramePlan& plan_;
-  std::vector<golden::PerspectiveSlice> golden_;
+  const FrameRays& rays_;
   golden::PermutedVolume pv_;
   int frames_;
   bool check_;
@@ -370,8 +351,9 @@ PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, St
   const FramePlan& plan = in.plan;
   if ((units.shade == nullptr) != (units.composite == nullptr))
     throw std::logic_error("run_perspective_frame: shading and compositing are clocked together or not at all");
-  RaySamples samples(plan, in.vol, in.frames, in.check);
-  RayGradients gradients(plan, in.frames);
+  const FrameRays rays(plan.r);
+  RaySamples samples(plan, rays, in.vol, in.frames, in.check);
+  RayGradients gradients(plan, rays, in.frames);
   PerspectiveFrameResult res;
   PerspectiveStream stream(in, former, units, samples, gradients, res);
   res.cycles = in.kernel == Kernel::SystemC ? run_systemc(stream) : run_plain(stream);

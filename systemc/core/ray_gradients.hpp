@@ -4,7 +4,8 @@
 // the same each frame. After the stream, with `check`, each is compared
 // with golden perspective_gradient() of the samples the interpolation unit
 // gave (which the frame checks against golden's), so that a mismatch here
-// is the gradient unit's own.
+// is the gradient unit's own. Which rays sample a slice is golden's
+// (FrameRays), whatever weight generator the units ran with.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -14,13 +15,14 @@
 #include "golden/perspective.hpp"
 #include "golden/renderers.hpp"
 #include "systemc/core/frame_plan.hpp"
+#include "systemc/core/frame_rays.hpp"
 #include "systemc/core/system.hpp"
 
 namespace cube4::sysc {
 
 class RayGradients final : public golden::PerspectiveGradients {
  public:
-  RayGradients(const FramePlan& plan, int frames);
+  RayGradients(const FramePlan& plan, const FrameRays& rays, int frames);
 
   golden::Gradient gradient(int k, int64_t u, int64_t v) const override;
 
@@ -35,14 +37,13 @@ class RayGradients final : public golden::PerspectiveGradients {
 
  private:
   struct Slice {
-    int64_t width = 0;
     std::vector<int16_t> gx, gy, gz;
     std::vector<int> count;
   };
-  size_t index(uint32_t k, int64_t u, int64_t v) const;
   void fail(int k, int64_t u, int64_t v, const std::string& expected, const std::string& got);
 
   const FramePlan& plan_;
+  const FrameRays& rays_;
   int frames_;
   std::vector<Slice> slices_;
   uint64_t taken_ = 0;
