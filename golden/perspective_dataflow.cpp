@@ -55,6 +55,29 @@ PerspectiveReach perspective_reach(const Registers& r) {
   return out;
 }
 
+GradientRows gradient_rows(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
+                           const PerspectiveSlice* ahead, int64_t Y) {
+  const int F = r.p.dda_frac_bits, W = r.p.weight_bits;
+  GradientRows out;
+  const HomeLane h = home_lane(s.ray0_y, s.spacing, s.rays_y, Y, F, W);
+  if (!h.valid) return out;
+  out.valid = true;
+  out.v = h.ray;
+  auto row = [&](const PerspectiveSlice& on, int64_t v) {
+    return v >= on.rays_y.lo && v < on.rays_y.hi ? home_cell(ray_position(on.ray0_y, on.spacing, v), F) : kNoRow;
+  };
+  out.up = row(s, h.ray - 1);
+  out.down = row(s, h.ray + 1);
+  auto realigned = [&](const PerspectiveSlice* there, const RealignDda& d, std::array<int64_t, 2>& rows) {
+    if (!there) return;
+    const int64_t q = realigned_ray(d, h.ray, F, W).ray;
+    rows = {row(*there, q), row(*there, q + 1)};
+  };
+  realigned(behind, s.behind_y, out.behind);
+  realigned(ahead, s.ahead_y, out.ahead);
+  return out;
+}
+
 uint64_t perspective_samples(const Registers& r) {
   uint64_t n = 0;
   for (int k = 0; k < r.sample_slices(); ++k) {

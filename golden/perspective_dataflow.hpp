@@ -6,8 +6,10 @@
 // position lies in, so that every unit keeps the parallel units' near-
 // neighbour links and a pass keeps its ny beams.
 #pragma once
+#include <array>
 #include <cstdint>
 
+#include "golden/perspective.hpp"
 #include "golden/registers.hpp"
 #include "golden/units/dda.hpp"
 #include "golden/units/dda_perspective.hpp"
@@ -101,6 +103,22 @@ inline FormedCell gradient_cell(int64_t position, int64_t row, int nx, int ny) {
 constexpr int64_t gradient_forming_position(int64_t pass, int64_t x, int64_t y, int64_t row, int ny) {
   return ((pass + 1) * ny + y + kGradientAfterBeams) * row + x + kGradientAfterColumns;
 }
+
+// The rows of slices k - 1, k and k + 1 that the gradients of one beam read
+// (docs/perspective.md, "The plan for the ring's RTL"): a ray's home row
+// depends on v alone and its realigned rows py, py + 1 on v alone, so every
+// gradient of slice k whose home row is Y reads the same rows. kNoRow: no
+// such ray samples that slice (the operand reads zero; nothing is stored).
+constexpr int64_t kNoRow = INT64_MIN;
+struct GradientRows {
+  bool valid = false;  // a ray of slice k has its home row at Y
+  int64_t v = 0;       // that ray
+  int64_t up = kNoRow, down = kNoRow;  // home rows of rays v - 1 and v + 1 on slice k
+  std::array<int64_t, 2> behind{kNoRow, kNoRow}, ahead{kNoRow, kNoRow};  // of rays py, py + 1 on slices k -/+ 1
+};
+// `behind` and `ahead`: slices k - 1 and k + 1, or null at the frame's ends.
+GradientRows gradient_rows(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
+                           const PerspectiveSlice* ahead, int64_t Y);
 
 // The range of cell offsets, relative to the sample's own home, at which
 // one kind of operand lies over a frame, along one axis. An empty range

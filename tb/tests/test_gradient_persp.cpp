@@ -8,6 +8,7 @@
 // claim that every operand is formed at or before that position.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <stdexcept>
@@ -217,6 +218,63 @@ TEST(GradientPersp, EveryOperandIsFormedByItsGradientsPositionInRandomViews) {
       }
     }
   }
+  EXPECT_GT(operands, 100000);
+}
+
+// The plan for the ring's RTL (docs/perspective.md): over the same random
+// views, every operand of every gradient lies in a row gradient_rows()
+// names for its beam (left, right and centre in the beam's own row, up
+// and down in the rows of rays v -/+ 1, the 2x2s in the rows of py, py + 1),
+// and is stored on a lane (its home column + 2) among the forming lane
+// (home + 5) and the six to its left.
+TEST(GradientPersp, EachBeamReadsOneSetOfRowsAndEachGradientASevenColumnWindow) {
+  int64_t operands = 0, violations = 0;
+  std::string first;
+  for (int view = 0; view < 40; ++view) {
+    const test::Setup setup = test::setup(random_view(view));
+    const golden::Registers& r = setup.host.regs;
+    const int K = r.sample_slices(), F = r.p.dda_frac_bits, W = r.p.weight_bits;
+    std::vector<golden::PerspectiveSlice> slices;
+    for (int k = 0; k < K; ++k) slices.push_back(golden::perspective_slice(r, k));
+    auto at = [&](int k) { return k >= 0 && k < K ? &slices[static_cast<size_t>(k)] : nullptr; };
+    for (int k = 0; k < K; ++k) {
+      const golden::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
+      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+          const auto [X, Y] = home(r, s, u, v);
+          const golden::GradientRows rows = golden::gradient_rows(r, s, at(k - 1), at(k + 1), Y);
+          ASSERT_TRUE(rows.valid);
+          ASSERT_EQ(rows.v, v);
+          // An operand of slice `on` at ray (a, b): in a row the beam reads
+          // and within the window; rays that miss the slice read zero.
+          auto operand = [&](const golden::PerspectiveSlice* on, int64_t a, int64_t b, std::vector<int64_t> beam_rows) {
+            if (!on || !golden::samples(*on, a, b)) return;
+            ++operands;
+            const auto [x, y] = home(r, *on, a, b);
+            if (std::find(beam_rows.begin(), beam_rows.end(), y) != beam_rows.end() && x + 2 >= X + 5 - 6 &&
+                x + 2 <= X + 5)
+              return;
+            if (violations++ == 0)
+              first = "view " + std::to_string(view) + ", slice " + std::to_string(k) + ", ray (" + std::to_string(u) +
+                      ", " + std::to_string(v) + "): operand ray (" + std::to_string(a) + ", " + std::to_string(b) +
+                      ") at home (" + std::to_string(x) + ", " + std::to_string(y) + "), the gradient's home (" +
+                      std::to_string(X) + ", " + std::to_string(Y) + ")";
+          };
+          operand(&s, u - 1, v, {Y});
+          operand(&s, u + 1, v, {Y});
+          operand(&s, u, v - 1, {rows.up});
+          operand(&s, u, v + 1, {rows.down});
+          for (const auto& [on, dx, dy, beam] :
+               {std::make_tuple(at(k - 1), s.behind_x, s.behind_y, rows.behind),
+                std::make_tuple(at(k + 1), s.ahead_x, s.ahead_y, rows.ahead)}) {
+            const int64_t px = golden::realigned_ray(dx, u, F, W).ray, py = golden::realigned_ray(dy, v, F, W).ray;
+            for (int64_t a : {px, px + 1})
+              for (int64_t b : {py, py + 1}) operand(on, a, b, {beam[0], beam[1]});
+          }
+        }
+    }
+  }
+  EXPECT_EQ(violations, 0) << "first: " << first;
   EXPECT_GT(operands, 100000);
 }
 
