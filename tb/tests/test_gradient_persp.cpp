@@ -241,7 +241,8 @@ TEST(GradientPersp, EachBeamReadsOneSetOfRowsAndEachGradientASevenColumnWindow) 
       const golden::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
       for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
         for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
-          const auto [X, Y] = home(r, s, u, v);
+          const std::pair<int64_t, int64_t> cell = home(r, s, u, v);
+          const int64_t X = cell.first, Y = cell.second;
           const golden::GradientRows rows = golden::gradient_rows(r, s, at(k - 1), at(k + 1), Y);
           ASSERT_TRUE(rows.valid);
           ASSERT_EQ(rows.v, v);
