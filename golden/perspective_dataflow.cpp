@@ -78,6 +78,28 @@ GradientRows gradient_rows(const Registers& r, const PerspectiveSlice& s, const 
   return out;
 }
 
+GradientWindow gradient_window(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
+                               const PerspectiveSlice* ahead, int64_t u) {
+  const int F = r.p.dda_frac_bits, W = r.p.weight_bits;
+  const int64_t forming = home_cell(ray_position(s.ray0_x, s.spacing, u), F) + kGradientAfterColumns;
+  // The lane back from the forming one that stores ray a of slice `on`.
+  auto lane = [&](const PerspectiveSlice& on, int64_t a) {
+    if (a < on.rays_x.lo || a >= on.rays_x.hi) return -1;
+    return static_cast<int>(forming - (home_cell(ray_position(on.ray0_x, on.spacing, a), F) + kFormedAfterColumns));
+  };
+  GradientWindow out;
+  out.left = lane(s, u - 1);
+  out.right = lane(s, u + 1);
+  auto realigned = [&](const PerspectiveSlice* there, const RealignDda& d, std::array<int, 2>& lanes) {
+    if (!there) return;
+    const int64_t q = realigned_ray(d, u, F, W).ray;
+    lanes = {lane(*there, q), lane(*there, q + 1)};
+  };
+  realigned(behind, s.behind_x, out.behind);
+  realigned(ahead, s.ahead_x, out.ahead);
+  return out;
+}
+
 uint64_t perspective_samples(const Registers& r) {
   uint64_t n = 0;
   for (int k = 0; k < r.sample_slices(); ++k) {

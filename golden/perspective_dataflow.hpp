@@ -120,6 +120,20 @@ struct GradientRows {
 GradientRows gradient_rows(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
                            const PerspectiveSlice* ahead, int64_t Y);
 
+// Where the gradient of ray u of slice s finds its operands in the ring's
+// window (docs/perspective.md, "The plan for the ring's RTL"): the lane of
+// each operand's stored sample (its home column + 2), counted back from the
+// lane that forms the gradient (the ray's home column + 5), so 0 .. 6 (the
+// window's own packet and the six to its left); -1 where the operand's ray
+// misses its slice (it reads zero). left, right: rays u -/+ 1 of slice s;
+// behind, ahead: rays px, px + 1 of slices k -/+ 1 (null at the frame's ends).
+struct GradientWindow {
+  int left = -1, right = -1;
+  std::array<int, 2> behind{-1, -1}, ahead{-1, -1};
+};
+GradientWindow gradient_window(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
+                               const PerspectiveSlice* ahead, int64_t u);
+
 // The range of cell offsets, relative to the sample's own home, at which
 // one kind of operand lies over a frame, along one axis. An empty range
 // (lo > hi) means the frame has no such operand.

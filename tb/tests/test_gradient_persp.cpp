@@ -226,7 +226,7 @@ TEST(GradientPersp, EveryOperandIsFormedByItsGradientsPositionInRandomViews) {
 // names for its beam (left, right and centre in the beam's own row, up
 // and down in the rows of rays v -/+ 1, the 2x2s in the rows of py, py + 1),
 // and is stored on a lane (its home column + 2) among the forming lane
-// (home + 5) and the six to its left.
+// (home + 5) and the six to its left, the one gradient_window() names.
 TEST(GradientPersp, EachBeamReadsOneSetOfRowsAndEachGradientASevenColumnWindow) {
   int64_t operands = 0, violations = 0;
   std::string first;
@@ -244,16 +244,19 @@ TEST(GradientPersp, EachBeamReadsOneSetOfRowsAndEachGradientASevenColumnWindow) 
           const std::pair<int64_t, int64_t> cell = home(r, s, u, v);
           const int64_t X = cell.first, Y = cell.second;
           const golden::GradientRows rows = golden::gradient_rows(r, s, at(k - 1), at(k + 1), Y);
+          const golden::GradientWindow window = golden::gradient_window(r, s, at(k - 1), at(k + 1), u);
           ASSERT_TRUE(rows.valid);
           ASSERT_EQ(rows.v, v);
           // An operand of slice `on` at ray (a, b): in a row the beam reads
           // and within the window; rays that miss the slice read zero.
-          auto operand = [&](const golden::PerspectiveSlice* on, int64_t a, int64_t b, std::vector<int64_t> beam_rows) {
+          auto operand = [&](const golden::PerspectiveSlice* on, int64_t a, int64_t b, std::vector<int64_t> beam_rows,
+                             int window_lane) {
             if (!on || !golden::samples(*on, a, b)) return;
             ++operands;
             const auto [x, y] = home(r, *on, a, b);
-            if (std::find(beam_rows.begin(), beam_rows.end(), y) != beam_rows.end() && x + 2 >= X + 5 - 6 &&
-                x + 2 <= X + 5)
+            const int64_t back = X + 5 - (x + 2);
+            if (std::find(beam_rows.begin(), beam_rows.end(), y) != beam_rows.end() && back >= 0 && back <= 6 &&
+                back == window_lane)
               return;
             if (violations++ == 0)
               first = "view " + std::to_string(view) + ", slice " + std::to_string(k) + ", ray (" + std::to_string(u) +
@@ -261,16 +264,16 @@ TEST(GradientPersp, EachBeamReadsOneSetOfRowsAndEachGradientASevenColumnWindow) 
                       ") at home (" + std::to_string(x) + ", " + std::to_string(y) + "), the gradient's home (" +
                       std::to_string(X) + ", " + std::to_string(Y) + ")";
           };
-          operand(&s, u - 1, v, {Y});
-          operand(&s, u + 1, v, {Y});
-          operand(&s, u, v - 1, {rows.up});
-          operand(&s, u, v + 1, {rows.down});
-          for (const auto& [on, dx, dy, beam] :
-               {std::make_tuple(at(k - 1), s.behind_x, s.behind_y, rows.behind),
-                std::make_tuple(at(k + 1), s.ahead_x, s.ahead_y, rows.ahead)}) {
+          operand(&s, u - 1, v, {Y}, window.left);
+          operand(&s, u + 1, v, {Y}, window.right);
+          operand(&s, u, v - 1, {rows.up}, 3);  // the ray's own column: stored 3 lanes back
+          operand(&s, u, v + 1, {rows.down}, 3);
+          for (const auto& [on, dx, dy, beam, lanes] :
+               {std::make_tuple(at(k - 1), s.behind_x, s.behind_y, rows.behind, window.behind),
+                std::make_tuple(at(k + 1), s.ahead_x, s.ahead_y, rows.ahead, window.ahead)}) {
             const int64_t px = golden::realigned_ray(dx, u, F, W).ray, py = golden::realigned_ray(dy, v, F, W).ray;
-            for (int64_t a : {px, px + 1})
-              for (int64_t b : {py, py + 1}) operand(on, a, b, {beam[0], beam[1]});
+            for (int i = 0; i < 2; ++i)
+              for (int64_t b : {py, py + 1}) operand(on, px + i, b, {beam[0], beam[1]}, lanes[static_cast<size_t>(i)]);
           }
         }
     }
