@@ -3,41 +3,62 @@
 #include "golden/perspective.hpp"
 
 namespace cube4::golden {
+
+OperandHomes gradient_operand_homes(const AxisSlice& here, const AxisSlice* behind, const RealignDda& to_behind,
+                                    const AxisSlice* ahead, const RealignDda& to_ahead, int64_t u, int frac_bits,
+                                    int weight_bits) {
+  auto home = [&](const AxisSlice& on, int64_t a) {
+    return a >= on.rays.lo && a < on.rays.hi ? home_cell(ray_position(on.ray0, on.spacing, a), frac_bits) : kNoRow;
+  };
+  OperandHomes out;
+  out.home = home(here, u);
+  out.side = {home(here, u - 1), home(here, u + 1)};
+  auto realigned = [&](const AxisSlice* there, const RealignDda& d, std::array<int64_t, 2>& homes, uint32_t& weight) {
+    if (!there) return;
+    const RayPoint q = realigned_ray(d, u, frac_bits, weight_bits);
+    homes = {home(*there, q.ray), home(*there, q.ray + 1)};
+    weight = q.weight;
+  };
+  realigned(behind, to_behind, out.behind, out.behind_weight);
+  realigned(ahead, to_ahead, out.ahead, out.ahead_weight);
+  return out;
+}
+
 namespace {
+// gradient_operand_homes() of ray u of slice s along `axis`.
+OperandHomes operand_homes(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
+                           const PerspectiveSlice* ahead, int axis, int64_t u) {
+  const AxisSlice b = behind ? axis_slice(*behind, axis) : AxisSlice{}, a = ahead ? axis_slice(*ahead, axis) : AxisSlice{};
+  return gradient_operand_homes(axis_slice(s, axis), behind ? &b : nullptr, axis == 0 ? s.behind_x : s.behind_y,
+                                ahead ? &a : nullptr, axis == 0 ? s.ahead_x : s.ahead_y, u, r.p.dda_frac_bits,
+                                r.p.weight_bits);
+}
 
-// One axis's fields of a PerspectiveSlice.
-struct AxisFields {
-  int64_t ray0;
-  RayRange rays;
-  RealignDda behind, ahead;
-};
-
-// One axis's offsets: `a` picks the axis's fields of a PerspectiveSlice.
-template <class Axis>
-void reach_along(const Registers& r, Axis&& a, AxisReach& out) {
+// One axis's offsets (axis 0: x, 1: y).
+void reach_along(const Registers& r, int axis, AxisReach& out) {
   const int F = r.p.dda_frac_bits, W = r.p.weight_bits, K = r.sample_slices();
-  auto home = [&](const PerspectiveSlice& s, int64_t u) { return home_cell(ray_position(a(s).ray0, s.spacing, u), F); };
-  auto inside = [&](const PerspectiveSlice& s, int64_t u) { return u >= a(s).rays.lo && u < a(s).rays.hi; };
-  // The two rays of slice `there` around the realigned point, where they sample it.
-  auto realigned = [&](const PerspectiveSlice& there, const RealignDda& d, int64_t u, int64_t h, CellRange& range) {
-    const int64_t q = realigned_ray(d, u, F, W).ray;
-    for (int64_t ray : {q, q + 1})
-      if (inside(there, ray)) range.add(home(there, ray) - h);
+  auto add = [](CellRange& range, int64_t h, int64_t home) {
+    if (home != kNoRow) range.add(home - h);
   };
   PerspectiveSlice behind, here = perspective_slice(r, 0), ahead;
   for (int k = 0; k < K; ++k) {
     if (k + 1 < K) ahead = perspective_slice(r, k + 1);
-    const RayRange rays = a(here).rays;
-    for (int64_t u = rays.lo; u < rays.hi; ++u) {
-      const int64_t pos = ray_position(a(here).ray0, here.spacing, u), h = home_cell(pos, F);
-      const BoxAxis box = box_axis(pos, here.spacing, F, W);
+    const AxisSlice on = axis_slice(here, axis);
+    for (int64_t u = on.rays.lo; u < on.rays.hi; ++u) {
+      const OperandHomes o = operand_homes(r, here, k > 0 ? &behind : nullptr, k + 1 < K ? &ahead : nullptr, axis, u);
+      const int64_t h = o.home;
+      const BoxAxis box = box_axis(ray_position(on.ray0, on.spacing, u), on.spacing, F, W);
       for (int j = 0; j < 4; ++j)
         if (box.overlap[static_cast<size_t>(j)] > 0) out.box.add(box.first + j - h);
-      if (u + 1 < rays.hi) out.next.add(home(here, u + 1) - h);
-      if (k > 0) realigned(behind, a(here).behind, u, h, out.behind);
+      add(out.next, h, o.side[1]);
+      for (size_t i = 0; i < 2; ++i) {
+        add(out.behind, h, o.behind[i]);
+        add(out.ahead, h, o.ahead[i]);
+      }
       if (k + 1 < K) {
-        realigned(ahead, a(here).ahead, u, h, out.ahead);
-        if (inside(ahead, u)) out.drift.add(home(ahead, u) - h);
+        const AxisSlice next = axis_slice(ahead, axis);
+        if (u >= next.rays.lo && u < next.rays.hi)
+          out.drift.add(home_cell(ray_position(next.ray0, next.spacing, u), F) - h);
       }
     }
     behind = here;
@@ -49,54 +70,39 @@ void reach_along(const Registers& r, Axis&& a, AxisReach& out) {
 
 PerspectiveReach perspective_reach(const Registers& r) {
   PerspectiveReach out;
-  reach_along(r, [](const PerspectiveSlice& s) { return AxisFields{s.ray0_x, s.rays_x, s.behind_x, s.ahead_x}; }, out.x);
-  reach_along(r, [](const PerspectiveSlice& s) { return AxisFields{s.ray0_y, s.rays_y, s.behind_y, s.ahead_y}; }, out.y);
+  reach_along(r, 0, out.x);
+  reach_along(r, 1, out.y);
   out.samples = perspective_samples(r);
   return out;
 }
 
 GradientRows gradient_rows(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
                            const PerspectiveSlice* ahead, int64_t Y) {
-  const int F = r.p.dda_frac_bits, W = r.p.weight_bits;
   GradientRows out;
-  const HomeLane h = home_lane(s.ray0_y, s.spacing, s.rays_y, Y, F, W);
+  const HomeLane h = home_lane(s.ray0_y, s.spacing, s.rays_y, Y, r.p.dda_frac_bits, r.p.weight_bits);
   if (!h.valid) return out;
+  const OperandHomes o = operand_homes(r, s, behind, ahead, 1, h.ray);
   out.valid = true;
   out.v = h.ray;
-  auto row = [&](const PerspectiveSlice& on, int64_t v) {
-    return v >= on.rays_y.lo && v < on.rays_y.hi ? home_cell(ray_position(on.ray0_y, on.spacing, v), F) : kNoRow;
-  };
-  out.up = row(s, h.ray - 1);
-  out.down = row(s, h.ray + 1);
-  auto realigned = [&](const PerspectiveSlice* there, const RealignDda& d, std::array<int64_t, 2>& rows) {
-    if (!there) return;
-    const int64_t q = realigned_ray(d, h.ray, F, W).ray;
-    rows = {row(*there, q), row(*there, q + 1)};
-  };
-  realigned(behind, s.behind_y, out.behind);
-  realigned(ahead, s.ahead_y, out.ahead);
+  out.up = o.side[0];
+  out.down = o.side[1];
+  out.behind = o.behind;
+  out.ahead = o.ahead;
   return out;
 }
 
 GradientWindow gradient_window(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
                                const PerspectiveSlice* ahead, int64_t u) {
-  const int F = r.p.dda_frac_bits, W = r.p.weight_bits;
-  const int64_t forming = home_cell(ray_position(s.ray0_x, s.spacing, u), F) + kGradientAfterColumns;
-  // The lane back from the forming one that stores ray a of slice `on`.
-  auto lane = [&](const PerspectiveSlice& on, int64_t a) {
-    if (a < on.rays_x.lo || a >= on.rays_x.hi) return -1;
-    return static_cast<int>(forming - (home_cell(ray_position(on.ray0_x, on.spacing, a), F) + kFormedAfterColumns));
-  };
+  const OperandHomes o = operand_homes(r, s, behind, ahead, 0, u);
+  // The lane back from the forming one (home + 5) that stores an operand
+  // homed at h (lane h + 2).
+  const int64_t forming = o.home + kGradientAfterColumns;
+  auto lane = [&](int64_t h) { return h == kNoRow ? -1 : static_cast<int>(forming - (h + kFormedAfterColumns)); };
   GradientWindow out;
-  out.left = lane(s, u - 1);
-  out.right = lane(s, u + 1);
-  auto realigned = [&](const PerspectiveSlice* there, const RealignDda& d, std::array<int, 2>& lanes) {
-    if (!there) return;
-    const int64_t q = realigned_ray(d, u, F, W).ray;
-    lanes = {lane(*there, q), lane(*there, q + 1)};
-  };
-  realigned(behind, s.behind_x, out.behind);
-  realigned(ahead, s.ahead_x, out.ahead);
+  out.left = lane(o.side[0]);
+  out.right = lane(o.side[1]);
+  out.behind = {lane(o.behind[0]), lane(o.behind[1])};
+  out.ahead = {lane(o.ahead[0]), lane(o.ahead[1])};
   return out;
 }
 

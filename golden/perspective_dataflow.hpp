@@ -104,12 +104,37 @@ constexpr int64_t gradient_forming_position(int64_t pass, int64_t x, int64_t y, 
   return ((pass + 1) * ny + y + kGradientAfterBeams) * row + x + kGradientAfterColumns;
 }
 
-// The rows of slices k - 1, k and k + 1 that the gradients of one beam read
-// (docs/perspective.md, "The plan for the ring's RTL"): a ray's home row
-// depends on v alone and its realigned rows py, py + 1 on v alone, so every
-// gradient of slice k whose home row is Y reads the same rows. kNoRow: no
-// such ray samples that slice (the operand reads zero; nothing is stored).
+// The homes, along one axis, of ray u's gradient operands
+// (docs/perspective.md, "The plan for the ring's RTL"): a ray's home column
+// depends on u alone and its home row on v alone, so the question is asked
+// once per axis, and the gradient ring's per-lane selection (along x) and
+// its rows per beam (along y) are its two uses. cube4_gradient_persp_homes
+// computes it bit for bit. kNoRow: that ray misses its slice along the
+// axis (the operand reads zero; nothing is stored for it).
 constexpr int64_t kNoRow = INT64_MIN;
+struct AxisSlice {  // one axis of a PerspectiveSlice
+  int64_t ray0 = 0, spacing = 0;
+  RayRange rays;
+};
+inline AxisSlice axis_slice(const PerspectiveSlice& s, int axis) {
+  return axis == 0 ? AxisSlice{s.ray0_x, s.spacing, s.rays_x} : AxisSlice{s.ray0_y, s.spacing, s.rays_y};
+}
+struct OperandHomes {
+  int64_t home = 0;                                                       // ray u's own, on slice k
+  std::array<int64_t, 2> side{kNoRow, kNoRow};                            // rays u - 1, u + 1 on slice k
+  std::array<int64_t, 2> behind{kNoRow, kNoRow}, ahead{kNoRow, kNoRow};  // rays q, q + 1 of slices k -/+ 1
+  uint32_t behind_weight = 0, ahead_weight = 0;  // the realigned points' weights between q and q + 1
+};
+// u: a ray of `here` along the axis; `behind`, `ahead`: slices k -/+ 1 along
+// it, or null at the frame's ends; `to_behind`, `to_ahead`: slice k's
+// realignments into them (PerspectiveSlice::behind_x and so on).
+OperandHomes gradient_operand_homes(const AxisSlice& here, const AxisSlice* behind, const RealignDda& to_behind,
+                                    const AxisSlice* ahead, const RealignDda& to_ahead, int64_t u, int frac_bits,
+                                    int weight_bits);
+
+// The rows of slices k - 1, k and k + 1 that the gradients of one beam read:
+// every gradient of slice k whose home row is Y reads the same rows
+// (gradient_operand_homes() along y).
 struct GradientRows {
   bool valid = false;  // a ray of slice k has its home row at Y
   int64_t v = 0;       // that ray
