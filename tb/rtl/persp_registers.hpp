@@ -1,11 +1,19 @@
 // Random perspective frame registers for the RTL tests of the weight
-// generator (test_persp_slice.cpp, test_persp_ray.cpp): as the host makes
-// them, spacing from 1 at the first slice to at most 3 at the last, rays
-// meeting at an eye anywhere in x and y, volumes up to 1023 x 1023 x 300.
+// generator and the rings (test_persp_*.cpp, test_interp_persp_ring.cpp,
+// test_gradient_persp_*.cpp): as the host makes them, spacing from 1 at the
+// first slice to at most 3 at the last, rays meeting at an eye anywhere in
+// x and y, volumes up to 1023 x 1023 x 300; or the camera of a random
+// perspective scene.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <string>
 
+#include "golden/errors.hpp"
+#include "golden/host_driver.hpp"
 #include "golden/registers.hpp"
+#include "golden/scene_io.hpp"
+#include "golden/volume_io.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace cube4::rtl {
@@ -30,6 +38,40 @@ inline golden::Registers random_perspective_registers(Random& rng, int frac_bits
   r.x_step = (r.x_start - ex * one) / one * r.scale_step + rng.range(-1000, 1000);
   r.y_step = (r.y_start - ey * one) / one * r.scale_step + rng.range(-1000, 1000);
   return r;
+}
+
+// A perspective camera from a random scene (S 1 to 3, field of view 10 to
+// 89 degrees, any rotation) over a sphere of these sizes, as the host
+// programs it.
+inline golden::Registers scene_registers(Random& rng, std::array<int, 3> size) {
+  for (;;) {
+    const std::string json =
+        R"({"volume": {"synthetic": "sphere", "size": [)" + std::to_string(size[0]) + "," + std::to_string(size[1]) +
+        "," + std::to_string(size[2]) + R"(]}, "supersampling": )" + std::to_string(rng.range(1, 3)) +
+        R"(, "view": {"projection": "perspective", "fov": )" + std::to_string(rng.range(10, 89)) +
+        R"(, "rotate": [)" + std::to_string(rng.range(-180, 179)) + "," + std::to_string(rng.range(-180, 179)) + "," +
+        std::to_string(rng.range(-180, 179)) + "]}}";
+    try {
+      const golden::Scene s = golden::parse_scene(json, "ring.json");
+      const golden::Volume vol = golden::load_volume(s.volume, s.precision.voxel_bits, ".");
+      return golden::program_host(s, vol).regs;
+    } catch (const golden::InputError&) {
+      // A camera too close for the volume's depth: another one.
+    }
+  }
+}
+
+// A ring test's frame: half the time a random scene's camera over a sphere
+// of max(min_xy) .. max_dim voxels a side, half the time random registers
+// (x and y of min_xy .. max_dim, up to 24 deep, S up to 3). Scenes permute
+// their axes: the caller checks the permuted sizes.
+inline golden::Registers ring_registers(Random& rng, int frac_bits, std::array<int, 2> min_xy, int max_dim) {
+  if (rng.chance(0.5)) {
+    std::array<int, 3> size{};
+    for (int& d : size) d = static_cast<int>(rng.range(std::max(min_xy[0], min_xy[1]), max_dim));
+    return scene_registers(rng, size);
+  }
+  return random_perspective_registers(rng, frac_bits, {max_dim, max_dim, 24}, {min_xy[0], min_xy[1], 1}, 3);
 }
 
 }  // namespace cube4::rtl

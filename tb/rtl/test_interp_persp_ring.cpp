@@ -50,25 +50,6 @@ uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_
 
 using Volume = rtl::VoxelGrid;
 
-// A perspective camera from a random scene over a volume of these sizes.
-g::Registers scene_registers(rtl::Random& rng, std::array<int, 3> size) {
-  for (;;) {
-    const std::string json =
-        R"({"volume": {"synthetic": "sphere", "size": [)" + std::to_string(size[0]) + "," + std::to_string(size[1]) +
-        "," + std::to_string(size[2]) + R"(]}, "supersampling": )" + std::to_string(rng.range(1, 3)) +
-        R"(, "view": {"projection": "perspective", "fov": )" + std::to_string(rng.range(10, 89)) +
-        R"(, "rotate": [)" + std::to_string(rng.range(-180, 179)) + "," + std::to_string(rng.range(-180, 179)) + "," +
-        std::to_string(rng.range(-180, 179)) + "]}}";
-    try {
-      const g::Scene s = g::parse_scene(json, "ring.json");
-      const g::Volume vol = g::load_volume(s.volume, s.precision.voxel_bits, ".");
-      return g::program_host(s, vol).regs;
-    } catch (const g::InputError&) {
-      // A camera too close for the volume's depth: another one.
-    }
-  }
-}
-
 struct Want {
   uint32_t sample = 0, vtag = 0;
   int lane = 0;
@@ -239,15 +220,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
   int frames_run = 0;
   std::array<long, 4> faces{};
   while (samples < n && c.ok()) {
-    const bool from_scene = rng.chance(0.5);
-    g::Registers r;
-    if (from_scene) {
-      std::array<int, 3> size{};
-      for (int& d : size) d = static_cast<int>(rng.range(2, kMaxDim));
-      r = scene_registers(rng, size);
-    } else {
-      r = rtl::random_perspective_registers(rng, kF, {kMaxDim, kMaxDim, 24}, {1, 2, 1}, 3);
-    }
+    const g::Registers r = rtl::ring_registers(rng, kF, {1, 2}, kMaxDim);
     if (r.dim[1] < 2 || r.dim[0] > kMaxDim || r.dim[1] > kMaxDim) continue;
     const int K = r.sample_slices();
     const int frames = rng.chance(0.3) ? 2 : 1;

@@ -1,0 +1,297 @@
+// RTL equivalence tests of the perspective gradient ring,
+// cube4_gradient_persp_ring, against golden perspective_gradient()
+// (golden/perspective.hpp) at the schedule golden gradient_cell() gives:
+// random cameras (random registers as the host makes them, and the cameras
+// of random perspective scenes), streamed as the system streams frames
+// (pass after pass, one or two frames back to back, the zero pass and six
+// flush beams at the end) with random idle cycles, each sample arriving on
+// the lane and in the step that the interpolation ring forms it
+// (formed_cell()). The samples are random (the ring never looks at how
+// they were made): smooth fields, where the gradients are small and
+// rounding matters, and noise, where they saturate. Every ray of every
+// slice must leave exactly once, with golden's gradient, its own sample,
+// voxel tag, ray and pass tag, on the lane and in the cycle the schedule
+// says: gradient_forming_position()'s step, 3 cycles after it
+// (docs/rtl-gradient-persp.md).
+//
+// CUBE4_RTL_VECTORS overrides the gradient count per ring (default 1,000,000).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "Vcube4_gradient_persp_ring.h"
+#include "Vcube4_gradient_persp_ring_p1.h"
+#include "Vcube4_gradient_persp_ring_p5.h"
+#include "Vcube4_gradient_persp_ring_p8.h"
+#include "Vcube4_gradient_persp_ring_t4.h"
+#include "golden/perspective.hpp"
+#include "golden/perspective_dataflow.hpp"
+#include "tb/rtl/persp_registers.hpp"
+#include "tb/rtl/rtl_check.hpp"
+
+namespace {
+
+namespace g = cube4::golden;
+namespace rtl = cube4::rtl;
+
+constexpr int kV = 12, kF = 20, kPos = 48, kRay = 16, kTag = 8, kG = 8;
+constexpr int kMaxDim = 24;  // rtl/groups/gradient_persp.cmake
+constexpr int kFlushBeams = 6;
+
+uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_t{1} << bits) - 1); }
+
+// The samples of one frame's slices, by ray, with their voxel tags.
+class FrameSamples {
+ public:
+  FrameSamples(const std::vector<g::PerspectiveSlice>& slices, rtl::Random& rng, int vtag_bits) : slices_(slices) {
+    // Smooth: a plane plus a little noise (small gradients, rounding);
+    // noisy: edgy random values (saturation).
+    const bool smooth = rng.chance(0.5);
+    const int64_t a = rng.range(-40, 40), b = rng.range(-40, 40), c = rng.range(-60, 60), base = rng.range(0, 4095);
+    for (const g::PerspectiveSlice& s : slices) {
+      std::vector<uint32_t>& value = values_.emplace_back();
+      std::vector<uint32_t>& tag = tags_.emplace_back();
+      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+          const int64_t x = smooth ? base + a * u + b * v + c * s.k + rng.range(-3, 3)
+                                   : rng.edgy((1 << kV) - 1, 0.2);
+          value.push_back(static_cast<uint32_t>(std::clamp<int64_t>(x, 0, (1 << kV) - 1)));
+          tag.push_back(vtag_bits > 0 ? static_cast<uint32_t>(rng.bits(vtag_bits)) : 0u);
+        }
+    }
+  }
+  // 0 for rays that miss the slice, or slices the frame does not have.
+  uint32_t sample(int k, int64_t u, int64_t v) const { return at(values_, k, u, v); }
+  uint32_t vtag(int k, int64_t u, int64_t v) const { return at(tags_, k, u, v); }
+
+ private:
+  uint32_t at(const std::vector<std::vector<uint32_t>>& t, int k, int64_t u, int64_t v) const {
+    if (k < 0 || k >= static_cast<int>(slices_.size())) return 0;
+    const g::PerspectiveSlice& s = slices_[static_cast<size_t>(k)];
+    if (!g::samples(s, u, v)) return 0;
+    const int64_t w = s.rays_x.hi - s.rays_x.lo;
+    return t[static_cast<size_t>(k)][static_cast<size_t>((v - s.rays_y.lo) * w + (u - s.rays_x.lo))];
+  }
+  const std::vector<g::PerspectiveSlice>& slices_;
+  std::vector<std::vector<uint32_t>> values_, tags_;
+};
+
+struct Expect {
+  int pass = 0;  // in the stream: the pass tag
+  int64_t u = 0, v = 0;
+  g::Gradient grad;
+  uint32_t sample = 0, vtag = 0;
+  bool seen = false;
+};
+
+// Streams `frames` frames of registers r through ring m with random samples,
+// checking every gradient. Returns the gradients checked.
+template <class M>
+long stream_frames(M& m, int p, const g::Registers& r, int frames, int vtag_bits, rtl::Random& rng, rtl::Checker& c,
+                   uint64_t& cycle) {
+  const int K = r.sample_slices(), nx = r.dim[0], ny = r.dim[1];
+  const int B = (nx + p - 1) / p;
+  const int64_t row = int64_t{B} * p;
+  const int passes = frames * K;  // then the zero pass
+  std::vector<g::PerspectiveSlice> slices;
+  for (int k = 0; k < K; ++k) slices.push_back(g::perspective_slice(r, k));
+  std::vector<FrameSamples> samples;
+  for (int f = 0; f < frames; ++f) samples.emplace_back(slices, rng, vtag_bits);
+
+  // Golden: every ray's gradient, by the step and lane that form it.
+  std::map<int64_t, std::map<int, Expect>> want;
+  for (int f = 0; f < frames; ++f)
+    for (int k = 0; k < K; ++k) {
+      const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
+      const FrameSamples& fs = samples[static_cast<size_t>(f)];
+      auto from = [&](int slice) { return [&fs, slice](int64_t u, int64_t v) { return fs.sample(slice, u, v); }; };
+      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+          const int64_t X = g::home_cell(g::ray_position(s.ray0_x, s.spacing, u), kF);
+          const int64_t Y = g::home_cell(g::ray_position(s.ray0_y, s.spacing, v), kF);
+          const int64_t pos = g::gradient_forming_position(int64_t{f} * K + k, X, Y, row, ny);
+          Expect& e = want[pos / p][static_cast<int>(pos % p)];
+          e = {f * K + k, u, v, g::perspective_gradient(r, s, u, v, from(k), from(k - 1), from(k + 1)),
+               fs.sample(k, u, v), fs.vtag(k, u, v), false};
+        }
+    }
+
+  long checked = 0;
+  std::map<uint64_t, int64_t> due;  // the cycle a step's gradients leave in -> the step
+  auto observe = [&] {
+    const auto d = due.find(cycle);
+    std::map<int, Expect>* lanes = nullptr;
+    int64_t step = -1;
+    if (d != due.end()) {
+      step = d->second;
+      const auto w = want.find(step);
+      if (w != want.end()) lanes = &w->second;
+      due.erase(d);
+    }
+    for (int lane = 0; lane < p; ++lane) {
+      const bool valid = rtl::get_bits(m.valid_o, lane, 1) != 0;
+      Expect* e = nullptr;
+      if (lanes) {
+        const auto it = lanes->find(lane);
+        if (it != lanes->end()) e = &it->second;
+      }
+      const rtl::Fields where{{"step", step}, {"lane", lane}, {"nx", nx}, {"ny", ny}, {"nz", r.dim[2]},
+                              {"S", r.supersampling}, {"frames", frames}};
+      if (valid != (e != nullptr)) {
+        c.check(cycle, where, {{"valid", e != nullptr}}, {{"valid", valid}});
+        continue;
+      }
+      if (!e) continue;
+      e->seen = true;
+      auto bits = [&](const auto& port, int width) { return rtl::get_bits(port, lane * width, width); };
+      c.check(cycle, where,
+              {{"pass", e->pass}, {"u", e->u}, {"v", e->v}, {"gx", e->grad.x}, {"gy", e->grad.y}, {"gz", e->grad.z},
+               {"sample", e->sample}, {"vtag", e->vtag}},
+              {{"pass", static_cast<int64_t>(bits(m.tag_o, kTag))},
+               {"u", rtl::sign_extend(bits(m.ray_u_o, kRay), kRay)},
+               {"v", rtl::sign_extend(bits(m.ray_v_o, kRay), kRay)},
+               {"gx", rtl::sign_extend(bits(m.gx_o, kG), kG)},
+               {"gy", rtl::sign_extend(bits(m.gy_o, kG), kG)},
+               {"gz", rtl::sign_extend(bits(m.gz_o, kG), kG)},
+               {"sample", static_cast<int64_t>(bits(m.sample_o, kV))},
+               {"vtag", vtag_bits > 0 ? static_cast<int64_t>(bits(m.vtag_o, vtag_bits)) : 0}});
+      ++checked;
+    }
+  };
+  auto clock = [&] {
+    rtl::settle(m);
+    rtl::rise(m);
+    ++cycle;
+    rtl::settle(m);
+    observe();
+  };
+  // The constants of a pass (the zero pass: no rays), or, at the steps
+  // that do not start a pass, random words the ring must not take.
+  auto drive_constants = [&](const g::PerspectiveSlice* s, int pass, bool zero) {
+    auto pos = [&](int64_t v) { return word(s ? v : static_cast<int64_t>(rng.bits(kPos)), kPos); };
+    auto ray = [&](int64_t v) { return static_cast<uint16_t>(word(s && !zero ? v : s ? 0 : static_cast<int64_t>(rng.bits(kRay)), kRay)); };
+    const g::PerspectiveSlice none;
+    const g::PerspectiveSlice& q = s ? *s : none;
+    m.spacing_i = pos(q.spacing);
+    m.ray0_x_i = pos(q.ray0_x);
+    m.ray0_y_i = pos(q.ray0_y);
+    m.rays_x_lo_i = ray(q.rays_x.lo);
+    m.rays_x_hi_i = ray(q.rays_x.hi);
+    m.rays_y_lo_i = ray(q.rays_y.lo);
+    m.rays_y_hi_i = ray(q.rays_y.hi);
+    m.behind_start_x_i = pos(q.behind_x.start);
+    m.behind_start_y_i = pos(q.behind_y.start);
+    m.behind_step_i = pos(q.behind_x.step);
+    m.ahead_start_x_i = pos(q.ahead_x.start);
+    m.ahead_start_y_i = pos(q.ahead_y.start);
+    m.ahead_step_i = pos(q.ahead_x.step);
+    m.lateral_recip_i = static_cast<uint32_t>(s ? q.lateral_reciprocal : static_cast<int64_t>(rng.bits(kV + 3)));
+    const int k = pass % K;
+    m.first_i = s ? (!zero && k == 0) : rng.bits(1);
+    m.last_i = s ? (!zero && k == K - 1) : rng.bits(1);
+    m.tag_i = static_cast<uint8_t>(s ? pass : static_cast<int>(rng.bits(kTag)));
+  };
+  m.supersampling_i = static_cast<uint8_t>(r.supersampling);
+
+  int64_t step = 0;
+  for (int pass = 0; pass <= passes && c.ok(); ++pass) {
+    const bool zero = pass == passes;
+    const g::PerspectiveSlice& s = slices[static_cast<size_t>(zero ? 0 : pass % K)];
+    for (int b = 0; b < ny + (zero ? kFlushBeams : 0) && c.ok(); ++b)
+      for (int j = 0; j < B && c.ok(); ++j, ++step) {
+        while (rng.chance(0.15)) {
+          m.valid_i = 0;
+          m.sample_valid_i = static_cast<uint32_t>(rng.bits(p));
+          clock();
+        }
+        const bool flush = b >= ny;
+        m.valid_i = 1;
+        m.beam_start_i = j == 0;
+        m.beam_end_i = j == B - 1;
+        m.slice_start_i = !flush && b == 0;
+        m.slice_end_i = !flush && b == ny - 1;
+        m.flush_i = flush;
+        drive_constants(!flush && b == 0 && j == 0 ? &s : nullptr, pass, zero);
+        uint32_t valid = 0;
+        for (int lane = 0; lane < p; ++lane) {
+          const g::FormedCell fc = g::formed_cell(step * p + lane, row, nx, ny);
+          uint32_t value = static_cast<uint32_t>(rng.bits(kV)), tag = static_cast<uint32_t>(rng.bits(vtag_bits ? vtag_bits : 1));
+          if (fc.valid && fc.pass < passes) {
+            const int k = static_cast<int>(fc.pass % K);
+            const g::PerspectiveSlice& at = slices[static_cast<size_t>(k)];
+            const g::HomeLane hu = g::home_lane(at.ray0_x, at.spacing, at.rays_x, fc.x, kF, r.p.weight_bits);
+            const g::HomeLane hv = g::home_lane(at.ray0_y, at.spacing, at.rays_y, fc.y, kF, r.p.weight_bits);
+            if (hu.valid && hv.valid) {
+              const FrameSamples& fs = samples[static_cast<size_t>(fc.pass / K)];
+              valid |= 1u << lane;
+              value = fs.sample(k, hu.ray, hv.ray);
+              tag = fs.vtag(k, hu.ray, hv.ray);
+            }
+          }
+          rtl::put_bits(m.sample_i, lane * kV, kV, value);
+          const int tb = vtag_bits > 0 ? vtag_bits : 1;
+          rtl::put_bits(m.vtag_i, lane * tb, tb, tag);
+        }
+        m.sample_valid_i = valid;
+        due[cycle + 3] = step;
+        clock();
+      }
+  }
+  m.valid_i = 0;
+  for (int i = 0; i < 4; ++i) clock();
+  for (const auto& [at, lanes] : want)
+    for (const auto& [lane, e] : lanes)
+      if (!e.seen && c.ok())
+        c.check(cycle, {{"pass", e.pass}, {"u", e.u}, {"v", e.v}, {"due at step", at}, {"lane", lane}},
+                {{"left", 1}}, {{"left", 0}});
+  return checked;
+}
+
+// vtag_bits: the model's VoxelTagBits (0: none).
+template <class M>
+void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
+  rtl::Random rng(salt);
+  const auto dut = rtl::make_dut<M>();
+  M& m = *dut;
+  rtl::reset(m);
+  const std::string name = "cube4_gradient_persp_ring p=" + std::to_string(p) + (vtag_bits ? " tags" : "");
+  rtl::Checker c(name);
+  const long n = rtl::vector_count(1000000);
+  rtl::Timer t(name + ": " + std::to_string(n) + " gradients");
+  uint64_t cycle = 0;
+  long gradients = 0;
+  int frames_run = 0;
+  while (gradients < n && c.ok()) {
+    const g::Registers r = rtl::ring_registers(rng, kF, {7, 7}, kMaxDim);
+    // The ring's preconditions: ny >= 6, a beam of at least seven positions.
+    if (r.dim[1] < 6 || r.dim[0] < 7 || r.dim[0] > kMaxDim || r.dim[1] > kMaxDim) continue;
+    const int frames = rng.chance(0.3) ? 2 : 1;
+    if (frames * r.sample_slices() + 1 > (1 << kTag) - 1) continue;
+    gradients += stream_frames(m, p, r, frames, vtag_bits, rng, c, cycle);
+    ++frames_run;
+  }
+  EXPECT_TRUE(c.ok()) << c.report();
+  std::printf("  [%s: %d streams]\n", name.c_str(), frames_run);
+}
+
+TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWhereTheScheduleSaysAtP4) {
+  test_ring<Vcube4_gradient_persp_ring>(4, 81);
+}
+TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWhereTheScheduleSaysAtP1) {
+  test_ring<Vcube4_gradient_persp_ring_p1>(1, 82);
+}
+TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWhereTheScheduleSaysAtP5) {
+  test_ring<Vcube4_gradient_persp_ring_p5>(5, 83);
+}
+TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWhereTheScheduleSaysAtP8) {
+  test_ring<Vcube4_gradient_persp_ring_p8>(8, 84);
+}
+TEST(RtlGradientPerspRing, VoxelTagsLeaveWithTheirRaysGradients) {
+  test_ring<Vcube4_gradient_persp_ring_t4>(4, 85, 4);
+}
+
+}  // namespace
