@@ -58,6 +58,11 @@ struct SampleBeat {
 struct RaySampleBeat {
   uint32_t valid = 0;
   int64_t step = -1;
+  // The flags and pass tag of that stream step (its VoxelBeat's): the
+  // ring's control, which the perspective gradient ring needs with the
+  // samples (it stores them by pass and row and forms gradients by beam).
+  BeamFlags f;
+  uint64_t pass_tag = 0;
   std::array<uint16_t, kMaxLanes> sample{};
   std::array<int32_t, kMaxLanes> u{}, v{};
   std::array<uint32_t, kMaxLanes> tag{};

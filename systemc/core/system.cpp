@@ -114,27 +114,39 @@ void check_polygon_levels(const SystemConfig& cfg) {
 }
 
 // Perspective frames run loosely timed at TLM, or clocked: the
-// perspective interpolation unit (clocked TLM or RTL), the address
-// generation and the shading unit at either level, the gradient and
-// compositing units at clocked TLM (no perspective RTL of theirs yet;
+// perspective interpolation and gradient units (clocked TLM or RTL), the
+// address generation and the shading unit at either level, the
+// compositing unit at clocked TLM (no perspective RTL of its own yet;
 // systemc/core/perspective_frame.hpp).
 void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
-  for (const Unit u : {Unit::Gradient, Unit::Composite})
-    if (cfg.levels[static_cast<size_t>(u)] == Level::Rtl)
-      throw std::invalid_argument(
-          std::string("\"view.projection\": \"perspective\": the ") + unit_name(u) +
-          " unit has no perspective RTL yet; the interpolation and shading units and the address generation run "
-          "perspective frames at RTL (--model mixed:interp,shade,addr or fewer of them), the rest at clocked TLM "
-          "(docs/perspective.md)");
+  if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl)
+    throw std::invalid_argument(
+        "\"view.projection\": \"perspective\": the composite unit has no perspective RTL yet; the "
+        "interpolation, gradient and shading units and the address generation run perspective frames at RTL "
+        "(--model mixed:interp,gradient,shade,addr or fewer of them), the compositing at clocked TLM "
+        "(docs/perspective.md)");
   if (r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences)
     throw std::invalid_argument(
         "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
         "interpolation unit's clocked models have no voxel z differences yet; run --model tlm (docs/perspective.md)");
   const bool rtl_interp = cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl;
-  if (rtl_interp) {
+  const bool rtl_gradient = r.gradient && cfg.levels[static_cast<size_t>(Unit::Gradient)] == Level::Rtl;
+  // The gradient ring's preconditions (docs/rtl-gradient-persp.md): a
+  // slice's neighbours within its four stores, a window within two beams.
+  if (rtl_gradient) {
+    const int nx = r.dim[0], ny = r.dim[1], row = (nx + cfg.p - 1) / cfg.p * cfg.p;
+    if (ny < kRtlGradientPerspMinRows || row < kRtlGradientPerspMinRow)
+      throw std::invalid_argument(
+          "volume: the view's permuted y axis has " + std::to_string(ny) + " voxels and a beam " +
+          std::to_string(row) + " stream positions (x " + std::to_string(nx) + " at p = " + std::to_string(cfg.p) +
+          "); the RTL perspective gradient ring needs at least " + std::to_string(kRtlGradientPerspMinRows) +
+          " rows and " + std::to_string(kRtlGradientPerspMinRow) +
+          " positions a beam; run the gradient unit at TLM (--model mixed: without gradient)");
+  }
+  if (rtl_interp || rtl_gradient) {
     require_rtl_perspective(cfg.p);
-    // Its tag variants: the p of both CUBE4_SYSTEM_PERSP_PIPES and _TAG_PIPES.
+    // Their tag variants: the p of both CUBE4_SYSTEM_PERSP_PIPES and _TAG_PIPES.
     require_rtl_tags(cfg.p, r.p.tag_bits);
   }
 }
@@ -186,11 +198,16 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
     interp = make_rtl_interp_persp(plan, *f.ctx, cfg.trace);
   else
     interp = std::make_unique<TlmInterpPersp>(plan);
-  // The gradient ring's schedule at TLM (check_perspective_levels() refuses
-  // RTL, and VolumePro's z gradient at any clocked level), shading at
-  // either level, compositing (and the polygons' slabs) at TLM.
+  // The gradient ring at either level (check_perspective_levels() refuses
+  // VolumePro's z gradient at any clocked level), shading at either level,
+  // compositing (and the polygons' slabs) at TLM.
   std::unique_ptr<PerspGradientIf> gradient;
-  if (f.r.gradient) gradient = std::make_unique<TlmGradientPersp>(plan);
+  if (f.r.gradient) {
+    if (cfg.levels[static_cast<size_t>(Unit::Gradient)] == Level::Rtl)
+      gradient = make_rtl_gradient_persp(plan, *f.ctx, cfg.trace);
+    else
+      gradient = std::make_unique<TlmGradientPersp>(plan);
+  }
   std::unique_ptr<PerspShadeIf> shade;
   if (cfg.levels[static_cast<size_t>(Unit::Shade)] == Level::Rtl)
     shade = make_rtl_shade_persp(plan, *f.ctx, cfg.trace, cfg.simulate_unneeded);

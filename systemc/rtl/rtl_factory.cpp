@@ -22,6 +22,7 @@
 #include "systemc/rtl/rtl_composite.hpp"
 #include "systemc/rtl/rtl_dda.hpp"
 #include "systemc/rtl/rtl_gradient.hpp"
+#include "systemc/rtl/rtl_gradient_persp.hpp"
 #include "systemc/rtl/rtl_interp.hpp"
 #include "systemc/rtl/rtl_interp_persp.hpp"
 #include "systemc/rtl/rtl_persp_slice.hpp"
@@ -165,8 +166,8 @@ std::vector<int> rtl_persp_pipes() {
 }
 
 void require_rtl_perspective(int p) {
-  require_variant(p, rtl_persp_pipes(), "RTL perspective interpolation ring", "CUBE4_SYSTEM_PERSP_PIPES",
-                  "run the interpolation unit at TLM");
+  require_variant(p, rtl_persp_pipes(), "RTL perspective interpolation and gradient rings",
+                  "CUBE4_SYSTEM_PERSP_PIPES", "run the perspective units at TLM");
 }
 
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
@@ -190,6 +191,28 @@ std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, Veri
     }
   }
   throw std::logic_error("make_rtl_interp_persp: p = " + std::to_string(plan.p));
+}
+
+std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, VerilatedContext& ctx,
+                                                         const TraceWindow& trace) {
+  require_rtl_perspective(plan.p);
+  if (plan.r.p.tag_bits > 0) {
+    require_rtl_tags(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_PERSP_TAG_P(p) \
+  case p: return std::make_unique<RtlGradientPersp<Vsys_gradient_persp_tags_p##p>>(plan, ctx, trace);
+#include "rtl_persp_tag_variant_list.inc"
+#undef CUBE4_RTL_PERSP_TAG_P
+    }
+  } else {
+    switch (plan.p) {
+#define CUBE4_RTL_PERSP_P(p) \
+  case p: return std::make_unique<RtlGradientPersp<Vsys_gradient_persp_p##p>>(plan, ctx, trace);
+#include "rtl_persp_variant_list.inc"
+#undef CUBE4_RTL_PERSP_P
+    }
+  }
+  throw std::logic_error("make_rtl_gradient_persp: p = " + std::to_string(plan.p));
 }
 
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r, VerilatedContext& ctx) {

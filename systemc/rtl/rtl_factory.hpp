@@ -61,12 +61,21 @@ void require_rtl_polygons(int p);
 // scene also has voxel tags (no ring has both).
 std::vector<int> rtl_zdiff_pipes();
 void require_rtl_zdiff(int p, int tag_bits);
-// The p values with the perspective interpolation ring (Cube-4 §3; CMake
-// CUBE4_SYSTEM_PERSP_PIPES); throws, naming them, if p has none.
+// The p values with the perspective interpolation and gradient rings
+// (Cube-4 §3; CMake CUBE4_SYSTEM_PERSP_PIPES); throws, naming them, if p
+// has none.
 std::vector<int> rtl_persp_pipes();
 void require_rtl_perspective(int p);
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                      const TraceWindow& trace);
+// The perspective gradient ring (cube4_gradient_persp_ring), on
+// TlmGradientPersp's schedule; check_perspective_levels() (system.cpp)
+// refuses the frames outside its preconditions first: at least
+// kRtlGradientPerspMinRows rows (ny) and kRtlGradientPerspMinRow stream
+// positions a beam (ceil(nx / p) * p).
+constexpr int kRtlGradientPerspMinRows = 6, kRtlGradientPerspMinRow = 7;
+std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, VerilatedContext& ctx,
+                                                         const TraceWindow& trace);
 // The weight generator at RTL (cube4_dda, one for all pipelines): the
 // control of slices 0 .. K of a parallel-projection frame (FramePlan's
 // slice_controls), clocked through the frame's slices before it starts

@@ -42,9 +42,12 @@ class RtlInterpPersp final : public PerspInterpIf {
     if (in.valid) drive_pass(in.tag);
     m_.settle();
     // The ring's control travels with its samples; the model counts the
-    // steps beside it (TlmInterpPersp's delay).
-    out.step = steps_[clocks_ & 3];
-    steps_[clocks_++ & 3] = in.valid ? next_step_++ : -1;
+    // steps and carries their flags and tags beside it (TlmInterpPersp's delay).
+    Control& c = control_[clocks_++ & 3];
+    out.step = c.step;
+    out.f = c.f;
+    out.pass_tag = c.pass_tag;
+    c = in.valid ? Control{next_step_++, in.f, in.tag} : Control{};
     out.valid = 0;
     for (int k = 0; k < p_; ++k) {
       if (!get_bits(m.valid_o, k, 1)) continue;
@@ -80,7 +83,12 @@ class RtlInterpPersp final : public PerspInterpIf {
   const FramePlan& plan_;
   int p_, v_, tag_bits_, vtag_bits_;  // vtag_bits_: the model's VoxelTagBits
   RtlModel<M> m_;
-  std::array<int64_t, 4> steps_{-1, -1, -1, -1};  // the ring's 4 cycles, by clock % 4
+  struct Control {
+    int64_t step = -1;
+    BeamFlags f;
+    uint64_t pass_tag = 0;
+  };
+  std::array<Control, 4> control_;  // the ring's 4 cycles, by clock % 4
   int64_t next_step_ = 0;
   uint64_t clocks_ = 0;
 };

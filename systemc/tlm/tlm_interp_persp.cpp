@@ -85,6 +85,8 @@ void TlmInterpPersp::clock(const VoxelBeat& in, RaySampleBeat& out) {
   }
   for (int k = 0; k < plan_.p; ++k) form(steps_ * plan_.p + k, k, slot);
   slot.step = steps_++;
+  slot.f = in.f;
+  slot.pass_tag = in.tag;
 }
 
 }  // namespace cube4::sysc

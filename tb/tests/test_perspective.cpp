@@ -329,12 +329,14 @@ using PerspectiveCli = test::Cli;
 TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthersSayingWhy) {
   const std::string scene = write("p.json", sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "fov": 40})",
                                                    R"(, "output": {"width": 64, "height": 64})", "[16,16,16]"));
-  // The interpolation ring at RTL is built for CMake's CUBE4_SYSTEM_PERSP_PIPES
-  // (none in a build without RTL, where the mixed models are refused).
+  // The interpolation and gradient rings at RTL are built for CMake's
+  // CUBE4_SYSTEM_PERSP_PIPES (none in a build without RTL, where the mixed
+  // models are refused).
   const bool rtl = !sysc::rtl_persp_pipes().empty();
   std::string hash;
   for (const char* model : {"fixed", "float", "reference", "tlm --check", "mixed:interp --check", "mixed:interp,addr",
-                            "mixed:interp,shade --check", "mixed:shade"}) {
+                            "mixed:interp,shade --check", "mixed:shade", "mixed:gradient --check",
+                            "mixed:interp,gradient,shade,addr --check"}) {
     const bool mixed = std::string(model).rfind("mixed", 0) == 0;
     const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("o.png") + " --report " +
                                   path("r.json"));
@@ -374,7 +376,7 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
     EXPECT_EQ(h, hash) << model << ": the base plane differs from --model fixed";
   }
   const std::pair<const char*, const char*> refused[] = {
-      {"rtl", "\"view.projection\": \"perspective\": the gradient unit has no perspective RTL yet"},
+      {"rtl", "\"view.projection\": \"perspective\": the composite unit has no perspective RTL yet"},
       {"mixed:interp,composite", "\"view.projection\": \"perspective\": the composite unit has no perspective RTL yet"},
       {"splat", "\"view.projection\": \"perspective\": the splat model projects voxels in parallel only"}};
   for (const auto& [model, why] : refused) {

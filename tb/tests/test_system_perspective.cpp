@@ -262,6 +262,82 @@ TEST(SystemPerspective, ClockedShadingAtRtlFromEveryFace) {
   }
 }
 
+// The gradient ring at RTL (cube4_gradient_persp_ring) in a clocked
+// perspective frame, behind the interpolation unit at either level, from
+// every face at p = 1, 4, 5 and 8: golden's image, every gradient checked
+// as it leaves, and the cycles of the clocked TLM gradient unit (the same
+// schedule); and with every unit that has perspective RTL at RTL.
+TEST(SystemPerspective, ClockedGradientAtRtlFromEveryFace) {
+  if (!CUBE4_TEST_RTL) GTEST_SKIP() << "a build without RTL";
+  for (const char* eye : kEyes) {
+    const test::Setup s = setup(scene(eye));
+    golden::RenderStats stats;
+    const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, &stats);
+    for (int p : {1, 4, 5, 8}) {
+      if (!rtl_perspective(p)) continue;
+      for (const bool rtl_interp : {false, true}) {
+        SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p) + (rtl_interp ? ", RTL ring" : ""));
+        sysc::SystemConfig cfg = clocked_config(p, rtl_interp);
+        cfg.levels[static_cast<size_t>(sysc::Unit::Gradient)] = sysc::Level::Rtl;
+        if (rtl_interp) {
+          cfg.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
+          cfg.levels[static_cast<size_t>(sysc::Unit::Addr)] = sysc::Level::Rtl;
+        }
+        expect_clocked(s, cfg, want, stats);
+      }
+    }
+  }
+}
+
+// The clocked TLM gradient unit is the ring, beat by beat: the same
+// samples through both (the stream former and the clocked TLM
+// interpolation unit, two frames back to back), every output beat
+// compared (lanes, steps, gradients, samples, rays, tags), from every face
+// and at p = 1, 4, 5 and 8.
+TEST(SystemPerspective, TheClockedTlmGradientUnitIsTheRingBeatByBeat) {
+#if CUBE4_TEST_RTL
+  long compared = 0;
+  for (const char* eye : kEyes) {
+    const test::Setup s = setup(scene(eye));
+    for (int p : {1, 4, 5, 8}) {
+      if (!rtl_perspective(p)) continue;
+      SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p));
+      const sysc::FramePlan plan(s.host.regs, p);
+      sysc::VoxelMemory mem(s.volume, p);
+      sysc::TlmAddr addr(mem.layout(), golden::SkewTraversal{s.host.regs.perm, s.host.regs.flip});
+      sysc::StreamFormer former(plan, mem, addr, 2);
+      sysc::TlmInterpPersp interp(plan);
+      rtl::ScopedVerilatedContext ctx(1, false, true);
+      auto ring = sysc::make_rtl_gradient_persp(plan, *ctx, sysc::TraceWindow{});
+      sysc::TlmGradientPersp tlm(plan);
+      sysc::RaySampleBeat samples;
+      sysc::RayGradientBeat a, b;
+      int drain = 0;
+      for (int cycle = 0; drain < 8; ++cycle) {
+        const sysc::VoxelBeat in = former.done() ? sysc::VoxelBeat{} : former.next();
+        interp.clock(in, samples);
+        ring->clock(samples, a);
+        tlm.clock(samples, b);
+        ASSERT_EQ(std::make_tuple(a.valid, a.step), std::make_tuple(b.valid, b.step)) << "cycle " << cycle;
+        for (int k = 0; k < p; ++k) {
+          if (!(a.valid >> k & 1)) continue;
+          const auto i = static_cast<size_t>(k);
+          ASSERT_EQ(std::make_tuple(a.gx[i], a.gy[i], a.gz[i], a.sample[i], a.u[i], a.v[i], a.tag[i], a.vtag[i]),
+                    std::make_tuple(b.gx[i], b.gy[i], b.gz[i], b.sample[i], b.u[i], b.v[i], b.tag[i], b.vtag[i]))
+              << "cycle " << cycle << ", lane " << k;
+          ++compared;
+        }
+        // The last gradients leave within the interpolation ring's 4 cycles and the gradient ring's 3.
+        if (former.done()) ++drain;
+      }
+    }
+  }
+  EXPECT_GT(compared, 20000);
+#else
+  GTEST_SKIP() << "a build without RTL";
+#endif
+}
+
 // Voxel tags (bela §III) in a clocked perspective frame: two spheres with
 // their own classes, each sample's tag the nearest voxel's, through the
 // clocked TLM unit and the ring's tag variant (p = 4, in both
@@ -283,9 +359,12 @@ TEST(SystemPerspective, ClockedVoxelTags) {
     SCOPED_TRACE(rtl ? "RTL" : "clocked TLM");
     sysc::SystemConfig cfg = clocked_config(4, rtl);
     expect_clocked(s, cfg, want, stats);
-    // The shading units' tag variant (each tag's class and material).
+    // The shading units' and the gradient ring's tag variants (each tag's
+    // class and material; each sample's tag stored with it).
     if (!rtl) continue;
     cfg.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
+    expect_clocked(s, cfg, want, stats);
+    cfg.levels[static_cast<size_t>(sysc::Unit::Gradient)] = sysc::Level::Rtl;
     expect_clocked(s, cfg, want, stats);
   }
 }
@@ -305,7 +384,10 @@ TEST(SystemPerspective, ClockedFramesBackToBackWithAndWithoutGradients) {
       SCOPED_TRACE(std::string(effects) + (rtl ? ", RTL" : ", clocked TLM"));
       sysc::SystemConfig cfg = clocked_config(4, rtl);
       cfg.frames = 2;
-      if (rtl) cfg.levels[static_cast<size_t>(sysc::Unit::Addr)] = sysc::Level::Rtl;
+      if (rtl) {
+        cfg.levels[static_cast<size_t>(sysc::Unit::Addr)] = sysc::Level::Rtl;
+        cfg.levels[static_cast<size_t>(sysc::Unit::Gradient)] = sysc::Level::Rtl;
+      }
       expect_clocked(s, cfg, want, stats);
     }
   }
@@ -422,6 +504,12 @@ TEST(SystemPerspective, TheClockedTlmInterpolationUnitIsTheRingBeatByBeat) {
         ring->clock(in, a);
         tlm.clock(in, b);
         ASSERT_EQ(std::make_tuple(a.valid, a.step), std::make_tuple(b.valid, b.step)) << "cycle " << cycle;
+        // The step's control, which the gradient ring takes with the samples.
+        if (a.step >= 0) {
+          ASSERT_EQ(std::make_tuple(a.f.beam_start, a.f.beam_end, a.f.slice_start, a.f.slice_end, a.f.flush, a.pass_tag),
+                    std::make_tuple(b.f.beam_start, b.f.beam_end, b.f.slice_start, b.f.slice_end, b.f.flush, b.pass_tag))
+              << "cycle " << cycle;
+        }
         for (int k = 0; k < p; ++k) {
           if (!(a.valid >> k & 1)) continue;
           const auto i = static_cast<size_t>(k);
@@ -607,16 +695,26 @@ TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
   sysc::SystemConfig rtl;
   rtl.p = 4;
   rtl.levels = kRtl;
-  refused(rtl, s.host.regs, "the gradient unit has no perspective RTL yet");
+  refused(rtl, s.host.regs, "the composite unit has no perspective RTL yet");
   sysc::SystemConfig composite = clocked_config(4, false);
   composite.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
   refused(composite, s.host.regs, "the composite unit has no perspective RTL yet");
+  // The gradient ring's preconditions, named with what to do instead:
+  // five rows (a slice's neighbours would not be within its four stores).
+  sysc::SystemConfig gradient = clocked_config(4, false);
+  gradient.levels[static_cast<size_t>(sysc::Unit::Gradient)] = sysc::Level::Rtl;
+  golden::Registers short_rows = s.host.regs;
+  short_rows.dim[1] = 5;
+  refused(gradient, short_rows, "the RTL perspective gradient ring needs at least 6 rows");
   golden::Registers zdiff = s.host.regs;
   zdiff.gradient = true;
   zdiff.z_gradient = golden::ZGradient::VoxelDifferences;
   refused(clocked_config(4, false), zdiff, "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\"");
   if (CUBE4_TEST_RTL) {
     refused(clocked_config(2, true), s.host.regs, "CUBE4_SYSTEM_PERSP_PIPES");
+    sysc::SystemConfig gradient_p2 = clocked_config(2, false);
+    gradient_p2.levels[static_cast<size_t>(sysc::Unit::Gradient)] = sysc::Level::Rtl;
+    refused(gradient_p2, s.host.regs, "CUBE4_SYSTEM_PERSP_PIPES");
     // Tags need the ring's tag variant: p = 5 has the ring but no tag variant.
     golden::Registers tagged = s.host.regs;
     tagged.p.tag_bits = 2;
