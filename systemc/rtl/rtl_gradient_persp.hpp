@@ -92,14 +92,7 @@ class RtlGradientPersp final : public PerspGradientIf {
     M& m = *m_;
     const bool zero = tag >= static_cast<uint64_t>(plan_.K);
     const golden::PerspectiveSlice& s = plan_.persp[zero ? plan_.persp.size() - 1 : static_cast<size_t>(tag)];
-    auto ray = [&](int64_t v) { return static_cast<uint16_t>(word(zero ? 0 : v, kPerspRayBits)); };
-    m.spacing_i = word(s.spacing, kPerspPosBits);
-    m.ray0_x_i = word(s.ray0_x, kPerspPosBits);
-    m.ray0_y_i = word(s.ray0_y, kPerspPosBits);
-    m.rays_x_lo_i = ray(s.rays_x.lo);
-    m.rays_x_hi_i = ray(s.rays_x.hi);
-    m.rays_y_lo_i = ray(s.rays_y.lo);
-    m.rays_y_hi_i = ray(s.rays_y.hi);
+    drive_persp_rays(m, s, zero);
     m.behind_start_x_i = word(s.behind_x.start, kPerspPosBits);
     m.behind_start_y_i = word(s.behind_y.start, kPerspPosBits);
     m.behind_step_i = word(s.behind_x.step, kPerspPosBits);

@@ -23,6 +23,23 @@ namespace cube4::sysc {
 // The system's perspective rings' widths (systemc/CMakeLists.txt).
 constexpr int kPerspPosBits = 48, kPerspRayBits = 16;
 
+// The constants both perspective rings take of a pass: the rays' spacing,
+// ray 0's position and the rays that sample the slice, per axis (none in
+// the zero pass).
+template <class M>
+void drive_persp_rays(M& m, const golden::PerspectiveSlice& s, bool zero) {
+  auto pos = [](int64_t v) { return static_cast<uint64_t>(v) & ((uint64_t{1} << kPerspPosBits) - 1); };
+  auto ray = [&](int64_t v) { return static_cast<uint16_t>(static_cast<uint64_t>(zero ? 0 : v) & 0xffffu); };
+  static_assert(kPerspRayBits == 16, "the rays' ports are 16 bits");
+  m.spacing_i = pos(s.spacing);
+  m.ray0_x_i = pos(s.ray0_x);
+  m.ray0_y_i = pos(s.ray0_y);
+  m.rays_x_lo_i = ray(s.rays_x.lo);
+  m.rays_x_hi_i = ray(s.rays_x.hi);
+  m.rays_y_lo_i = ray(s.rays_y.lo);
+  m.rays_y_hi_i = ray(s.rays_y.hi);
+}
+
 template <class M>
 class RtlInterpPersp final : public PerspInterpIf {
  public:
@@ -64,19 +81,12 @@ class RtlInterpPersp final : public PerspInterpIf {
   Level level() const override { return Level::Rtl; }
 
  private:
-  static uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_t{1} << bits) - 1); }
   // The constants of the pass `tag` names (its sample slice; K: the zero pass, no rays).
   void drive_pass(uint64_t tag) {
     M& m = *m_;
     const bool zero = tag >= static_cast<uint64_t>(plan_.K);
     const golden::PerspectiveSlice& s = plan_.persp[zero ? plan_.persp.size() - 1 : static_cast<size_t>(tag)];
-    m.spacing_i = word(s.spacing, kPerspPosBits);
-    m.ray0_x_i = word(s.ray0_x, kPerspPosBits);
-    m.ray0_y_i = word(s.ray0_y, kPerspPosBits);
-    m.rays_x_lo_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_x.lo, kPerspRayBits));
-    m.rays_x_hi_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_x.hi, kPerspRayBits));
-    m.rays_y_lo_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_y.lo, kPerspRayBits));
-    m.rays_y_hi_i = static_cast<uint16_t>(word(zero ? 0 : s.rays_y.hi, kPerspRayBits));
+    drive_persp_rays(m, s, zero);
     m.recip_i = static_cast<uint32_t>(s.box_reciprocal);
   }
 
