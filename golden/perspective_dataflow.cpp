@@ -7,9 +7,7 @@ namespace cube4::golden {
 OperandHomes gradient_operand_homes(const AxisSlice& here, const AxisSlice* behind, const RealignDda& to_behind,
                                     const AxisSlice* ahead, const RealignDda& to_ahead, int64_t u, int frac_bits,
                                     int weight_bits) {
-  auto home = [&](const AxisSlice& on, int64_t a) {
-    return a >= on.rays.lo && a < on.rays.hi ? home_cell(ray_position(on.ray0, on.spacing, a), frac_bits) : kNoRow;
-  };
+  auto home = [&](const AxisSlice& on, int64_t a) { return ray_home(on, a, frac_bits); };
   OperandHomes out;
   out.home = home(here, u);
   out.side = {home(here, u - 1), home(here, u + 1)};
@@ -55,11 +53,7 @@ void reach_along(const Registers& r, int axis, AxisReach& out) {
         add(out.behind, h, o.behind[i]);
         add(out.ahead, h, o.ahead[i]);
       }
-      if (k + 1 < K) {
-        const AxisSlice next = axis_slice(ahead, axis);
-        if (u >= next.rays.lo && u < next.rays.hi)
-          out.drift.add(home_cell(ray_position(next.ray0, next.spacing, u), F) - h);
-      }
+      if (k + 1 < K) add(out.drift, h, ray_home(axis_slice(ahead, axis), u, F));
     }
     behind = here;
     here = ahead;

@@ -119,6 +119,10 @@ struct AxisSlice {  // one axis of a PerspectiveSlice
 inline AxisSlice axis_slice(const PerspectiveSlice& s, int axis) {
   return axis == 0 ? AxisSlice{s.ray0_x, s.spacing, s.rays_x} : AxisSlice{s.ray0_y, s.spacing, s.rays_y};
 }
+// Ray a's home on a slice along the axis, or kNoRow where it misses it.
+inline int64_t ray_home(const AxisSlice& on, int64_t a, int frac_bits) {
+  return a >= on.rays.lo && a < on.rays.hi ? home_cell(ray_position(on.ray0, on.spacing, a), frac_bits) : kNoRow;
+}
 struct OperandHomes {
   int64_t home = 0;                                                       // ray u's own, on slice k
   std::array<int64_t, 2> side{kNoRow, kNoRow};                            // rays u - 1, u + 1 on slice k
@@ -158,6 +162,28 @@ struct GradientWindow {
 };
 GradientWindow gradient_window(const Registers& r, const PerspectiveSlice& s, const PerspectiveSlice* behind,
                                const PerspectiveSlice* ahead, int64_t u);
+
+// Where the compositing ring is to blend a ray's sample (docs/perspective.md,
+// "The plan for the compositing ring"): the accumulator of a ray's sample
+// of slice k is stored on the lane of its home + 5 (its gradient's lane),
+// and the ray's accumulator of slice k - 1 lies at its home there, at most
+// `reach` cells away in either axis (largest_home_move()). So the sample is
+// blended `reach` columns after its gradient, where the 2 reach + 1 lanes
+// home + 5 - reach .. home + 5 + reach that may store its accumulator lie
+// at or before the blending lane (the window, 0 .. 2 reach back), and the
+// new accumulator goes back `reach` lanes to be stored: the one link
+// against the ring's direction, as Cube-4's compositing units have.
+constexpr int64_t composite_after_columns(int reach) { return kGradientAfterColumns + reach; }
+inline FormedCell composite_cell(int64_t position, int64_t row, int nx, int ny, int reach) {
+  FormedCell c = cell_behind(position, kGradientAfterBeams, composite_after_columns(reach), row, nx, ny);
+  c.valid = c.valid && c.pass >= 1;
+  c.pass -= 1;
+  return c;
+}
+// Its inverse: the stream position that blends the sample of cell (x, y) of a pass.
+constexpr int64_t composite_position(int64_t pass, int64_t x, int64_t y, int64_t row, int ny, int reach) {
+  return gradient_forming_position(pass, x, y, row, ny) + reach;
+}
 
 // The range of cell offsets, relative to the sample's own home, at which
 // one kind of operand lies over a frame, along one axis. An empty range

@@ -25,6 +25,7 @@
 #include "systemc/tlm/tlm_addr.hpp"
 #include "systemc/tlm/tlm_gradient_persp.hpp"
 #include "systemc/tlm/tlm_interp_persp.hpp"
+#include "tb/tests/perspective_views.hpp"
 #include "tb/tests/test_support.hpp"
 
 namespace {
@@ -84,21 +85,6 @@ std::pair<int64_t, int64_t> home(const golden::Registers& r, const golden::Persp
           golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, v), F)};
 }
 
-// A perspective view of a sphere from random angles (as the perspective
-// reach table's), the field of view 20 to 89 degrees, S 1 or 2: view n is
-// the same in every test that asks for it.
-std::string random_view(int n) {
-  std::mt19937 rng(20261206u + static_cast<unsigned>(n));
-  std::uniform_real_distribution<double> angle(-180, 180);
-  const int fov = 20 + 20 * (n % 4) + (n % 8 >= 4 ? 9 : 0);
-  const std::string rotate =
-      std::to_string(angle(rng)) + ", " + std::to_string(angle(rng)) + ", " + std::to_string(angle(rng));
-  return R"({"volume": {"synthetic": "sphere", "size": [24, 20, 16]}, "shading": true,
-      "view": {"projection": "perspective", "fov": )" +
-         std::to_string(fov) + R"(, "rotate": [)" + rotate + R"(]}, "output": {"width": 40, "height": 40},
-      "supersampling": )" +
-         std::to_string(1 + n % 2) + "}";
-}
 
 }  // namespace
 
@@ -110,7 +96,7 @@ TEST(GradientPersp, EveryRaysGradientIsGoldensAtItsPlannedPositionFromEveryFace)
     for (int S : {1, 2}) scenes.push_back(scene(kEyes[view], view % 2 ? 80 : 40, S));
   // Between the axes, where the outer rays are steepest: operands up to
   // three cells from the home on the slice and ahead.
-  for (int view = 0; view < 16; ++view) scenes.push_back(random_view(view));
+  for (int view = 0; view < 16; ++view) scenes.push_back(test::random_perspective_view(view));
   for (const std::string& json : scenes) {
     const test::Setup s = test::setup(json);
     const golden::Registers& r = s.host.regs;
@@ -179,7 +165,7 @@ TEST(GradientPersp, EveryRaysGradientIsGoldensAtItsPlannedPositionFromEveryFace)
 TEST(GradientPersp, EveryOperandIsFormedByItsGradientsPositionInRandomViews) {
   int64_t operands = 0;
   for (int view = 0; view < 40; ++view) {
-    const std::string json = random_view(view);
+    const std::string json = test::random_perspective_view(view);
     const test::Setup s = test::setup(json);
     const golden::Registers& r = s.host.regs;
     const int K = r.sample_slices(), nx = r.dim[0], ny = r.dim[1];
@@ -231,7 +217,7 @@ TEST(GradientPersp, EachBeamReadsOneSetOfRowsAndEachGradientASevenColumnWindow) 
   int64_t operands = 0, violations = 0;
   std::string first;
   for (int view = 0; view < 40; ++view) {
-    const test::Setup setup = test::setup(random_view(view));
+    const test::Setup setup = test::setup(test::random_perspective_view(view));
     const golden::Registers& r = setup.host.regs;
     const int K = r.sample_slices(), F = r.p.dda_frac_bits, W = r.p.weight_bits;
     std::vector<golden::PerspectiveSlice> slices;
