@@ -100,14 +100,18 @@ inline void write_pixel(BasePlane& bp, int u, int v, const Pixel& a) {
 // back image with a polygon frame), and with `bp.acc` the accumulators.
 // A perspective frame ends so (render_perspective(), the clocked
 // compositor of systemc/tlm/tlm_composite_persp.hpp).
+// One ray's pixel (x, y) as it leaves: the compositing ring writes each
+// ray so when it has blended its last sample.
+inline void write_ray(BasePlane& bp, int x, int y, const RayAcc& ray, const Precision& p,
+                      const PolygonFrame* polygons = nullptr) {
+  const size_t i = static_cast<size_t>(y) * bp.width + x;
+  write_pixel(bp, x, y, polygons ? leave_with_polygons(ray, polygons->back[i], p) : pixel_of(ray, p));
+  if (!bp.acc.empty()) bp.acc[i] = ray;
+}
 inline void write_rays(BasePlane& bp, const std::vector<RayAcc>& rays, const Precision& p,
                        const PolygonFrame* polygons = nullptr) {
   for (int y = 0; y < bp.height; ++y)
-    for (int x = 0; x < bp.width; ++x) {
-      const size_t i = static_cast<size_t>(y) * bp.width + x;
-      write_pixel(bp, x, y, polygons ? leave_with_polygons(rays[i], polygons->back[i], p) : pixel_of(rays[i], p));
-      if (!bp.acc.empty()) bp.acc[i] = rays[i];
-    }
+    for (int x = 0; x < bp.width; ++x) write_ray(bp, x, y, rays[static_cast<size_t>(y) * bp.width + x], p, polygons);
 }
 
 // The compositing unit over whole slices: the ray store, ray alignment,

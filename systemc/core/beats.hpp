@@ -86,6 +86,7 @@ struct RayGradientBeat {
 // cropping and the cut plane, by ray (the gradient beat's lanes).
 struct RayShadedBeat {
   uint32_t valid = 0;
+  int64_t step = -1;  // the stream step whose gradient beat it is (RayGradientBeat::step)
   std::array<uint16_t, kMaxLanes> red{}, green{}, blue{}, alpha{}, value{};
   std::array<int32_t, kMaxLanes> u{}, v{};
   std::array<uint32_t, kMaxLanes> tag{};

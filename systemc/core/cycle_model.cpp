@@ -20,7 +20,8 @@
 // cell + (5, 5) in the next pass), or without gradients its sample
 // (forming_position()), a beat a cycle from cycle 1; then the links, the
 // interpolation ring's 4 cycles, the gradient ring's 3 (no zero beam), the
-// shading unit and the compositor's 7 (systemc/tlm/tlm_composite_persp.hpp).
+// shading unit, and the compositor's 7 from the step that blends it,
+// kPerspectiveReach positions later (systemc/tlm/tlm_composite_persp.hpp).
 #include <algorithm>
 
 #include "golden/perspective.hpp"
@@ -32,11 +33,7 @@
 #include "systemc/tlm/tlm_shade.hpp"
 
 namespace cube4::sysc {
-namespace {
 
-// The stream position that forms a frame's last ray (its sample, or with
-// gradients its gradient): the largest over the slices of their last home
-// row, then column. -1 for a frame no ray samples.
 int64_t last_ray_position(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1], F = r.p.dda_frac_bits;
   const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
@@ -51,8 +48,6 @@ int64_t last_ray_position(const golden::Registers& r, int p) {
   }
   return last;
 }
-
-}  // namespace
 
 CycleCount frame_cycles(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1];
@@ -83,7 +78,7 @@ CycleCount frame_cycles(const golden::Registers& r, int p) {
   // In perspective the drain follows the beat of the frame's last ray.
   static_assert(TlmCompositePersp::kLatency == kComposite);
   if (const int64_t last = r.perspective ? last_ray_position(r, p) : -1; last >= 0)
-    c.latency = static_cast<uint64_t>(last / p) + 1 + drain;
+    c.latency = static_cast<uint64_t>((last + kPerspectiveReach) / p) + 1 + drain;
   c.latency_followed = c.latency + (zdiff ? static_cast<uint64_t>(ny) * B : 0);
   return c;
 }

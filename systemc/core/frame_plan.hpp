@@ -23,6 +23,12 @@ namespace cube4::sysc {
 // the slice number, below 2^16.
 using rtl::kSupersamplingBits;
 constexpr int kUserTagBits = 16;
+// The perspective compositing ring's reach R: how far a ray's home may
+// move from one slice to the next, in cells along either axis
+// (docs/perspective.md, "The plan for the compositing ring"). Three covers
+// every view the reach table measured; a frame that needs more is refused
+// at the clocked levels (check_perspective_levels(), system.cpp).
+constexpr int kPerspectiveReach = 3;
 
 // What travels with one partial beam of the pass order: its flags, the
 // pass's weights and the voxel slice it reads.

@@ -130,6 +130,25 @@ void check_perspective_levels(const golden::Registers& r, const SystemConfig& cf
     throw std::invalid_argument(
         "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
         "interpolation unit's clocked models have no voxel z differences yet; run --model tlm (docs/perspective.md)");
+  // The compositing ring's plan (docs/perspective.md): every ray moves at
+  // most its reach from slice to slice, and its last blend, that many
+  // positions after its last gradient, falls within the stream.
+  const int64_t move = golden::largest_home_move(golden::perspective_reach(r));
+  if (move > kPerspectiveReach)
+    throw std::invalid_argument(
+        "\"view\": a ray's home moves " + std::to_string(move) + " cells from one slice to the next, more than the "
+        "perspective compositing ring's reach " + std::to_string(kPerspectiveReach) +
+        " at the clocked levels; raise \"supersampling\" (each step halves the moves), narrow \"fov\", or run "
+        "--model tlm (docs/perspective.md)");
+  const int64_t row = static_cast<int64_t>((r.dim[0] + cfg.p - 1) / cfg.p) * cfg.p;
+  const int64_t stream_end = (static_cast<int64_t>(r.sample_slices() + (r.gradient ? 1 : 0)) * r.dim[1] +
+                              stream_flush_beams(true, r.gradient)) * row;
+  if (const int64_t last = last_ray_position(r, cfg.p); last >= 0 && last + kPerspectiveReach >= stream_end)
+    throw std::invalid_argument(
+        "volume: the view's permuted x axis has " + std::to_string(r.dim[0]) + " voxels, a beam of " +
+        std::to_string(row) + " stream positions at p = " + std::to_string(cfg.p) +
+        ": too short for the last ray's blend to fall within the stream's flush beams at the clocked levels; run "
+        "--model tlm, or more pipelines (a beam is padded to a multiple of p)");
   const bool rtl_interp = cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl;
   const bool rtl_gradient = r.gradient && cfg.levels[static_cast<size_t>(Unit::Gradient)] == Level::Rtl;
   // The gradient ring's preconditions (docs/rtl-gradient-persp.md): a

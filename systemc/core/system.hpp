@@ -156,6 +156,10 @@ struct CycleCount {
   uint64_t latency_followed = 0;
 };
 CycleCount frame_cycles(const golden::Registers& r, int p);
+// A perspective frame's stream position that forms its last ray (its
+// sample, or with gradients its gradient): the largest over the slices of
+// their last home row, then column. -1 for a frame no ray samples.
+int64_t last_ray_position(const golden::Registers& r, int p);
 
 // The threads a cycle-level run of `cfg` uses (SystemConfig::threads).
 int simulation_threads(const SystemConfig& cfg);

@@ -21,6 +21,7 @@
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/unit_registers.hpp"
 #include "systemc/rtl/vl_bits.hpp"
+#include "systemc/tlm/tlm_shade.hpp"
 
 namespace cube4::sysc {
 
@@ -139,10 +140,14 @@ template <class M>
 class RtlShadePersp final : public PerspShadeIf {
  public:
   RtlShadePersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
-      : units_(plan, ctx, trace, 0, -1) {}
+      : units_(plan, ctx, trace, 0, -1), steps_(static_cast<size_t>(shade_latency(plan.r.p)), -1) {}
 
   void clock(const RayGradientBeat& in, RayShadedBeat& out) override {
     out.valid = 0;
+    // The stream step travels beside the units (the rings' control does).
+    out.step = steps_[head_];
+    steps_[head_] = in.step;
+    if (++head_ == steps_.size()) head_ = 0;
     for (int k = units_.first; k < units_.last; ++k) {
       const auto i = static_cast<size_t>(k);
       const uint64_t side = (uint64_t(in.u[i] & 0xffff) << 4) | (uint64_t(in.v[i] & 0xffff) << 20) |
@@ -165,6 +170,8 @@ class RtlShadePersp final : public PerspShadeIf {
 
  private:
   RtlShadeUnits<M> units_;
+  std::vector<int64_t> steps_;  // circular, the units' latency long
+  size_t head_ = 0;
 };
 
 }  // namespace cube4::sysc

@@ -1,5 +1,6 @@
 #include "systemc/tlm/tlm_composite_persp.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -9,10 +10,12 @@
 
 namespace cube4::sysc {
 
-TlmCompositePersp::TlmCompositePersp(const FramePlan& plan, bool accumulators, const golden::PolygonFrame* polygons)
+TlmCompositePersp::TlmCompositePersp(const FramePlan& plan, bool accumulators, const golden::PolygonFrame* polygons,
+                                     int reach)
     : plan_(plan),
       accumulators_(accumulators),
       polygons_(polygons),
+      reach_(reach),
       origin_x_(plan.r.base_origin_x()),
       origin_y_(plan.r.base_origin_y()),
       per_frame_(golden::perspective_samples(plan.r)),
@@ -20,13 +23,18 @@ TlmCompositePersp::TlmCompositePersp(const FramePlan& plan, bool accumulators, c
   if (polygons && (polygons->width != plane_.width || polygons->height != plane_.height ||
                    polygons->slabs.size() != static_cast<size_t>(plan.K) || plan.r.blend != golden::BlendMode::Composite))
     throw std::logic_error("TlmCompositePersp: the polygon frame does not fit the registers' base plane and blend");
+  for (std::vector<Stored>& store : stores_) store.assign(static_cast<size_t>(plan.nx) * static_cast<size_t>(plan.ny), {});
   start_frame();
 }
 
+golden::RayAcc TlmCompositePersp::start(size_t pixel) const {
+  return polygons_ ? golden::pixel_to_acc(polygons_->front[pixel], plan_.r.p) : golden::RayAcc{};
+}
+
 void TlmCompositePersp::start_frame() {
-  rays_.assign(static_cast<size_t>(plane_.width) * plane_.height, golden::RayAcc{});
-  if (polygons_)
-    for (size_t i = 0; i < rays_.size(); ++i) rays_[i] = golden::pixel_to_acc(polygons_->front[i], plan_.r.p);
+  frame_ = golden::empty_base_plane(plan_.r);
+  if (accumulators_) frame_.acc.assign(static_cast<size_t>(frame_.width) * frame_.height, golden::RayAcc{});
+  written_.assign(static_cast<size_t>(frame_.width) * frame_.height, 0);
 }
 
 const std::vector<golden::Pixel>& TlmCompositePersp::slab(uint32_t k) {
@@ -48,13 +56,42 @@ const std::vector<golden::Pixel>& TlmCompositePersp::slab(uint32_t k) {
   return pixels;
 }
 
-void TlmCompositePersp::composite(const RayShadedBeat& in, size_t lane) {
-  const uint32_t k = in.tag[lane];
-  const int64_t u = in.u[lane], v = in.v[lane];
+void TlmCompositePersp::blend(const Sample& in, int64_t position, int64_t step) {
+  const uint32_t k = in.k;
+  const int64_t u = in.u, v = in.v;
+  auto where = [&] {
+    return "slice " + std::to_string(k) + ", ray (" + std::to_string(u) + ", " + std::to_string(v) +
+           "), stream position " + std::to_string(position);
+  };
   if (k >= static_cast<uint32_t>(plan_.K) || !golden::samples(plan_.persp[k], u, v))
-    throw std::logic_error("TlmCompositePersp: a sample of no ray of its slice (slice " + std::to_string(k) +
-                           ", ray (" + std::to_string(u) + ", " + std::to_string(v) + "))");
+    throw std::logic_error("TlmCompositePersp: a sample of no ray of its slice (" + where() + ")");
   const golden::PerspectiveSlice& s = plan_.persp[k];
+  const int F = plan_.r.p.dda_frac_bits;
+  const int64_t X = golden::ray_home(golden::axis_slice(s, 0), u, F), Y = golden::ray_home(golden::axis_slice(s, 1), v, F);
+  const int64_t pass = static_cast<int64_t>(frames_done_) * plan_.K + k;
+  const size_t pixel =
+      static_cast<size_t>(v + origin_y_) * static_cast<size_t>(frame_.width) + static_cast<size_t>(u + origin_x_);
+  // The ray's accumulator: of the slice before, at its home there, read by
+  // that home's column stage `d` positions before this blend.
+  golden::RayAcc ray = start(pixel);
+  if (k > 0 && golden::samples(plan_.persp[k - 1], u, v)) {
+    const golden::PerspectiveSlice& before = plan_.persp[k - 1];
+    const int64_t Xb = golden::ray_home(golden::axis_slice(before, 0), u, F);
+    const int64_t Yb = golden::ray_home(golden::axis_slice(before, 1), v, F);
+    if (std::abs(X - Xb) > reach_ || std::abs(Y - Yb) > reach_)
+      throw std::logic_error("TlmCompositePersp: the ray moves from (" + std::to_string(Xb) + ", " +
+                             std::to_string(Yb) + ") to (" + std::to_string(X) + ", " + std::to_string(Y) +
+                             "), beyond the reach " + std::to_string(reach_) + " (" + where() + ")");
+    const int64_t read = (position - (X - Xb + reach_)) / plan_.p;
+    const Stored& e = stores_[static_cast<size_t>((pass - 1) & 1)][static_cast<size_t>(Yb * plan_.nx + Xb)];
+    if (e.pass != pass - 1 || e.u != u || e.v != v)
+      throw std::logic_error("TlmCompositePersp: the ray's accumulator of the slice before is not in its store (" +
+                             where() + ")");
+    if (e.ready > read)
+      throw std::logic_error("TlmCompositePersp: the ray's accumulator of the slice before is stored at step " +
+                             std::to_string(e.ready) + ", read at step " + std::to_string(read) + " (" + where() + ")");
+    ray = e.acc;
+  }
   const golden::SamplePlace place = golden::sample_place(plan_.r, s, u, v);
   golden::SliceControl c;
   c.k = static_cast<int>(k);
@@ -63,28 +100,38 @@ void TlmCompositePersp::composite(const RayShadedBeat& in, size_t lane) {
   c.wx = place.wx;
   c.wy = place.wy;
   golden::ShadedSample shaded;
-  shaded.rgb = {in.red[lane], in.green[lane], in.blue[lane]};
-  shaded.alpha = in.alpha[lane];
-  shaded.value = in.value[lane];
+  shaded.rgb = {in.red, in.green, in.blue};
+  shaded.alpha = in.alpha;
+  shaded.value = in.value;
   const golden::ShadedSample out = golden::crop_and_cut(plan_.r, c, place.x, place.y, shaded);
-  const size_t i =
-      static_cast<size_t>(v + origin_y_) * static_cast<size_t>(plane_.width) + static_cast<size_t>(u + origin_x_);
-  golden::RayAcc& ray = rays_[i];
   if (!polygons_) {
     ray = golden::blend(plan_.r.blend, ray, out, plan_.r.p);
-    return;
+  } else {
+    // The slab's pixel (x, y) lies behind the slice's ray of rank (x, y).
+    const auto width = static_cast<size_t>(polygons_->slabs[k].width());
+    const golden::Pixel& behind =
+        slab(k)[static_cast<size_t>(v - s.rays_y.lo) * width + static_cast<size_t>(u - s.rays_x.lo)];
+    ray = golden::double_composite(ray, out, golden::sample_before_z(static_cast<int>(k), polygons_->z[pixel]),
+                                   behind, plan_.r.p);
   }
-  // The slab's pixel (x, y) lies behind the slice's ray of rank (x, y).
-  const auto width = static_cast<size_t>(polygons_->slabs[k].width());
-  const golden::Pixel& behind = slab(k)[static_cast<size_t>(v - s.rays_y.lo) * width + static_cast<size_t>(u - s.rays_x.lo)];
-  ray = golden::double_composite(ray, out, golden::sample_before_z(static_cast<int>(k), polygons_->z[i]), behind,
-                                 plan_.r.p);
+  stores_[static_cast<size_t>(pass & 1)][static_cast<size_t>(Y * plan_.nx + X)] = {ray, pass, u, v,
+                                                                                 step + kLatency + reach_};
+  // A ray that does not sample the next slice leaves: its pixel now.
+  if (k + 1 == static_cast<uint32_t>(plan_.K) || !golden::samples(plan_.persp[k + 1], u, v)) {
+    golden::write_ray(frame_, static_cast<int>(u + origin_x_), static_cast<int>(v + origin_y_), ray, plan_.r.p,
+                      polygons_);
+    written_[pixel] = 1;
+  }
 }
 
 void TlmCompositePersp::end_frame() {
-  plane_ = golden::empty_base_plane(plan_.r);
-  if (accumulators_) plane_.acc.assign(rays_.size(), golden::RayAcc{});
-  golden::write_rays(plane_, rays_, plan_.r.p, polygons_);
+  // Rays that sampled nothing leave as they started.
+  for (int y = 0; y < frame_.height; ++y)
+    for (int x = 0; x < frame_.width; ++x) {
+      const size_t i = static_cast<size_t>(y) * frame_.width + x;
+      if (!written_[i]) golden::write_ray(frame_, x, y, start(i), plan_.r.p, polygons_);
+    }
+  plane_ = std::move(frame_);
   start_frame();
   composited_ = 0;
   ++frames_done_;
@@ -94,12 +141,26 @@ void TlmCompositePersp::clock(const RayShadedBeat& in, CompositeOut& out) {
   out = CompositeOut{};
   out.frame_done = done_[head_];
   done_[head_] = false;
-  for (int k = 0; in.valid && k < plan_.p; ++k) {
-    if (!(in.valid >> k & 1)) continue;
-    composite(in, static_cast<size_t>(k));
-    if (++composited_ == per_frame_) {
-      end_frame();
-      done_[head_] = true;
+  if (in.step >= 0) {
+    for (int k = 0; k < plan_.p; ++k) {
+      if (!(in.valid >> k & 1)) continue;
+      const auto i = static_cast<size_t>(k);
+      pending_[in.step * plan_.p + k + reach_] = {in.red[i], in.green[i], in.blue[i], in.alpha[i], in.value[i],
+                                                  in.u[i],   in.v[i],     in.tag[i]};
+    }
+    // This step's positions blend, lane by lane.
+    const int64_t first = in.step * plan_.p;
+    while (!pending_.empty() && pending_.begin()->first < first + plan_.p) {
+      const auto [position, sample] = *pending_.begin();
+      pending_.erase(pending_.begin());
+      if (position < first)
+        throw std::logic_error("TlmCompositePersp: a sample due at stream position " + std::to_string(position) +
+                               " found no step there");
+      blend(sample, position, in.step);
+      if (++composited_ == per_frame_) {
+        end_frame();
+        done_[head_] = true;
+      }
     }
   }
   head_ = (head_ + 1) % done_.size();

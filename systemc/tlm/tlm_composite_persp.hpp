@@ -1,14 +1,24 @@
-// Compositing of perspective samples at transaction level, clocked: each
-// lane's shaded sample is cropped and cut at its place on its slice
-// (golden sample_place(), crop_and_cut()) and blended into its ray's
-// accumulator, kept by ray index (docs/perspective.md, "Rays and their
-// accumulators"), as golden render_perspective() composites it. Every
-// sample is blended: golden's skipping of transparent samples and stopped
-// rays is exact, so the pixels are the same, and so are the accumulators
-// (the full-α rule golden keeps them by). A frame ends with its last
-// sample, counted (golden perspective_samples()): then every ray's pixel
-// is written (golden write_rays()) and `frame_done` rises kLatency clocks
-// later, the parallel compositor's to the pixel port.
+// Compositing of perspective samples at transaction level, clocked, on the
+// compositing ring's plan (docs/perspective.md, "The plan for the
+// compositing ring"), which its RTL is to follow beat by beat: each lane's
+// shaded sample is blended `reach` stream positions after it arrives (its
+// lane + reach), cropped and cut at its place on its slice (golden
+// sample_place(), crop_and_cut()), into its ray's accumulator of the slice
+// before, read from the store of that slice's parity at the ray's home
+// there (at most `reach` cells away), or the empty accumulator where the
+// ray enters. The new accumulator is stored at the ray's home, ready
+// kLatency + reach steps after the blend (the blend's stages, then reach
+// lanes back); a ray that does not sample the next slice writes its pixel
+// instead (golden write_ray()). An accumulator that is not stored yet, or
+// no longer, when its ray blends again, or a move beyond the reach, is an
+// error (std::logic_error naming the ray and slice), so the unit checks the
+// plan while it runs. Every sample is blended: golden's skipping of
+// transparent samples and stopped rays is exact, so the pixels are the
+// same, and so are the accumulators (the full-α rule golden keeps them by).
+// A frame ends with its last sample, counted (golden
+// perspective_samples()): then the pixels of rays that sampled nothing are
+// written and `frame_done` rises kLatency clocks later, the parallel
+// compositor's to the pixel port.
 // With a polygon frame (Cube-5 in perspective, docs/perspective.md) each
 // ray starts from its front image pixel, a sample is blended only in front
 // of the ray's Z, each sample is followed by the ray's pixel of its
@@ -18,6 +28,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "golden/renderers.hpp"
@@ -31,7 +42,8 @@ class TlmCompositePersp final : public PerspCompositeIf {
   static constexpr int kLatency = 7;
 
   // `accumulators`: keep each frame's accumulators in its plane (BasePlane::acc).
-  TlmCompositePersp(const FramePlan& plan, bool accumulators, const golden::PolygonFrame* polygons = nullptr);
+  TlmCompositePersp(const FramePlan& plan, bool accumulators, const golden::PolygonFrame* polygons = nullptr,
+                    int reach = kPerspectiveReach);
   void clock(const RayShadedBeat& in, CompositeOut& out) override;
   Level level() const override { return Level::Tlm; }
 
@@ -41,7 +53,19 @@ class TlmCompositePersp final : public PerspCompositeIf {
   uint64_t samples_per_frame() const { return per_frame_; }
 
  private:
-  void composite(const RayShadedBeat& in, size_t lane);
+  struct Sample {  // one lane of a shaded beat
+    uint16_t red, green, blue, alpha, value;
+    int32_t u, v;
+    uint32_t k;
+  };
+  struct Stored {  // a ray's accumulator in a store
+    golden::RayAcc acc;
+    int64_t pass = -1;  // frame * K + slice: which slice of which frame
+    int64_t u = 0, v = 0;
+    int64_t ready = 0;  // the step from which it can be read
+  };
+  void blend(const Sample& in, int64_t position, int64_t step);
+  golden::RayAcc start(size_t pixel) const;
   void start_frame();
   void end_frame();
   // Slice k's slab image, decoded (the last two slices asked for are kept).
@@ -50,12 +74,15 @@ class TlmCompositePersp final : public PerspCompositeIf {
   const FramePlan& plan_;
   bool accumulators_;
   const golden::PolygonFrame* polygons_;
+  int reach_;
   std::array<std::pair<int64_t, std::vector<golden::Pixel>>, 2> slabs_{{{-1, {}}, {-1, {}}}};
   int origin_x_, origin_y_;
   uint64_t per_frame_, composited_ = 0, frames_done_ = 0;
-  std::vector<golden::RayAcc> rays_;
-  golden::BasePlane plane_;
-  std::array<bool, kLatency> done_{};  // circular delay line of frame ends
+  std::map<int64_t, Sample> pending_;     // by the stream position that blends it
+  std::array<std::vector<Stored>, 2> stores_;  // by pass parity, home row * nx + column
+  golden::BasePlane frame_, plane_;       // the frame being written, the last one done
+  std::vector<uint8_t> written_;          // the frame's pixels written (their rays left)
+  std::array<bool, kLatency> done_{};     // circular delay line of frame ends
   size_t head_ = 0;
 };
 

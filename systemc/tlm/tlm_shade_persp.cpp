@@ -15,6 +15,7 @@ void TlmShadePersp::clock(const RayGradientBeat& in, RayShadedBeat& out) {
   out = s;
   if (++head_ == line_.size()) head_ = 0;
   s.valid = in.valid;
+  s.step = in.step;
   for (int k = 0; in.valid && k < plan_.p; ++k) {
     if (!(in.valid >> k & 1)) continue;
     const auto i = static_cast<size_t>(k);

@@ -72,7 +72,10 @@ void expect_plane(const golden::BasePlane& want, const golden::BasePlane& got) {
 // cycle and the ring's 4. With `gradient`, the gradient unit's last
 // gradient instead: its position (gradient_forming_position()), then the
 // next link and the unit's 3 cycles.
-uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool gradient = false) {
+// The cycle a frame's last-formed ray leaves the interpolation unit (or
+// with `gradient` the gradient unit); `after` positions later in the
+// stream (the compositor blends kPerspectiveReach after its gradient).
+uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool gradient = false, int after = 0) {
   const int nx = r.dim[0], ny = r.dim[1], K = r.sample_slices();
   const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
   const int F = r.p.dda_frac_bits;
@@ -87,7 +90,7 @@ uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool g
     last = std::max(last, gradient ? golden::gradient_forming_position(pass, hx, hy, row, ny)
                                    : golden::forming_position(pass, hx, hy, row, ny));
   }
-  return static_cast<uint64_t>(last / p) + 1 + 1 + 4 + (gradient ? 1 + sysc::TlmGradientPersp::kLatency : 0);
+  return static_cast<uint64_t>((last + after) / p) + 1 + 1 + 4 + (gradient ? 1 + sysc::TlmGradientPersp::kLatency : 0);
 }
 
 }  // namespace
@@ -110,7 +113,8 @@ TEST(SystemPerspective, LooselyTimedTlmEqualsGoldenFromEveryFaceAtP1458) {
       // parallel one does (one voxel per pipeline per cycle), and ends when
       // its last ray's pixel is written: its last gradient's cycle (the
       // dataflow's position), the link, the shading unit and the
-      // compositor's 7, no later than the stream's last beat and the drain
+      // compositor's 7 from its blend kPerspectiveReach positions after the
+      // gradient, no later than the stream's last beat and the drain
       // (measured by the clocked tests below).
       ASSERT_TRUE(r.gradient);
       golden::Registers parallel = s.host.regs;
@@ -122,7 +126,8 @@ TEST(SystemPerspective, LooselyTimedTlmEqualsGoldenFromEveryFaceAtP1458) {
       // The result says what the same volume costs in parallel projection.
       EXPECT_EQ(res.parallel_frame_cycles, sysc::frame_cycles(parallel, p).latency);
       EXPECT_EQ(res.parallel_stream_cycles, res.stream_cycles);
-      EXPECT_EQ(cc.latency, last_sample_cycle(r, p, 1, true) + 1 + shade + 1 + sysc::TlmCompositePersp::kLatency);
+      EXPECT_EQ(cc.latency, last_sample_cycle(r, p, 1, true, sysc::kPerspectiveReach) + 1 + shade + 1 +
+                                sysc::TlmCompositePersp::kLatency);
       EXPECT_LE(cc.latency, cc.stream + cc.flush + 1 + 4 + 1 + sysc::TlmGradientPersp::kLatency + 1 + shade + 1 +
                                 sysc::TlmCompositePersp::kLatency);
     }
