@@ -3,18 +3,23 @@
 // many random views: each ray's accumulator of the slice before lies within
 // the blending lane's window and has been stored by the time it is read;
 // two accumulator stores suffice (and one does not); each ray samples one
-// run of slices, so its pixel is written once, when it leaves.
+// run of slices, so its pixel is written once, when it leaves. And the
+// clocked TLM compositor that follows the plan (systemc/tlm/
+// tlm_composite_persp.hpp) refuses what breaks it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <vector>
 
 #include "golden/perspective.hpp"
 #include "golden/perspective_dataflow.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/tlm/tlm_composite_persp.hpp"
 #include "tb/tests/perspective_views.hpp"
 #include "tb/tests/test_support.hpp"
 
@@ -136,4 +141,75 @@ TEST(CompositePersp, EveryRaySamplesOneRunOfSlices) {
     }
   }
   EXPECT_GT(rays, 10000);
+}
+
+// The clocked TLM compositor checks the plan as it runs: a ray's sample of
+// slice 1 blended before its accumulator of slice 0 is stored (7 + R steps
+// after that blend), or with none stored, or with a move beyond the unit's
+// reach, is an error naming the ray and slice.
+TEST(CompositePersp, TheClockedUnitRefusesWhatBreaksThePlan) {
+  const test::Setup setup = test::setup(test::random_perspective_view(3));
+  const golden::Registers& r = setup.host.regs;
+  const sysc::FramePlan plan(r, 4);
+  // A ray that samples slices 0 and 1 (the first rays do).
+  const golden::PerspectiveSlice& s0 = plan.persp[0];
+  const int64_t u = s0.rays_x.lo + (s0.rays_x.hi - s0.rays_x.lo) / 2, v = s0.rays_y.lo + (s0.rays_y.hi - s0.rays_y.lo) / 2;
+  ASSERT_TRUE(golden::samples(plan.persp[1], u, v));
+  auto beat = [&](int64_t step, uint32_t k) {
+    sysc::RayShadedBeat b;
+    b.step = step;
+    b.valid = 1;
+    b.u[0] = static_cast<int32_t>(u);
+    b.v[0] = static_cast<int32_t>(v);
+    b.tag[0] = k;
+    b.alpha[0] = 100;
+    return b;
+  };
+  auto expect_error = [&](const std::vector<sysc::RayShadedBeat>& beats, const std::string& says) {
+    sysc::TlmCompositePersp unit(plan, false);
+    sysc::CompositeOut out;
+    try {
+      for (const sysc::RayShadedBeat& b : beats) unit.clock(b, out);
+      ADD_FAILURE() << "ran; expected an error saying: " << says;
+    } catch (const std::logic_error& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("slice 1, ray (" + std::to_string(u) + ", " + std::to_string(v) + ")"),
+                std::string::npos)
+          << e.what();
+    }
+  };
+  expect_error({beat(0, 0), beat(1, 1)}, "is stored at step");
+  expect_error({beat(0, 1)}, "is not in its store");
+  // Given time, the same two samples blend.
+  sysc::TlmCompositePersp unit(plan, false);
+  sysc::CompositeOut out;
+  unit.clock(beat(0, 0), out);
+  EXPECT_NO_THROW(unit.clock(beat(1000, 1), out));
+  // A unit of reach 0 cannot follow a ray that moves.
+  const golden::PerspectiveReach reach = golden::perspective_reach(r);
+  ASSERT_GT(golden::largest_home_move(reach), 0);
+  int64_t moved_u = -1, moved_v = -1;
+  const golden::PerspectiveSlice& s1 = plan.persp[1];
+  for (int64_t a = s1.rays_x.lo; a < s1.rays_x.hi && moved_u < 0; ++a)
+    for (int64_t b = s1.rays_y.lo; b < s1.rays_y.hi && moved_u < 0; ++b)
+      if (golden::samples(s0, a, b)) {
+        const int F = r.p.dda_frac_bits;
+        if (golden::ray_home(golden::axis_slice(s0, 0), a, F) != golden::ray_home(golden::axis_slice(s1, 0), a, F) ||
+            golden::ray_home(golden::axis_slice(s0, 1), b, F) != golden::ray_home(golden::axis_slice(s1, 1), b, F)) {
+          moved_u = a;
+          moved_v = b;
+        }
+      }
+  ASSERT_GE(moved_u, 0);
+  sysc::TlmCompositePersp rigid(plan, false, nullptr, 0);
+  sysc::RayShadedBeat first = beat(0, 0), second = beat(1000, 1);
+  first.u[0] = second.u[0] = static_cast<int32_t>(moved_u);
+  first.v[0] = second.v[0] = static_cast<int32_t>(moved_v);
+  rigid.clock(first, out);
+  try {
+    rigid.clock(second, out);
+    ADD_FAILURE() << "a move beyond the reach ran";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("beyond the reach 0"), std::string::npos) << e.what();
+  }
 }

@@ -711,6 +711,11 @@ TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
   golden::Registers short_rows = s.host.regs;
   short_rows.dim[1] = 5;
   refused(gradient, short_rows, "the RTL perspective gradient ring needs at least 6 rows");
+  // Rays that move four cells a slice (every ray drifts by x_step), beyond
+  // the compositing ring's reach, at any clocked level.
+  golden::Registers drifting = s.host.regs;
+  drifting.x_step += int64_t{4} << drifting.p.dda_frac_bits;
+  refused(clocked_config(4, false), drifting, "more than the perspective compositing ring's reach 3");
   golden::Registers zdiff = s.host.regs;
   zdiff.gradient = true;
   zdiff.z_gradient = golden::ZGradient::VoxelDifferences;
