@@ -24,6 +24,7 @@ TlmCompositePersp::TlmCompositePersp(const FramePlan& plan, bool accumulators, c
                    polygons->slabs.size() != static_cast<size_t>(plan.K) || plan.r.blend != golden::BlendMode::Composite))
     throw std::logic_error("TlmCompositePersp: the polygon frame does not fit the registers' base plane and blend");
   for (std::vector<Stored>& store : stores_) store.assign(static_cast<size_t>(plan.nx) * static_cast<size_t>(plan.ny), {});
+  pending_.resize(static_cast<size_t>(2 * plan.p + reach));
   start_frame();
 }
 
@@ -142,20 +143,26 @@ void TlmCompositePersp::clock(const RayShadedBeat& in, CompositeOut& out) {
   out.frame_done = done_[head_];
   done_[head_] = false;
   if (in.step >= 0) {
+    const auto size = static_cast<int64_t>(pending_.size());
     for (int k = 0; k < plan_.p; ++k) {
       if (!(in.valid >> k & 1)) continue;
       const auto i = static_cast<size_t>(k);
-      pending_[in.step * plan_.p + k + reach_] = {in.red[i], in.green[i], in.blue[i], in.alpha[i], in.value[i],
-                                                  in.u[i],   in.v[i],     in.tag[i]};
+      const int64_t position = in.step * plan_.p + k + reach_;
+      Pending& slot = pending_[static_cast<size_t>(position % size)];
+      if (slot.position >= 0)
+        throw std::logic_error("TlmCompositePersp: a sample due at stream position " + std::to_string(slot.position) +
+                               " found no step there");
+      slot = {position, {in.red[i], in.green[i], in.blue[i], in.alpha[i], in.value[i], in.u[i], in.v[i], in.tag[i]}};
     }
     // This step's positions blend, lane by lane.
-    const int64_t first = in.step * plan_.p;
-    while (!pending_.empty() && pending_.begin()->first < first + plan_.p) {
-      const auto [position, sample] = *pending_.begin();
-      pending_.erase(pending_.begin());
-      if (position < first)
-        throw std::logic_error("TlmCompositePersp: a sample due at stream position " + std::to_string(position) +
+    for (int64_t position = in.step * plan_.p; position < (in.step + 1) * plan_.p; ++position) {
+      Pending& slot = pending_[static_cast<size_t>(position % size)];
+      if (slot.position < 0) continue;
+      if (slot.position != position)
+        throw std::logic_error("TlmCompositePersp: a sample due at stream position " + std::to_string(slot.position) +
                                " found no step there");
+      const Sample sample = slot.sample;
+      slot.position = -1;
       blend(sample, position, in.step);
       if (++composited_ == per_frame_) {
         end_frame();

@@ -28,7 +28,6 @@
 #pragma once
 #include <array>
 #include <cstdint>
-#include <map>
 #include <vector>
 
 #include "golden/renderers.hpp"
@@ -78,7 +77,13 @@ class TlmCompositePersp final : public PerspCompositeIf {
   std::array<std::pair<int64_t, std::vector<golden::Pixel>>, 2> slabs_{{{-1, {}}, {-1, {}}}};
   int origin_x_, origin_y_;
   uint64_t per_frame_, composited_ = 0, frames_done_ = 0;
-  std::map<int64_t, Sample> pending_;     // by the stream position that blends it
+  // Samples waiting for their blend, by the stream position that blends it
+  // (modulo the 2p + reach positions a sample can wait over).
+  struct Pending {
+    int64_t position = -1;
+    Sample sample;
+  };
+  std::vector<Pending> pending_;
   std::array<std::vector<Stored>, 2> stores_;  // by pass parity, home row * nx + column
   golden::BasePlane frame_, plane_;       // the frame being written, the last one done
   std::vector<uint8_t> written_;          // the frame's pixels written (their rays left)
