@@ -20,7 +20,7 @@
 //
 // Dataflow: the interpolation ring's samples arrive on the lane of their
 // home column + 2 (formed cell + 2), in the step that forms them, and are
-// stored there (cube4_gradient_persp_column: four slice stores per
+// stored there (cube4_persp_column: four slice stores per
 // pipeline, by pass mod 4, row and partial beam; a beam's last two cells,
 // which arrive in the next beam's first two columns, go to the next row's
 // entries of those lanes, which no cell of that row uses). Every step each
@@ -431,9 +431,10 @@ module cube4_gradient_persp_ring #(
       assign unused_vtag = ^vtag_i[k*T +: T];
     end
 
-    cube4_gradient_persp_column #(
+    cube4_persp_column #(
       .Width    (WordBits),
       .Reads    (Reads),
+      .StoreBits(2),
       .MaxDim   (MaxDim),
       .BeamDepth(BeamDepth)
     ) u_column (
@@ -441,6 +442,7 @@ module cube4_gradient_persp_ring #(
       .we_i    (valid_i && sample_valid_i[k]),
       .wstore_i(wstore),
       .wrow_i  (wrow),
+      .wcol_i  (col_now),
       .wdata_i (wdata),
       .col_i   (col_now),
       .store_i (stores),
