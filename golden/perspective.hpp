@@ -115,6 +115,24 @@ inline SamplePlace sample_place(const Registers& r, const PerspectiveSlice& s, i
   const SliceOffset y = dda_split(ray_position(s.ray0_y, s.spacing, v), F, W);
   return {x.integer, y.integer, x.weight, y.weight};
 }
+// The parallel pipeline's slice control of a sample at that place (its
+// slice, voxel slice and weights), which cropping and the cut plane read.
+inline SliceControl placed_control(const PerspectiveSlice& s, const SamplePlace& place) {
+  SliceControl c;
+  c.k = s.k;
+  c.z_voxel = s.z_voxel;
+  c.wz = s.wz;
+  c.wx = place.wx;
+  c.wy = place.wy;
+  return c;
+}
+// Ray (u, v)'s shaded sample on slice s, cropped and cut at its place: the
+// compositor's first stages (crop_and_cut(), rtl/cube4_composite.sv).
+inline ShadedSample perspective_crop_and_cut(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v,
+                                             const ShadedSample& shaded) {
+  const SamplePlace place = sample_place(r, s, u, v);
+  return crop_and_cut(r, placed_control(s, place), place.x, place.y, shaded);
+}
 
 // The neighbouring slice's sample straight behind (or ahead of) ray (u, v):
 // bilinear between the four rays of that slice around the point.

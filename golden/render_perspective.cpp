@@ -169,12 +169,7 @@ class Traversal {
                            : opt_.given_gradients ? opt_.given_gradients->gradient(k, u, v)
                                                   : gradient(u, v);
         const SamplePlace place = sample_place(r_, s, u, v);
-        SliceControl c;
-        c.k = k;
-        c.z_voxel = s.z_voxel;
-        c.wz = s.wz;
-        c.wx = place.wx;
-        c.wy = place.wy;
+        const SliceControl c = placed_control(s, place);
         const ShadedSample out = crop_and_cut(r_, c, place.x, place.y,
                                               shade_classified(r_, centre, tag, g, faces_.get()));
         if (opt_.probe) {

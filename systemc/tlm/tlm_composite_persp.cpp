@@ -93,18 +93,11 @@ void TlmCompositePersp::blend(const Sample& in, int64_t position, int64_t step) 
                              std::to_string(e.ready) + ", read at step " + std::to_string(read) + " (" + where() + ")");
     ray = e.acc;
   }
-  const golden::SamplePlace place = golden::sample_place(plan_.r, s, u, v);
-  golden::SliceControl c;
-  c.k = static_cast<int>(k);
-  c.z_voxel = s.z_voxel;
-  c.wz = s.wz;
-  c.wx = place.wx;
-  c.wy = place.wy;
   golden::ShadedSample shaded;
   shaded.rgb = {in.red, in.green, in.blue};
   shaded.alpha = in.alpha;
   shaded.value = in.value;
-  const golden::ShadedSample out = golden::crop_and_cut(plan_.r, c, place.x, place.y, shaded);
+  const golden::ShadedSample out = golden::perspective_crop_and_cut(plan_.r, s, u, v, shaded);
   if (!polygons_) {
     ray = golden::blend(plan_.r.blend, ray, out, plan_.r.p);
   } else {

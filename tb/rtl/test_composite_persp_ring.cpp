@@ -1,0 +1,287 @@
+// RTL equivalence tests of the perspective compositing ring,
+// cube4_composite_persp_ring, against golden: every ray's samples,
+// cropped and blended in slice order (golden perspective_crop_and_cut()
+// and blend()), starting empty where the ray enters; its accumulator and
+// pixel (golden pixel_of()) leave once a frame, when it blends its last
+// sample, on the pipeline and in the cycle the plan gives
+// (golden composite_position(): its gradient's position + Reach, 7 cycles
+// after that step; docs/perspective.md, "The plan for the compositing
+// ring"). Random cameras (random registers as the host makes them, and the
+// cameras of random perspective scenes) whose rays move at most Reach,
+// streamed as the system streams frames (one or two back to back, the zero
+// pass and six flush beams) with random idle cycles; random shaded samples
+// arriving where the gradient ring forms them; front-to-back, MIP and
+// MinIP blends, with and without cropping.
+//
+// CUBE4_RTL_VECTORS overrides the sample count per ring (default 1,000,000).
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "Vcube4_composite_persp_ring.h"
+#include "Vcube4_composite_persp_ring_p1.h"
+#include "Vcube4_composite_persp_ring_p5.h"
+#include "golden/perspective.hpp"
+#include "golden/perspective_dataflow.hpp"
+#include "tb/rtl/persp_registers.hpp"
+#include "tb/rtl/rtl_check.hpp"
+
+namespace {
+
+namespace g = cube4::golden;
+namespace rtl = cube4::rtl;
+
+constexpr int kV = 12, kF = 20, kDda = 48, kRay = 16, kTag = 8, kA = 16, kG = 8, kPos = 16;
+constexpr int kMaxDim = 24, kReach = 3;  // rtl/groups/composite_persp.cmake
+constexpr int kFlushBeams = 6;
+
+uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_t{1} << bits) - 1); }
+
+struct Expect {
+  int pass = 0;
+  int64_t u = 0, v = 0;
+  g::RayAcc acc;
+  bool seen = false;
+};
+
+// Streams `frames` frames of registers r through ring m, checking every
+// ray that leaves. Returns the samples blended.
+template <class M>
+long stream_frames(M& m, int p, const g::Registers& r, int frames, rtl::Random& rng, rtl::Checker& c, uint64_t& cycle) {
+  const int K = r.sample_slices(), nx = r.dim[0], ny = r.dim[1];
+  const int B = (nx + p - 1) / p;
+  const int64_t row = int64_t{B} * p;
+  const int passes = frames * K;
+  std::vector<g::PerspectiveSlice> slices;
+  for (int k = 0; k < K; ++k) slices.push_back(g::perspective_slice(r, k));
+
+  // Random shaded samples of every ray of every slice of every frame.
+  std::map<std::tuple<int, int64_t, int64_t>, g::ShadedSample> samples;  // (pass, u, v)
+  for (int f = 0; f < frames; ++f)
+    for (int k = 0; k < K; ++k) {
+      const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
+      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+          g::ShadedSample x;
+          x.rgb = {static_cast<uint32_t>(rng.edgy((1 << kA) - 1)), static_cast<uint32_t>(rng.edgy((1 << kA) - 1)),
+                   static_cast<uint32_t>(rng.edgy((1 << kA) - 1))};
+          x.alpha = static_cast<uint32_t>(rng.chance(0.3) ? 0 : rng.edgy((1 << kA) - 1));
+          x.value = static_cast<uint32_t>(rng.bits(kV));
+          samples[{f * K + k, u, v}] = x;
+        }
+    }
+  // Golden: each ray's accumulator over its run of slices, leaving at its
+  // last, by the step and lane that blend that sample.
+  std::map<int64_t, std::map<int, Expect>> want;
+  long blended = 0;
+  for (int f = 0; f < frames; ++f) {
+    std::map<std::pair<int64_t, int64_t>, g::RayAcc> rays;
+    for (int k = 0; k < K; ++k) {
+      const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
+      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
+          g::RayAcc& acc = rays[{u, v}];
+          acc = g::blend(r.blend, acc, g::perspective_crop_and_cut(r, s, u, v, samples.at({f * K + k, u, v})), r.p);
+          ++blended;
+          if (k + 1 < K && g::samples(slices[static_cast<size_t>(k + 1)], u, v)) continue;
+          const int64_t X = g::ray_home(g::axis_slice(s, 0), u, kF), Y = g::ray_home(g::axis_slice(s, 1), v, kF);
+          const int64_t pos = g::composite_position(int64_t{f} * K + k, X, Y, row, ny, kReach);
+          want[pos / p][static_cast<int>(pos % p)] = {f * K + k, u, v, acc, false};
+        }
+    }
+  }
+
+  std::map<uint64_t, int64_t> due;  // the cycle a step's rays leave in -> the step
+  auto observe = [&] {
+    const auto d = due.find(cycle);
+    std::map<int, Expect>* lanes = nullptr;
+    int64_t step = -1;
+    if (d != due.end()) {
+      step = d->second;
+      const auto w = want.find(step);
+      if (w != want.end()) lanes = &w->second;
+      due.erase(d);
+    }
+    for (int lane = 0; lane < p; ++lane) {
+      const bool valid = rtl::get_bits(m.pixel_valid_o, lane, 1) != 0;
+      Expect* e = nullptr;
+      if (lanes) {
+        const auto it = lanes->find(lane);
+        if (it != lanes->end()) e = &it->second;
+      }
+      const rtl::Fields where{{"step", step}, {"lane", lane}, {"nx", nx}, {"ny", ny}, {"nz", r.dim[2]},
+                              {"S", r.supersampling}, {"frames", frames}, {"blend", static_cast<int>(r.blend)}};
+      if (valid != (e != nullptr)) {
+        c.check(cycle, where, {{"leaves", e != nullptr}}, {{"leaves", valid}});
+        continue;
+      }
+      if (!e) continue;
+      e->seen = true;
+      auto bits = [&](const auto& port, int width) { return static_cast<int64_t>(rtl::get_bits(port, lane * width, width)); };
+      const g::Pixel px = g::pixel_of(e->acc, r.p);
+      c.check(cycle, where,
+              {{"pass", e->pass}, {"u", e->u}, {"v", e->v}, {"r", e->acc.r}, {"g", e->acc.g}, {"b", e->acc.b},
+               {"a", e->acc.a}, {"value", e->acc.value}, {"selected", e->acc.valid}, {"pixel r", px.r},
+               {"pixel g", px.g}, {"pixel b", px.b}, {"pixel a", px.a}},
+              {{"pass", bits(m.tag_o, kTag)}, {"u", rtl::sign_extend(rtl::get_bits(m.ray_u_o, lane * kRay, kRay), kRay)},
+               {"v", rtl::sign_extend(rtl::get_bits(m.ray_v_o, lane * kRay, kRay), kRay)},
+               {"r", bits(m.acc_red_o, kA + kG)}, {"g", bits(m.acc_green_o, kA + kG)},
+               {"b", bits(m.acc_blue_o, kA + kG)}, {"a", bits(m.acc_alpha_o, kA + kG)},
+               {"value", bits(m.acc_value_o, kV)}, {"selected", bits(m.acc_selected_o, 1)},
+               {"pixel r", bits(m.pixel_red_o, kA)}, {"pixel g", bits(m.pixel_green_o, kA)},
+               {"pixel b", bits(m.pixel_blue_o, kA)}, {"pixel a", bits(m.pixel_alpha_o, kA)}});
+    }
+  };
+  auto clock = [&] {
+    rtl::settle(m);
+    rtl::rise(m);
+    ++cycle;
+    rtl::settle(m);
+    observe();
+  };
+  // The frame registers.
+  m.blend_mode_i = static_cast<uint8_t>(r.blend);
+  m.crop_enabled_i = r.crop_enabled;
+  m.crop_x_lo_i = static_cast<uint16_t>(r.crop.slab[0][0]);
+  m.crop_x_hi_i = static_cast<uint16_t>(r.crop.slab[0][1]);
+  m.crop_y_lo_i = static_cast<uint16_t>(r.crop.slab[1][0]);
+  m.crop_y_hi_i = static_cast<uint16_t>(r.crop.slab[1][1]);
+  m.crop_z_lo_i = static_cast<uint16_t>(r.crop.slab[2][0]);
+  m.crop_z_hi_i = static_cast<uint16_t>(r.crop.slab[2][1]);
+  m.crop_mask_i = r.crop.mask;
+  m.cut_enabled_i = 0;
+  // A pass's constants at its first step (the zero pass: no rays), random
+  // words elsewhere.
+  auto drive_constants = [&](const g::PerspectiveSlice* s, int pass, bool zero) {
+    auto pos = [&](int64_t v) { return word(s ? v : static_cast<int64_t>(rng.bits(kDda)), kDda); };
+    auto ray = [&](int64_t v) {
+      return static_cast<uint16_t>(word(s && !zero ? v : s ? 0 : static_cast<int64_t>(rng.bits(kRay)), kRay));
+    };
+    const g::PerspectiveSlice none;
+    const g::PerspectiveSlice& q = s ? *s : none;
+    m.spacing_i = pos(q.spacing);
+    m.ray0_x_i = pos(q.ray0_x);
+    m.ray0_y_i = pos(q.ray0_y);
+    m.rays_x_lo_i = ray(q.rays_x.lo);
+    m.rays_x_hi_i = ray(q.rays_x.hi);
+    m.rays_y_lo_i = ray(q.rays_y.lo);
+    m.rays_y_hi_i = ray(q.rays_y.hi);
+    m.z_voxel_i = static_cast<uint16_t>(s ? q.z_voxel : static_cast<int>(rng.bits(kPos)));
+    m.wz_i = static_cast<uint8_t>(s ? q.wz : rng.bits(8));
+    const int k = pass % K;
+    m.first_i = s ? (!zero && k == 0) : rng.bits(1);
+    m.last_i = s ? (!zero && k == K - 1) : rng.bits(1);
+    m.tag_i = static_cast<uint8_t>(s ? pass : static_cast<int>(rng.bits(kTag)));
+  };
+
+  int64_t step = 0;
+  for (int pass = 0; pass <= passes && c.ok(); ++pass) {
+    const bool zero = pass == passes;
+    const g::PerspectiveSlice& s = slices[static_cast<size_t>(zero ? 0 : pass % K)];
+    for (int b = 0; b < ny + (zero ? kFlushBeams : 0) && c.ok(); ++b)
+      for (int j = 0; j < B && c.ok(); ++j, ++step) {
+        while (rng.chance(0.15)) {
+          m.valid_i = 0;
+          m.sample_valid_i = static_cast<uint32_t>(rng.bits(p));
+          clock();
+        }
+        const bool flush = b >= ny;
+        m.valid_i = 1;
+        m.beam_start_i = j == 0;
+        m.beam_end_i = j == B - 1;
+        m.slice_start_i = !flush && b == 0;
+        m.slice_end_i = !flush && b == ny - 1;
+        m.flush_i = flush;
+        drive_constants(!flush && b == 0 && j == 0 ? &s : nullptr, pass, zero);
+        uint32_t valid = 0;
+        for (int lane = 0; lane < p; ++lane) {
+          g::ShadedSample x;
+          x.rgb = {static_cast<uint32_t>(rng.bits(kA)), static_cast<uint32_t>(rng.bits(kA)),
+                   static_cast<uint32_t>(rng.bits(kA))};
+          x.alpha = static_cast<uint32_t>(rng.bits(kA));
+          x.value = static_cast<uint32_t>(rng.bits(kV));
+          const g::FormedCell fc = g::gradient_cell(step * p + lane, row, nx, ny);
+          if (fc.valid && fc.pass < passes) {
+            const int k = static_cast<int>(fc.pass % K);
+            const g::PerspectiveSlice& at = slices[static_cast<size_t>(k)];
+            const g::HomeLane hu = g::home_lane(at.ray0_x, at.spacing, at.rays_x, fc.x, kF, r.p.weight_bits);
+            const g::HomeLane hv = g::home_lane(at.ray0_y, at.spacing, at.rays_y, fc.y, kF, r.p.weight_bits);
+            if (hu.valid && hv.valid) {
+              valid |= 1u << lane;
+              x = samples.at({static_cast<int>(fc.pass), hu.ray, hv.ray});
+            }
+          }
+          rtl::put_bits(m.red_i, lane * kA, kA, x.rgb[0]);
+          rtl::put_bits(m.green_i, lane * kA, kA, x.rgb[1]);
+          rtl::put_bits(m.blue_i, lane * kA, kA, x.rgb[2]);
+          rtl::put_bits(m.alpha_i, lane * kA, kA, x.alpha);
+          rtl::put_bits(m.value_i, lane * kV, kV, x.value);
+        }
+        m.sample_valid_i = valid;
+        due[cycle + 7] = step;
+        clock();
+      }
+  }
+  m.valid_i = 0;
+  for (int i = 0; i < 12; ++i) clock();
+  for (const auto& [at, lanes] : want)
+    for (const auto& [lane, e] : lanes)
+      if (!e.seen && c.ok())
+        c.check(cycle, {{"pass", e.pass}, {"u", e.u}, {"v", e.v}, {"due at step", at}, {"lane", lane}},
+                {{"left", 1}}, {{"left", 0}});
+  return blended;
+}
+
+template <class M>
+void test_ring(int p, uint64_t salt) {
+  rtl::Random rng(salt);
+  const auto dut = rtl::make_dut<M>();
+  M& m = *dut;
+  rtl::reset(m);
+  const std::string name = "cube4_composite_persp_ring p=" + std::to_string(p);
+  rtl::Checker c(name);
+  const long n = rtl::vector_count(1000000);
+  rtl::Timer t(name + ": " + std::to_string(n) + " samples");
+  uint64_t cycle = 0;
+  long blended = 0;
+  int streams = 0;
+  while (blended < n && c.ok()) {
+    g::Registers r = rtl::ring_registers(rng, kF, {11, 7}, kMaxDim);
+    // The ring's preconditions: ny >= 6, a beam of at least 8 + Reach
+    // positions, moves within the reach.
+    const int64_t row = static_cast<int64_t>((r.dim[0] + p - 1) / p) * p;
+    if (r.dim[1] < 6 || row < 8 + kReach || r.dim[0] > kMaxDim || r.dim[1] > kMaxDim) continue;
+    if (g::largest_home_move(g::perspective_reach(r)) > kReach) continue;
+    const int frames = rng.chance(0.3) ? 2 : 1;
+    if (frames * r.sample_slices() + 1 > (1 << kTag) - 1) continue;
+    const int mode = static_cast<int>(rng.range(0, 3));
+    r.blend = mode == 1 ? g::BlendMode::Mip : mode == 2 ? g::BlendMode::MinIp : g::BlendMode::Composite;
+    r.crop_enabled = rng.chance(0.3);
+    for (auto& slab : r.crop.slab) {
+      slab[0] = static_cast<int32_t>(rng.range(0, 12));
+      slab[1] = static_cast<int32_t>(rng.range(slab[0], 24));
+    }
+    r.crop.mask = static_cast<uint8_t>(rng.bits(8));
+    blended += stream_frames(m, p, r, frames, rng, c, cycle);
+    ++streams;
+  }
+  EXPECT_TRUE(c.ok()) << c.report();
+  std::printf("  [%s: %d streams]\n", name.c_str(), streams);
+}
+
+TEST(RtlCompositePerspRing, EveryRayLeavesOnceWithGoldensAccumulatorWhereThePlanSaysAtP4) {
+  test_ring<Vcube4_composite_persp_ring>(4, 91);
+}
+TEST(RtlCompositePerspRing, EveryRayLeavesOnceWithGoldensAccumulatorWhereThePlanSaysAtP1) {
+  test_ring<Vcube4_composite_persp_ring_p1>(1, 92);
+}
+TEST(RtlCompositePerspRing, EveryRayLeavesOnceWithGoldensAccumulatorWhereThePlanSaysAtP5) {
+  test_ring<Vcube4_composite_persp_ring_p5>(5, 93);
+}
+
+}  // namespace
