@@ -172,79 +172,45 @@ module cube4_composite_persp_ring #(
   localparam int unsigned PSpacing = PRay0X + DdaBits;
   localparam int unsigned PassBits = PSpacing + DdaBits;
 
-  logic  pass_start;
-  assign pass_start = valid_i && slice_start_i && beam_start_i && !flush_i;
+  // Where the step is (cube4_persp_stream): its pass and partial beam, and
+  // the beams before it, d back (0: its own), as the gradient ring has them.
+  logic                 pass_start;
+  logic [1:0]           pass_now;
+  logic [ColBits-1:0]   col_now;
+  /* verilator lint_off UNUSEDSIGNAL */  // each use reads the beams it needs (4 and 5 back here)
+  logic [6:0]           beam_real, beam_after_first, beam_last_row;
+  logic [7*RowBits-1:0] beam_row;
+  logic [7*2-1:0]       beam_pass;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [RowBits:0]     ny_q;  // rows per pass, counted at each pass's end
+  cube4_persp_stream #(
+    .MaxDim  (MaxDim),
+    .NumPipes(P)
+  ) u_stream (
+    .clk_i             (clk_i),
+    .rst_ni            (rst_ni),
+    .valid_i           (valid_i),
+    .beam_start_i      (beam_start_i),
+    .beam_end_i        (beam_end_i),
+    .slice_start_i     (slice_start_i),
+    .slice_end_i       (slice_end_i),
+    .flush_i           (flush_i),
+    .pass_start_o      (pass_start),
+    .pass_now_o        (pass_now),
+    .col_now_o         (col_now),
+    .beam_real_o       (beam_real),
+    .beam_after_first_o(beam_after_first),
+    .beam_last_row_o   (beam_last_row),
+    .beam_row_o        (beam_row),
+    .beam_pass_o       (beam_pass),
+    .ny_o              (ny_q)
+  );
 
-  logic [1:0] pass_q, pass_now;  // the streaming pass, mod 4
-  assign pass_now = pass_start ? pass_q + 2'd1 : pass_q;
   logic [PassBits-1:0] passes_q [4];
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      pass_q <= 2'd3;  // the stream's first pass is pass 0
-    end else begin
-      pass_q <= pass_now;
-    end
-  end
   always_ff @(posedge clk_i) begin
     if (pass_start) begin
       passes_q[pass_now] <= {spacing_i, ray0_x_i, ray0_y_i, rays_x_lo_i, rays_x_hi_i, rays_y_lo_i, rays_y_hi_i,
                              z_voxel_i, wz_i, first_i, last_i, tag_i};
-    end
-  end
-
-  // Passes started since reset, saturating at 2: whether the step's pass
-  // has one before it.
-  logic [1:0] started_q;
-  logic       after_first;
-  assign after_first = pass_start ? started_q != 2'd0 : started_q == 2'd2;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      started_q <= '0;
-    end else if (pass_start && started_q != 2'd2) begin
-      started_q <= started_q + 2'd1;
-    end
-  end
-
-  // -------------------------------------------------------------------------
-  // Where the step is, and the last six beams (as the gradient ring's).
-  typedef struct packed {
-    logic               real_beam;
-    logic               after_first;
-    logic               last_row;
-    logic [RowBits-1:0] row;
-    logic [1:0]         pass;
-  } beam_t;
-
-  logic [RowBits-1:0] row_q, row_now;
-  logic [ColBits-1:0] col_q, col_now;
-  logic [RowBits:0]   ny_q;  // rows per pass, counted at each pass's end
-  assign row_now = slice_start_i ? '0 : row_q;  // slice_start_i marks all of beam 0
-  assign col_now = beam_start_i ? '0 : col_q;
-
-  localparam int unsigned BeamBits = 3 + RowBits + 2;  // beam_t
-  /* verilator lint_off UNUSEDSIGNAL */  // the fields each use reads
-  beam_t beam_now, beam4, beam5;
-  /* verilator lint_on UNUSEDSIGNAL */
-  logic [6*BeamBits-1:0] beams_q;  // beam d back at [(d-1)*BeamBits]
-  assign beam_now = {!flush_i, after_first, slice_end_i, row_now, pass_now};
-  assign beam4    = beams_q[3*BeamBits +: BeamBits];
-  assign beam5    = beams_q[4*BeamBits +: BeamBits];
-  logic unused_beams;  // beams 1 to 3 and 6 back: only the histories below need them
-  assign unused_beams = ^{beams_q[0 +: 3*BeamBits], beams_q[5*BeamBits +: BeamBits]};
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      row_q   <= '0;
-      col_q   <= '0;
-      ny_q    <= '0;
-      beams_q <= '0;
-    end else if (valid_i) begin
-      col_q <= col_now + ColBits'(1);
-      if (beam_end_i) begin
-        row_q <= row_now + RowBits'(1);
-        if (slice_end_i && !flush_i) ny_q <= (RowBits+1)'(row_now) + (RowBits+1)'(1);
-        beams_q <= {beams_q[0 +: 5*BeamBits], beam_now};
-      end
     end
   end
 
@@ -267,7 +233,7 @@ module cube4_composite_persp_ring #(
   // and the sample's row and weight; the ray's home row on the slice before
   // and whether it samples the slices before and after come with them.
   logic [1:0] gpass;
-  assign gpass = beam5.pass - 2'd1;
+  assign gpass = beam_pass[5*2 +: 2] - 2'd1;
   /* verilator lint_off UNUSEDSIGNAL */  // each use reads a few fields
   logic [PassBits-1:0] gp, gp_before, gp_after, next_gp;
   /* verilator lint_on UNUSEDSIGNAL */
@@ -277,9 +243,9 @@ module cube4_composite_persp_ring #(
 
   logic beam_last, next_forms, walk_start_y;
   assign beam_last    = valid_i && beam_end_i;
-  assign next_forms   = beam4.real_beam && beam4.after_first;
-  assign walk_start_y = beam_last && next_forms && beam4.row == '0;
-  assign next_gp      = passes_q[beam4.pass - 2'd1];
+  assign next_forms   = beam_real[4] && beam_after_first[4];
+  assign walk_start_y = beam_last && next_forms && beam_row[4*RowBits +: RowBits] == '0;
+  assign next_gp      = passes_q[beam_pass[4*2 +: 2] - 2'd1];
 
   logic [0:0]                  y_valid;
   logic [RayBits-1:0]          y_ray;
@@ -335,8 +301,8 @@ module cube4_composite_persp_ring #(
   /* verilator lint_off UNUSEDSIGNAL */  // the column stages read the rows, the blends the rest
   logic [CtxBits-1:0] ctx_now, ctx_prev_q;
   /* verilator lint_on UNUSEDSIGNAL */
-  assign ctx_now = {beam5.real_beam && beam5.after_first && y_valid[0], gpass, y_ray, y_to_after, y_from_before,
-                    y_before[RowBits-1:0], beam5.row, y_weight};
+  assign ctx_now = {beam_real[5] && beam_after_first[5] && y_valid[0], gpass, y_ray, y_to_after, y_from_before,
+                    y_before[RowBits-1:0], beam_row[5*RowBits +: RowBits], y_weight};
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       ctx_prev_q <= '0;

@@ -160,88 +160,49 @@ module cube4_gradient_persp_ring #(
   localparam int unsigned PSpacing    = PRay0X + PosBits;
   localparam int unsigned PassBits    = PSpacing + PosBits;
 
-  logic  pass_start;
-  assign pass_start = valid_i && slice_start_i && beam_start_i && !flush_i;
+  // Where the step is (cube4_persp_stream): its pass and partial beam, and
+  // the beams before it, d back (0: its own): whether each was a pass's
+  // beam (not a flush beam) and of one after the stream's first (whose
+  // beams form the cells of the pass before), whether it was its pass's
+  // last, its row and its pass.
+  logic                 pass_start;
+  logic [1:0]           pass_now;
+  logic [ColBits-1:0]   col_now;
+  /* verilator lint_off UNUSEDSIGNAL */  // each use reads the beams it needs (2 to 5 back here)
+  logic [6:0]           beam_real, beam_after_first, beam_last_row;
+  logic [7*RowBits-1:0] beam_row;
+  logic [7*2-1:0]       beam_pass;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [RowBits:0]     ny_q;  // rows per pass, counted at each pass's end
+  cube4_persp_stream #(
+    .MaxDim  (MaxDim),
+    .NumPipes(P)
+  ) u_stream (
+    .clk_i             (clk_i),
+    .rst_ni            (rst_ni),
+    .valid_i           (valid_i),
+    .beam_start_i      (beam_start_i),
+    .beam_end_i        (beam_end_i),
+    .slice_start_i     (slice_start_i),
+    .slice_end_i       (slice_end_i),
+    .flush_i           (flush_i),
+    .pass_start_o      (pass_start),
+    .pass_now_o        (pass_now),
+    .col_now_o         (col_now),
+    .beam_real_o       (beam_real),
+    .beam_after_first_o(beam_after_first),
+    .beam_last_row_o   (beam_last_row),
+    .beam_row_o        (beam_row),
+    .beam_pass_o       (beam_pass),
+    .ny_o              (ny_q)
+  );
 
-  logic [1:0] pass_q, pass_now;  // the streaming pass, mod 4
-  assign pass_now = pass_start ? pass_q + 2'd1 : pass_q;
   logic [PassBits-1:0] passes_q [4];
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      pass_q <= 2'd3;  // the stream's first pass is pass 0
-    end else begin
-      pass_q <= pass_now;
-    end
-  end
   always_ff @(posedge clk_i) begin
     if (pass_start) begin
       passes_q[pass_now] <= {spacing_i, ray0_x_i, ray0_y_i, rays_x_lo_i, rays_x_hi_i, rays_y_lo_i, rays_y_hi_i,
                               behind_start_x_i, behind_start_y_i, behind_step_i, ahead_start_x_i,
                               ahead_start_y_i, ahead_step_i, lateral_recip_i, first_i, last_i, tag_i};
-    end
-  end
-
-  // -------------------------------------------------------------------------
-  // Where the step is: its beam's row in the pass and its partial beam, and
-  // the last six beams (beam_q[d]: d beams back): whether each was a pass's
-  // (not a flush beam) and of one after the stream's first (whose beams
-  // form the gradients of the pass before), whether it was its pass's last,
-  // its row and its pass.
-  typedef struct packed {
-    logic               real_beam;
-    logic               after_first;
-    logic               last_row;
-    logic [RowBits-1:0] row;
-    logic [1:0]         pass;
-  } beam_t;
-
-  // Passes started since reset, saturating at 2: whether the step's pass
-  // has one before it. (A stream after another finds the zero pass there,
-  // which has no rays.)
-  logic [1:0] started_q;
-  logic       after_first;
-  assign after_first = pass_start ? started_q != 2'd0 : started_q == 2'd2;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      started_q <= '0;
-    end else if (pass_start && started_q != 2'd2) begin
-      started_q <= started_q + 2'd1;
-    end
-  end
-
-  logic [RowBits-1:0] row_q, row_now;
-  logic [ColBits-1:0] col_q, col_now;
-  logic [RowBits:0]   ny_q;  // rows per pass, counted at each pass's end
-  assign row_now = slice_start_i ? '0 : row_q;  // slice_start_i marks all of beam 0
-  assign col_now = beam_start_i ? '0 : col_q;
-
-  // The beams: flat (yosys 0.23 takes no member of an array element).
-  localparam int unsigned BeamBits = 3 + RowBits + 2;  // beam_t
-  /* verilator lint_off UNUSEDSIGNAL */  // the fields each use reads (waiver below)
-  beam_t beam_now, beam2, beam3, beam4, beam5;
-  /* verilator lint_on UNUSEDSIGNAL */
-  logic [6*BeamBits-1:0] beams_q;  // beam d back at [(d-1)*BeamBits]
-  assign beam_now = {!flush_i, after_first, slice_end_i, row_now, pass_now};
-  assign beam2    = beams_q[1*BeamBits +: BeamBits];
-  assign beam3    = beams_q[2*BeamBits +: BeamBits];
-  assign beam4    = beams_q[3*BeamBits +: BeamBits];
-  assign beam5    = beams_q[4*BeamBits +: BeamBits];
-  logic unused_beam6;  // the sixth is kept for a seventh-deep read no lane makes yet
-  assign unused_beam6 = ^beams_q[5*BeamBits +: BeamBits];
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      row_q <= '0;
-      col_q <= '0;
-      ny_q  <= '0;
-      beams_q <= '0;
-    end else if (valid_i) begin
-      col_q <= col_now + ColBits'(1);
-      if (beam_end_i) begin
-        row_q <= row_now + RowBits'(1);
-        if (slice_end_i && !flush_i) ny_q <= (RowBits+1)'(row_now) + (RowBits+1)'(1);
-        beams_q <= {beams_q[0 +: 5*BeamBits], beam_now};
-      end
     end
   end
 
@@ -262,10 +223,8 @@ module cube4_gradient_persp_ring #(
   // field by field, each use a few of the fields (the y walk the y
   // constants, the x walk the x constants, and so on).
   /* verilator lint_off UNUSEDSIGNAL */
-  beam_t grow;  // the gradient row's beam
-  assign grow = beam5;
-  logic [1:0] gpass;  // the gradient row's pass
-  assign gpass = grow.pass - 2'd1;
+  logic [1:0] gpass;  // the gradient row's pass: the one before beam 5 back's
+  assign gpass = beam_pass[5*2 +: 2] - 2'd1;
   logic [PassBits-1:0] gp, gp_behind, gp_ahead;  // its constants and the passes' beside it
   assign gp        = passes_q[gpass];
   assign gp_behind = passes_q[gpass - 2'd1];
@@ -277,10 +236,10 @@ module cube4_gradient_persp_ring #(
   // Walks start only on a pass's constants (the walks' checkers hold them
   // to their ranges): the next beam's gradient row must be one.
   logic  next_forms;
-  assign next_forms = beam4.real_beam && beam4.after_first;
-  assign y_start = beam_last && next_forms && beam4.row == '0;
+  assign next_forms = beam_real[4] && beam_after_first[4];
+  assign y_start = beam_last && next_forms && beam_row[4*RowBits +: RowBits] == '0;
   logic [PassBits-1:0] next_gp;  // the next beam's gradient row's pass
-  assign next_gp = passes_q[beam4.pass - 2'd1];
+  assign next_gp = passes_q[beam_pass[4*2 +: 2] - 2'd1];
   /* verilator lint_on UNUSEDSIGNAL */
 
   logic [0:0]                y_valid;
@@ -375,10 +334,10 @@ module cube4_gradient_persp_ring #(
   /* verilator lint_off UNUSEDSIGNAL */  // the early columns read the rows (waiver above)
   logic [RowsBits-1:0] rows_now, rows_prev_q;
   /* verilator lint_on UNUSEDSIGNAL */
-  assign rows_now = {grow.real_beam && grow.after_first && y_valid[0], gpass, y_ray,
+  assign rows_now = {beam_real[5] && beam_after_first[5] && y_valid[0], gpass, y_ray,
                       {y_ahead_valid, y_behind_valid, y_side_valid, 1'b1},
                       {row_of(y_ahead, 1), row_of(y_ahead, 0), row_of(y_behind, 1), row_of(y_behind, 0),
-                       row_of(y_side, 1), row_of(y_side, 0), grow.row},
+                       row_of(y_side, 1), row_of(y_side, 0), beam_row[5*RowBits +: RowBits]},
                       y_behind_w, y_ahead_w};
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -404,8 +363,8 @@ module cube4_gradient_persp_ring #(
 
     logic [1:0]         wstore;
     logic [RowBits-1:0] wrow;
-    assign wstore = early ? beam3.pass : beam2.pass;
-    assign wrow   = early ? (beam3.last_row ? '0 : beam3.row + RowBits'(1)) : beam2.row;
+    assign wstore = early ? beam_pass[3*2 +: 2] : beam_pass[2*2 +: 2];
+    assign wrow   = early ? (beam_last_row[3] ? '0 : beam_row[3*RowBits +: RowBits] + RowBits'(1)) : beam_row[2*RowBits +: RowBits];
 
     logic [Reads*RowBits-1:0] r_rows;
     logic [1:0]               r_pass;
