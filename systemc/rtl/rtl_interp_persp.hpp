@@ -20,26 +20,6 @@
 
 namespace cube4::sysc {
 
-// The system's perspective rings' widths (systemc/CMakeLists.txt).
-constexpr int kPerspPosBits = 48, kPerspRayBits = 16;
-
-// The constants both perspective rings take of a pass: the rays' spacing,
-// ray 0's position and the rays that sample the slice, per axis (none in
-// the zero pass).
-template <class M>
-void drive_persp_rays(M& m, const golden::PerspectiveSlice& s, bool zero) {
-  auto pos = [](int64_t v) { return static_cast<uint64_t>(v) & ((uint64_t{1} << kPerspPosBits) - 1); };
-  auto ray = [&](int64_t v) { return static_cast<uint16_t>(static_cast<uint64_t>(zero ? 0 : v) & 0xffffu); };
-  static_assert(kPerspRayBits == 16, "the rays' ports are 16 bits");
-  m.spacing_i = pos(s.spacing);
-  m.ray0_x_i = pos(s.ray0_x);
-  m.ray0_y_i = pos(s.ray0_y);
-  m.rays_x_lo_i = ray(s.rays_x.lo);
-  m.rays_x_hi_i = ray(s.rays_x.hi);
-  m.rays_y_lo_i = ray(s.rays_y.lo);
-  m.rays_y_hi_i = ray(s.rays_y.hi);
-}
-
 template <class M>
 class RtlInterpPersp final : public PerspInterpIf {
  public:

@@ -29,6 +29,7 @@
 #include "golden/perspective.hpp"
 #include "golden/perspective_dataflow.hpp"
 #include "tb/rtl/persp_registers.hpp"
+#include "tb/rtl/persp_ring_stream.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -38,9 +39,6 @@ namespace rtl = cube4::rtl;
 
 constexpr int kV = 12, kF = 20, kDda = 48, kRay = 16, kTag = 8, kA = 16, kG = 8, kPos = 16;
 constexpr int kMaxDim = 24, kReach = 3;  // rtl/groups/composite_persp.cmake
-constexpr int kFlushBeams = 6;
-
-uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_t{1} << bits) - 1); }
 
 struct Expect {
   int pass = 0;
@@ -155,49 +153,18 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, rtl::Random& 
   m.crop_z_hi_i = static_cast<uint16_t>(r.crop.slab[2][1]);
   m.crop_mask_i = r.crop.mask;
   m.cut_enabled_i = 0;
-  // A pass's constants at its first step (the zero pass: no rays), random
-  // words elsewhere.
+  // A pass's constants at its first step, random words elsewhere: the
+  // common ones and the voxel slice and z weight.
   auto drive_constants = [&](const g::PerspectiveSlice* s, int pass, bool zero) {
-    auto pos = [&](int64_t v) { return word(s ? v : static_cast<int64_t>(rng.bits(kDda)), kDda); };
-    auto ray = [&](int64_t v) {
-      return static_cast<uint16_t>(word(s && !zero ? v : s ? 0 : static_cast<int64_t>(rng.bits(kRay)), kRay));
-    };
-    const g::PerspectiveSlice none;
-    const g::PerspectiveSlice& q = s ? *s : none;
-    m.spacing_i = pos(q.spacing);
-    m.ray0_x_i = pos(q.ray0_x);
-    m.ray0_y_i = pos(q.ray0_y);
-    m.rays_x_lo_i = ray(q.rays_x.lo);
-    m.rays_x_hi_i = ray(q.rays_x.hi);
-    m.rays_y_lo_i = ray(q.rays_y.lo);
-    m.rays_y_hi_i = ray(q.rays_y.hi);
-    m.z_voxel_i = static_cast<uint16_t>(s ? q.z_voxel : static_cast<int>(rng.bits(kPos)));
-    m.wz_i = static_cast<uint8_t>(s ? q.wz : rng.bits(8));
-    const int k = pass % K;
-    m.first_i = s ? (!zero && k == 0) : rng.bits(1);
-    m.last_i = s ? (!zero && k == K - 1) : rng.bits(1);
-    m.tag_i = static_cast<uint8_t>(s ? pass : static_cast<int>(rng.bits(kTag)));
+    rtl::drive_persp_pass_constants(m, s, pass, zero, K, rng, kTag);
+    m.z_voxel_i = static_cast<uint16_t>(s ? s->z_voxel : static_cast<int>(rng.bits(kPos)));
+    m.wz_i = static_cast<uint8_t>(s ? s->wz : rng.bits(8));
   };
 
-  int64_t step = 0;
-  for (int pass = 0; pass <= passes && c.ok(); ++pass) {
-    const bool zero = pass == passes;
-    const g::PerspectiveSlice& s = slices[static_cast<size_t>(zero ? 0 : pass % K)];
-    for (int b = 0; b < ny + (zero ? kFlushBeams : 0) && c.ok(); ++b)
-      for (int j = 0; j < B && c.ok(); ++j, ++step) {
-        while (rng.chance(0.15)) {
-          m.valid_i = 0;
-          m.sample_valid_i = static_cast<uint32_t>(rng.bits(p));
-          clock();
-        }
-        const bool flush = b >= ny;
-        m.valid_i = 1;
-        m.beam_start_i = j == 0;
-        m.beam_end_i = j == B - 1;
-        m.slice_start_i = !flush && b == 0;
-        m.slice_end_i = !flush && b == ny - 1;
-        m.flush_i = flush;
-        drive_constants(!flush && b == 0 && j == 0 ? &s : nullptr, pass, zero);
+  rtl::stream_persp_passes(
+      m, slices, passes, ny, B, p, rng,
+      [&](const rtl::PerspStep& st) {
+        drive_constants(st.slice, st.pass, st.zero);
         uint32_t valid = 0;
         for (int lane = 0; lane < p; ++lane) {
           g::ShadedSample x;
@@ -205,16 +172,10 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, rtl::Random& 
                    static_cast<uint32_t>(rng.bits(kA))};
           x.alpha = static_cast<uint32_t>(rng.bits(kA));
           x.value = static_cast<uint32_t>(rng.bits(kV));
-          const g::FormedCell fc = g::gradient_cell(step * p + lane, row, nx, ny);
-          if (fc.valid && fc.pass < passes) {
-            const int k = static_cast<int>(fc.pass % K);
-            const g::PerspectiveSlice& at = slices[static_cast<size_t>(k)];
-            const g::HomeLane hu = g::home_lane(at.ray0_x, at.spacing, at.rays_x, fc.x, kF, r.p.weight_bits);
-            const g::HomeLane hv = g::home_lane(at.ray0_y, at.spacing, at.rays_y, fc.y, kF, r.p.weight_bits);
-            if (hu.valid && hv.valid) {
-              valid |= 1u << lane;
-              x = samples.at({static_cast<int>(fc.pass), hu.ray, hv.ray});
-            }
+          const g::FormedCell fc = g::gradient_cell(st.step * p + lane, row, nx, ny);
+          if (const rtl::HomedRay h = rtl::ray_homed_at(slices, fc, passes, kF, r.p.weight_bits); h.valid) {
+            valid |= 1u << lane;
+            x = samples.at({static_cast<int>(fc.pass), h.u, h.v});
           }
           rtl::put_bits(m.red_i, lane * kA, kA, x.rgb[0]);
           rtl::put_bits(m.green_i, lane * kA, kA, x.rgb[1]);
@@ -223,10 +184,9 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, rtl::Random& 
           rtl::put_bits(m.value_i, lane * kV, kV, x.value);
         }
         m.sample_valid_i = valid;
-        due[cycle + 7] = step;
-        clock();
-      }
-  }
+        due[cycle + 7] = st.step;
+      },
+      clock, [&] { return c.ok(); });
   m.valid_i = 0;
   for (int i = 0; i < 12; ++i) clock();
   for (const auto& [at, lanes] : want)

@@ -31,6 +31,7 @@
 #include "golden/perspective.hpp"
 #include "golden/perspective_dataflow.hpp"
 #include "tb/rtl/persp_registers.hpp"
+#include "tb/rtl/persp_ring_stream.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -40,7 +41,6 @@ namespace rtl = cube4::rtl;
 
 constexpr int kV = 12, kF = 20, kPos = 48, kRay = 16, kTag = 8, kG = 8;
 constexpr int kMaxDim = 24;  // rtl/groups/gradient_persp.cmake
-constexpr int kFlushBeams = 6;
 
 uint64_t word(int64_t v, int bits) { return static_cast<uint64_t>(v) & ((uint64_t{1} << bits) - 1); }
 
@@ -169,20 +169,13 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, int vtag_bits
     rtl::settle(m);
     observe();
   };
-  // The constants of a pass (the zero pass: no rays), or, at the steps
-  // that do not start a pass, random words the ring must not take.
+  // A pass's constants at its first step, random words elsewhere: the
+  // common ones and the realignment DDAs and lateral reciprocal.
   auto drive_constants = [&](const g::PerspectiveSlice* s, int pass, bool zero) {
+    rtl::drive_persp_pass_constants(m, s, pass, zero, K, rng, kTag);
     auto pos = [&](int64_t v) { return word(s ? v : static_cast<int64_t>(rng.bits(kPos)), kPos); };
-    auto ray = [&](int64_t v) { return static_cast<uint16_t>(word(s && !zero ? v : s ? 0 : static_cast<int64_t>(rng.bits(kRay)), kRay)); };
     const g::PerspectiveSlice none;
     const g::PerspectiveSlice& q = s ? *s : none;
-    m.spacing_i = pos(q.spacing);
-    m.ray0_x_i = pos(q.ray0_x);
-    m.ray0_y_i = pos(q.ray0_y);
-    m.rays_x_lo_i = ray(q.rays_x.lo);
-    m.rays_x_hi_i = ray(q.rays_x.hi);
-    m.rays_y_lo_i = ray(q.rays_y.lo);
-    m.rays_y_hi_i = ray(q.rays_y.hi);
     m.behind_start_x_i = pos(q.behind_x.start);
     m.behind_start_y_i = pos(q.behind_y.start);
     m.behind_step_i = pos(q.behind_x.step);
@@ -190,57 +183,32 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, int vtag_bits
     m.ahead_start_y_i = pos(q.ahead_y.start);
     m.ahead_step_i = pos(q.ahead_x.step);
     m.lateral_recip_i = static_cast<uint32_t>(s ? q.lateral_reciprocal : static_cast<int64_t>(rng.bits(kV + 3)));
-    const int k = pass % K;
-    m.first_i = s ? (!zero && k == 0) : rng.bits(1);
-    m.last_i = s ? (!zero && k == K - 1) : rng.bits(1);
-    m.tag_i = static_cast<uint8_t>(s ? pass : static_cast<int>(rng.bits(kTag)));
   };
   m.supersampling_i = static_cast<uint8_t>(r.supersampling);
 
-  int64_t step = 0;
-  for (int pass = 0; pass <= passes && c.ok(); ++pass) {
-    const bool zero = pass == passes;
-    const g::PerspectiveSlice& s = slices[static_cast<size_t>(zero ? 0 : pass % K)];
-    for (int b = 0; b < ny + (zero ? kFlushBeams : 0) && c.ok(); ++b)
-      for (int j = 0; j < B && c.ok(); ++j, ++step) {
-        while (rng.chance(0.15)) {
-          m.valid_i = 0;
-          m.sample_valid_i = static_cast<uint32_t>(rng.bits(p));
-          clock();
-        }
-        const bool flush = b >= ny;
-        m.valid_i = 1;
-        m.beam_start_i = j == 0;
-        m.beam_end_i = j == B - 1;
-        m.slice_start_i = !flush && b == 0;
-        m.slice_end_i = !flush && b == ny - 1;
-        m.flush_i = flush;
-        drive_constants(!flush && b == 0 && j == 0 ? &s : nullptr, pass, zero);
+  rtl::stream_persp_passes(
+      m, slices, passes, ny, B, p, rng,
+      [&](const rtl::PerspStep& st) {
+        drive_constants(st.slice, st.pass, st.zero);
         uint32_t valid = 0;
         for (int lane = 0; lane < p; ++lane) {
-          const g::FormedCell fc = g::formed_cell(step * p + lane, row, nx, ny);
-          uint32_t value = static_cast<uint32_t>(rng.bits(kV)), tag = static_cast<uint32_t>(rng.bits(vtag_bits ? vtag_bits : 1));
-          if (fc.valid && fc.pass < passes) {
-            const int k = static_cast<int>(fc.pass % K);
-            const g::PerspectiveSlice& at = slices[static_cast<size_t>(k)];
-            const g::HomeLane hu = g::home_lane(at.ray0_x, at.spacing, at.rays_x, fc.x, kF, r.p.weight_bits);
-            const g::HomeLane hv = g::home_lane(at.ray0_y, at.spacing, at.rays_y, fc.y, kF, r.p.weight_bits);
-            if (hu.valid && hv.valid) {
-              const FrameSamples& fs = samples[static_cast<size_t>(fc.pass / K)];
-              valid |= 1u << lane;
-              value = fs.sample(k, hu.ray, hv.ray);
-              tag = fs.vtag(k, hu.ray, hv.ray);
-            }
+          const g::FormedCell fc = g::formed_cell(st.step * p + lane, row, nx, ny);
+          uint32_t value = static_cast<uint32_t>(rng.bits(kV)),
+                   tag = static_cast<uint32_t>(rng.bits(vtag_bits ? vtag_bits : 1));
+          if (const rtl::HomedRay h = rtl::ray_homed_at(slices, fc, passes, kF, r.p.weight_bits); h.valid) {
+            const FrameSamples& fs = samples[static_cast<size_t>(fc.pass / K)];
+            valid |= 1u << lane;
+            value = fs.sample(h.k, h.u, h.v);
+            tag = fs.vtag(h.k, h.u, h.v);
           }
           rtl::put_bits(m.sample_i, lane * kV, kV, value);
           const int tb = vtag_bits > 0 ? vtag_bits : 1;
           rtl::put_bits(m.vtag_i, lane * tb, tb, tag);
         }
         m.sample_valid_i = valid;
-        due[cycle + 3] = step;
-        clock();
-      }
-  }
+        due[cycle + 3] = st.step;
+      },
+      clock, [&] { return c.ok(); });
   m.valid_i = 0;
   for (int i = 0; i < 4; ++i) clock();
   for (const auto& [at, lanes] : want)
