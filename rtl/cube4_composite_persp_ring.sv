@@ -81,6 +81,13 @@ module cube4_composite_persp_ring #(
   input  logic [PosBits-1:0]                 crop_z_lo_i,
   input  logic [PosBits-1:0]                 crop_z_hi_i,
   input  logic [7:0]                         crop_mask_i,
+  input  logic                               window_enabled_i,
+  input  logic [PosBits-1:0]                 window_x_lo_i,
+  input  logic [PosBits-1:0]                 window_x_hi_i,
+  input  logic [PosBits-1:0]                 window_y_lo_i,
+  input  logic [PosBits-1:0]                 window_y_hi_i,
+  input  logic [PosBits-1:0]                 window_z_lo_i,
+  input  logic [PosBits-1:0]                 window_z_hi_i,
   input  logic                               cut_enabled_i,
   input  logic signed [CutCoefBits-1:0]      cut_a_i,
   input  logic signed [CutCoefBits-1:0]      cut_b_i,
@@ -90,6 +97,9 @@ module cube4_composite_persp_ring #(
   input  logic [CutBits-1:0]                 cut_falloff_i,
   input  logic [AlphaBits+CutInvShift-1:0]   cut_inv_falloff_i,
   input  logic                               cut_keep_inside_i,
+  // No polygon hardware (a later variant): must be 0; the port is
+  // cube4_composite's, so that one driver binds every compositing unit.
+  input  logic                               poly_enabled_i,
   // Stream steps.
   input  logic                               valid_i,
   input  logic                               beam_start_i,
@@ -274,7 +284,7 @@ module cube4_composite_persp_ring #(
     .weight_o  (y_weight)
   );
   logic unused_y_walk;
-  assign unused_y_walk = ^{y_unused_left, y_unused_box};
+  assign unused_y_walk = ^{y_unused_left, y_unused_box, poly_enabled_i};
 
   // The ray's row on the slice before: one multiply a beam.
   logic [DdaBits-1:0]  y_before_pos;
@@ -541,13 +551,13 @@ module cube4_composite_persp_ring #(
       .crop_z_lo_i      (crop_z_lo_i),
       .crop_z_hi_i      (crop_z_hi_i),
       .crop_mask_i      (crop_mask_i),
-      .window_enabled_i (1'b0),
-      .window_x_lo_i    ('0),
-      .window_x_hi_i    ('0),
-      .window_y_lo_i    ('0),
-      .window_y_hi_i    ('0),
-      .window_z_lo_i    ('0),
-      .window_z_hi_i    ('0),
+      .window_enabled_i (window_enabled_i),
+      .window_x_lo_i    (window_x_lo_i),
+      .window_x_hi_i    (window_x_hi_i),
+      .window_y_lo_i    (window_y_lo_i),
+      .window_y_hi_i    (window_y_hi_i),
+      .window_z_lo_i    (window_z_lo_i),
+      .window_z_hi_i    (window_z_hi_i),
       .cut_enabled_i    (cut_enabled_i),
       .cut_a_i          (cut_a_i),
       .cut_b_i          (cut_b_i),

@@ -2,8 +2,9 @@
 # What a clocked perspective frame costs to simulate: the perspective scenes
 # at --model mixed:interp (the interpolation ring verilated, its weight
 # generator too; every unit after it clocked TLM on the SystemC schedule)
-# and mixed:interp,gradient (the gradient ring verilated too), and the same
-# view in parallel projection at the same levels, with --check; the median
+# and mixed:interp,gradient (the gradient ring verilated too) and rtl (every
+# unit verilated), and the same view in parallel projection at the same
+# levels, with --check; the median
 # of N runs' frame time and the report's simulated cycles per wall second.
 # Writes the "perspective-clocked-speed" section of docs/performance.md.
 #   scripts/perf_perspective_clocked.sh [runs]   (default 5; CUBE4_BUILD: the build folder)
@@ -37,7 +38,7 @@ for scene in perspective_sphere perspective_head; do
   src=$here/scenes/$scene.json
   "$python" "$here/scripts/scene_variant.py" "$src" "$tmp/$scene-parallel.json" \
     view.projection- view.fov- view.distance- view.eye-
-  for model in mixed:interp mixed:interp,gradient; do
+  for model in mixed:interp mixed:interp,gradient rtl; do
     echo "perf_perspective_clocked: $scene at $model..." >&2
     measure "$src" perspective "$scene" "$model"
     measure "$tmp/$scene-parallel.json" parallel "$scene" "$model"

@@ -403,7 +403,7 @@ int run_render(const RenderArgs& args) {
     levels.levels = parse_levels(a.model);
     levels.p = a.pipes > 0 ? a.pipes : l.scene.pipelines;
     try {
-      sysc::check_polygon_levels(levels);
+      sysc::check_polygon_levels(levels, l.scene.view.perspective());
     } catch (const std::invalid_argument& e) {
       throw InputError((a.scene.empty() ? std::string("the scene") : a.scene) + ": \"polygons\" (" +
                        std::to_string(l.meshes.size()) + (l.meshes.size() == 1 ? " mesh" : " meshes") + "), --model " +

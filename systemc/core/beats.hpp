@@ -75,6 +75,8 @@ struct RaySampleBeat {
 struct RayGradientBeat {
   uint32_t valid = 0;
   int64_t step = -1;
+  BeamFlags f;            // that step's flags and pass tag (RaySampleBeat's)
+  uint64_t pass_tag = 0;
   std::array<uint16_t, kMaxLanes> sample{};
   std::array<int16_t, kMaxLanes> gx{}, gy{}, gz{};
   std::array<int32_t, kMaxLanes> u{}, v{};
@@ -87,6 +89,8 @@ struct RayGradientBeat {
 struct RayShadedBeat {
   uint32_t valid = 0;
   int64_t step = -1;  // the stream step whose gradient beat it is (RayGradientBeat::step)
+  BeamFlags f;        // that step's flags and pass tag
+  uint64_t pass_tag = 0;
   std::array<uint16_t, kMaxLanes> red{}, green{}, blue{}, alpha{}, value{};
   std::array<int32_t, kMaxLanes> u{}, v{};
   std::array<uint32_t, kMaxLanes> tag{};

@@ -69,7 +69,7 @@ struct PerspectiveUnits {
   PerspInterpIf& interp;
   PerspGradientIf* gradient = nullptr;
   PerspShadeIf* shade = nullptr;
-  TlmCompositePersp* composite = nullptr;
+  PerspCompositor* composite = nullptr;
 };
 PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, StreamFormer& former,
                                              const PerspectiveUnits& units);

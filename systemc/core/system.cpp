@@ -108,9 +108,15 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
 }
 
 // Only the compositing unit sees the polygons; at RTL it needs the ring
-// verilated with polygon hardware for the frame's p.
-void check_polygon_levels(const SystemConfig& cfg) {
-  if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl) require_rtl_polygons(cfg.p);
+// verilated with polygon hardware for the frame's p, which the perspective
+// compositing ring has not yet.
+void check_polygon_levels(const SystemConfig& cfg, bool perspective) {
+  if (cfg.levels[static_cast<size_t>(Unit::Composite)] != Level::Rtl) return;
+  if (perspective)
+    throw std::invalid_argument(
+        "the perspective compositing ring has no polygon hardware yet; run the composite unit at TLM (--model "
+        "mixed: without composite)");
+  require_rtl_polygons(cfg.p);
 }
 
 // Perspective frames run loosely timed at TLM, or clocked: the
@@ -120,12 +126,6 @@ void check_polygon_levels(const SystemConfig& cfg) {
 // systemc/core/perspective_frame.hpp).
 void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
-  if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl)
-    throw std::invalid_argument(
-        "\"view.projection\": \"perspective\": the composite unit has no perspective RTL yet; the "
-        "interpolation, gradient and shading units and the address generation run perspective frames at RTL "
-        "(--model mixed:interp,gradient,shade,addr or fewer of them), the compositing at clocked TLM "
-        "(docs/perspective.md)");
   if (r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences)
     throw std::invalid_argument(
         "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
@@ -163,7 +163,19 @@ void check_perspective_levels(const golden::Registers& r, const SystemConfig& cf
           " rows and " + std::to_string(kRtlGradientPerspMinRow) +
           " positions a beam; run the gradient unit at TLM (--model mixed: without gradient)");
   }
-  if (rtl_interp || rtl_gradient) {
+  // The compositing ring's: at least six rows, a beam long enough for its
+  // window (docs/rtl-composite-persp.md); polygons: check_polygon_levels().
+  const bool rtl_composite = cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl;
+  if (rtl_composite) {
+    if (r.dim[1] < kRtlGradientPerspMinRows || row < kRtlCompositePerspMinRow)
+      throw std::invalid_argument(
+          "volume: the view's permuted y axis has " + std::to_string(r.dim[1]) + " voxels and a beam " +
+          std::to_string(row) + " stream positions (x " + std::to_string(r.dim[0]) + " at p = " +
+          std::to_string(cfg.p) + "); the RTL perspective compositing ring needs at least " +
+          std::to_string(kRtlGradientPerspMinRows) + " rows and " + std::to_string(kRtlCompositePerspMinRow) +
+          " positions a beam; run the composite unit at TLM (--model mixed: without composite)");
+  }
+  if (rtl_interp || rtl_gradient || rtl_composite) {
     require_rtl_perspective(cfg.p);
     // Their tag variants: the p of both CUBE4_SYSTEM_PERSP_PIPES and _TAG_PIPES.
     require_rtl_tags(cfg.p, r.p.tag_bits);
@@ -232,7 +244,11 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
     shade = make_rtl_shade_persp(plan, *f.ctx, cfg.trace, cfg.simulate_unneeded);
   else
     shade = std::make_unique<TlmShadePersp>(plan);
-  const auto composite = std::make_unique<TlmCompositePersp>(plan, cfg.accumulators, f.polygons);
+  std::unique_ptr<PerspCompositor> composite;
+  if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl)
+    composite = make_rtl_composite_persp(plan, cfg.accumulators, *f.ctx, cfg.trace);
+  else
+    composite = std::make_unique<TlmCompositePersp>(plan, cfg.accumulators, f.polygons);
   const PerspectiveFrameResult pr =
       run_perspective_frame({plan, f.vol, cfg.frames, cfg.check, cfg.accumulators, f.polygons, f.progress, f.source,
                              cfg.kernel},
@@ -341,7 +357,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
     forced.gradient = true;
     rs = &forced;
   }
-  if (polygons) check_polygon_levels(cfg);
+  if (polygons) check_polygon_levels(cfg, r.perspective);
   check_perspective_levels(r, cfg);
   check_system_limits(*rs, cfg);
   const FramePlan plan(*rs, cfg.p);

@@ -127,7 +127,7 @@ SystemResult run_frame(const golden::Registers& r, const golden::Volume& vol, co
 // transaction level, or at RTL for a p whose ring is verilated with polygon
 // hardware (CMake CUBE4_SYSTEM_POLYGON_PIPES). Throws std::invalid_argument
 // naming the p values that have it.
-void check_polygon_levels(const SystemConfig& cfg);
+void check_polygon_levels(const SystemConfig& cfg, bool perspective = false);
 
 // Whether the built system can run `cfg` on registers `r`, from the
 // registers alone (so before any voxel is loaded; run_frame() checks the

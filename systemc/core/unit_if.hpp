@@ -7,6 +7,7 @@
 #include <string>
 #include <systemc>
 
+#include "golden/renderers.hpp"
 #include "golden/units/addr.hpp"
 #include "systemc/core/beats.hpp"
 
@@ -41,7 +42,13 @@ using InterpIf = UnitIf<VoxelBeat, SampleBeat>;
 using PerspInterpIf = UnitIf<VoxelBeat, RaySampleBeat>;  // perspective frames' interpolation unit
 using PerspGradientIf = UnitIf<RaySampleBeat, RayGradientBeat>;  // and their gradient unit,
 using PerspShadeIf = UnitIf<RayGradientBeat, RayShadedBeat>;      // shading unit
-using PerspCompositeIf = UnitIf<RayShadedBeat, CompositeOut>;     // and compositing unit
+using PerspCompositeIf = UnitIf<RayShadedBeat, CompositeOut>;     // and compositing unit,
+// which keeps each frame's base plane (its rays' pixels, written as they
+// leave): the frame runner reads the last frame's when it ends.
+struct PerspCompositor : PerspCompositeIf {
+  virtual const golden::BasePlane& plane() const = 0;  // the last frame that ended
+  virtual uint64_t samples_per_frame() const = 0;
+};
 using GradientIf = UnitIf<SampleBeat, GradientBeat>;
 using ShadeIf = UnitIf<GradientBeat, ShadedBeat>;
 using CompositeIf = UnitIf<ShadedBeat, CompositeOut>;

@@ -20,6 +20,7 @@
 #include "systemc/rtl/rtl_addr.hpp"
 #include "systemc/rtl/rtl_compose.hpp"
 #include "systemc/rtl/rtl_composite.hpp"
+#include "systemc/rtl/rtl_composite_persp.hpp"
 #include "systemc/rtl/rtl_dda.hpp"
 #include "systemc/rtl/rtl_gradient.hpp"
 #include "systemc/rtl/rtl_gradient_persp.hpp"
@@ -166,7 +167,7 @@ std::vector<int> rtl_persp_pipes() {
 }
 
 void require_rtl_perspective(int p) {
-  require_variant(p, rtl_persp_pipes(), "RTL perspective interpolation and gradient rings",
+  require_variant(p, rtl_persp_pipes(), "RTL perspective rings",
                   "CUBE4_SYSTEM_PERSP_PIPES", "run the perspective units at TLM");
 }
 
@@ -213,6 +214,18 @@ std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, 
     }
   }
   throw std::logic_error("make_rtl_gradient_persp: p = " + std::to_string(plan.p));
+}
+
+std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan& plan, bool accumulators,
+                                                          VerilatedContext& ctx, const TraceWindow& trace) {
+  require_rtl_perspective(plan.p);
+  switch (plan.p) {
+#define CUBE4_RTL_PERSP_P(p) \
+  case p: return std::make_unique<RtlCompositePersp<Vsys_composite_persp_p##p>>(plan, accumulators, ctx, trace);
+#include "rtl_persp_variant_list.inc"
+#undef CUBE4_RTL_PERSP_P
+  }
+  throw std::logic_error("make_rtl_composite_persp: p = " + std::to_string(plan.p));
 }
 
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r, VerilatedContext& ctx) {

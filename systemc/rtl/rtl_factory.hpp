@@ -76,6 +76,13 @@ std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, Veri
 constexpr int kRtlGradientPerspMinRows = 6, kRtlGradientPerspMinRow = 7;
 std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                          const TraceWindow& trace);
+// The perspective compositing ring (cube4_composite_persp_ring, reach
+// kPerspectiveReach), on TlmCompositePersp's schedule; frames with polygons,
+// fewer than kRtlGradientPerspMinRows rows or beams shorter than
+// kRtlCompositePerspMinRow positions are refused first.
+constexpr int kRtlCompositePerspMinRow = 8 + kPerspectiveReach;
+std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan& plan, bool accumulators,
+                                                          VerilatedContext& ctx, const TraceWindow& trace);
 // The weight generator at RTL (cube4_dda, one for all pipelines): the
 // control of slices 0 .. K of a parallel-projection frame (FramePlan's
 // slice_controls), clocked through the frame's slices before it starts

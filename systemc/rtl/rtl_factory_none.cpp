@@ -31,6 +31,10 @@ std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan&, Verilated
 std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan&, VerilatedContext&, const TraceWindow&) {
   unavailable();
 }
+std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan&, bool, VerilatedContext&,
+                                                          const TraceWindow&) {
+  unavailable();
+}
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers&, VerilatedContext&) { unavailable(); }
 std::vector<golden::PerspectiveSlice> rtl_perspective_slices(const golden::Registers&, VerilatedContext&) {
   unavailable();

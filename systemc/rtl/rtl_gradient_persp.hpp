@@ -19,6 +19,7 @@
 #include "systemc/rtl/rtl_factory.hpp"
 #include "systemc/rtl/rtl_interp_persp.hpp"
 #include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/unit_streams.hpp"
 #include "systemc/rtl/vl_bits.hpp"
 #include "systemc/tlm/tlm_gradient_persp.hpp"
 
@@ -49,12 +50,7 @@ class RtlGradientPersp final : public PerspGradientIf {
     using rtl::put_bits;
     M& m = *m_;
     const bool step = in.step >= 0;
-    m.valid_i = step;
-    m.beam_start_i = in.f.beam_start;
-    m.beam_end_i = in.f.beam_end;
-    m.slice_start_i = in.f.slice_start;
-    m.slice_end_i = in.f.slice_end;
-    m.flush_i = in.f.flush;
+    rtl::drive_stream_flags(m, step, in.f);
     if (step && in.f.slice_start && in.f.beam_start && !in.f.flush) drive_pass(in.pass_tag);
     m.sample_valid_i = step ? in.valid : 0u;
     const int vtag_port = vtag_bits_ > 0 ? vtag_bits_ : 1;
@@ -65,8 +61,12 @@ class RtlGradientPersp final : public PerspGradientIf {
     }
     m_.settle();
     out = RayGradientBeat{};
-    out.step = steps_[clocks_ % kLatency];
-    steps_[clocks_++ % kLatency] = in.step;
+    // The step's control travels beside the ring.
+    Control& c = control_[clocks_++ % kLatency];
+    out.step = c.step;
+    out.f = c.f;
+    out.pass_tag = c.pass_tag;
+    c = {in.step, in.f, in.pass_tag};
     for (int k = 0; k < p_; ++k) {
       if (!get_bits(m.valid_o, k, 1)) continue;
       const auto i = static_cast<size_t>(k);
@@ -108,7 +108,12 @@ class RtlGradientPersp final : public PerspGradientIf {
   const FramePlan& plan_;
   int p_, v_, g_, tag_bits_, vtag_bits_;  // vtag_bits_: the model's VoxelTagBits
   RtlModel<M> m_;
-  std::array<int64_t, kLatency> steps_{-1, -1, -1};  // the ring's 3 cycles, by clock % 3
+  struct Control {
+    int64_t step = -1;
+    BeamFlags f;
+    uint64_t pass_tag = 0;
+  };
+  std::array<Control, kLatency> control_;  // the ring's 3 cycles, by clock % 3
   uint64_t clocks_ = 0;
 };
 

@@ -140,14 +140,17 @@ template <class M>
 class RtlShadePersp final : public PerspShadeIf {
  public:
   RtlShadePersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
-      : units_(plan, ctx, trace, 0, -1), steps_(static_cast<size_t>(shade_latency(plan.r.p)), -1) {}
+      : units_(plan, ctx, trace, 0, -1), control_(static_cast<size_t>(shade_latency(plan.r.p))) {}
 
   void clock(const RayGradientBeat& in, RayShadedBeat& out) override {
     out.valid = 0;
-    // The stream step travels beside the units (the rings' control does).
-    out.step = steps_[head_];
-    steps_[head_] = in.step;
-    if (++head_ == steps_.size()) head_ = 0;
+    // The stream step's control travels beside the units (the rings' does).
+    Control& c = control_[head_];
+    out.step = c.step;
+    out.f = c.f;
+    out.pass_tag = c.pass_tag;
+    c = {in.step, in.f, in.pass_tag};
+    if (++head_ == control_.size()) head_ = 0;
     for (int k = units_.first; k < units_.last; ++k) {
       const auto i = static_cast<size_t>(k);
       const uint64_t side = (uint64_t(in.u[i] & 0xffff) << 4) | (uint64_t(in.v[i] & 0xffff) << 20) |
@@ -170,7 +173,12 @@ class RtlShadePersp final : public PerspShadeIf {
 
  private:
   RtlShadeUnits<M> units_;
-  std::vector<int64_t> steps_;  // circular, the units' latency long
+  struct Control {
+    int64_t step = -1;
+    BeamFlags f;
+    uint64_t pass_tag = 0;
+  };
+  std::vector<Control> control_;  // circular, the units' latency long
   size_t head_ = 0;
 };
 

@@ -17,16 +17,21 @@
 
 namespace cube4::rtl {
 
-// A voxel stream's valid bit and beam flags, as every interpolation ring
-// takes them (parallel and perspective).
+// A stream step's valid bit and beam flags, as every interpolation ring
+// takes them from the voxel stream (parallel and perspective), and the
+// perspective gradient and compositing rings from the beats behind it.
+template <class M>
+void drive_stream_flags(M& m, bool valid, const sysc::BeamFlags& f) {
+  m.valid_i = valid;
+  m.beam_start_i = f.beam_start;
+  m.beam_end_i = f.beam_end;
+  m.slice_start_i = f.slice_start;
+  m.slice_end_i = f.slice_end;
+  m.flush_i = f.flush;
+}
 template <class M>
 void drive_stream_flags(M& m, const sysc::VoxelBeat& b) {
-  m.valid_i = b.valid;
-  m.beam_start_i = b.f.beam_start;
-  m.beam_end_i = b.f.beam_end;
-  m.slice_start_i = b.f.slice_start;
-  m.slice_end_i = b.f.slice_end;
-  m.flush_i = b.f.flush;
+  drive_stream_flags(m, b.valid, b.f);
 }
 
 // The interpolation ring's inputs in one cycle (docs/rtl-interp.md). While

@@ -44,6 +44,8 @@ class PerspGradientBypass final : public PerspGradientIf {
     out = RayGradientBeat{};
     out.valid = in.valid;
     out.step = in.step;
+    out.f = in.f;
+    out.pass_tag = in.pass_tag;
     out.sample = in.sample;
     out.u = in.u;
     out.v = in.v;

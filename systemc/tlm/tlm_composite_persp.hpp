@@ -36,7 +36,7 @@
 
 namespace cube4::sysc {
 
-class TlmCompositePersp final : public PerspCompositeIf {
+class TlmCompositePersp final : public PerspCompositor {
  public:
   static constexpr int kLatency = 7;
 
@@ -47,9 +47,9 @@ class TlmCompositePersp final : public PerspCompositeIf {
   Level level() const override { return Level::Tlm; }
 
   // The last frame that ended, and how many have.
-  const golden::BasePlane& plane() const { return plane_; }
+  const golden::BasePlane& plane() const override { return plane_; }
   uint64_t frames_done() const { return frames_done_; }
-  uint64_t samples_per_frame() const { return per_frame_; }
+  uint64_t samples_per_frame() const override { return per_frame_; }
 
  private:
   struct Sample {  // one lane of a shaded beat

@@ -101,6 +101,8 @@ void TlmGradientPersp::clock(const RaySampleBeat& in, RayGradientBeat& out) {
     if (in.valid >> k & 1) take(in, k);
   for (int k = 0; k < plan_.p; ++k) form(in.step * plan_.p + k, k, slot);
   slot.step = in.step;
+  slot.f = in.f;
+  slot.pass_tag = in.pass_tag;
 }
 
 }  // namespace cube4::sysc

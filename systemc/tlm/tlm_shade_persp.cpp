@@ -16,6 +16,8 @@ void TlmShadePersp::clock(const RayGradientBeat& in, RayShadedBeat& out) {
   if (++head_ == line_.size()) head_ = 0;
   s.valid = in.valid;
   s.step = in.step;
+  s.f = in.f;
+  s.pass_tag = in.pass_tag;
   for (int k = 0; in.valid && k < plan_.p; ++k) {
     if (!(in.valid >> k & 1)) continue;
     const auto i = static_cast<size_t>(k);

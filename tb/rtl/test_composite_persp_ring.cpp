@@ -28,6 +28,7 @@
 #include "Vcube4_composite_persp_ring_p5.h"
 #include "golden/perspective.hpp"
 #include "golden/perspective_dataflow.hpp"
+#include "systemc/rtl/unit_registers.hpp"
 #include "tb/rtl/persp_registers.hpp"
 #include "tb/rtl/persp_ring_stream.hpp"
 #include "tb/rtl/rtl_check.hpp"
@@ -142,17 +143,8 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, rtl::Random& 
     rtl::settle(m);
     observe();
   };
-  // The frame registers.
-  m.blend_mode_i = static_cast<uint8_t>(r.blend);
-  m.crop_enabled_i = r.crop_enabled;
-  m.crop_x_lo_i = static_cast<uint16_t>(r.crop.slab[0][0]);
-  m.crop_x_hi_i = static_cast<uint16_t>(r.crop.slab[0][1]);
-  m.crop_y_lo_i = static_cast<uint16_t>(r.crop.slab[1][0]);
-  m.crop_y_hi_i = static_cast<uint16_t>(r.crop.slab[1][1]);
-  m.crop_z_lo_i = static_cast<uint16_t>(r.crop.slab[2][0]);
-  m.crop_z_hi_i = static_cast<uint16_t>(r.crop.slab[2][1]);
-  m.crop_mask_i = r.crop.mask;
-  m.cut_enabled_i = 0;
+  // The frame registers (cut plane and block window off).
+  rtl::drive_composite_registers(m, r);
   // A pass's constants at its first step, random words elsewhere: the
   // common ones and the voxel slice and z weight.
   auto drive_constants = [&](const g::PerspectiveSlice* s, int pass, bool zero) {

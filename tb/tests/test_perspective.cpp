@@ -329,15 +329,16 @@ using PerspectiveCli = test::Cli;
 TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthersSayingWhy) {
   const std::string scene = write("p.json", sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "fov": 40})",
                                                    R"(, "output": {"width": 64, "height": 64})", "[16,16,16]"));
-  // The interpolation and gradient rings at RTL are built for CMake's
+  // The perspective rings at RTL are built for CMake's
   // CUBE4_SYSTEM_PERSP_PIPES (none in a build without RTL, where the mixed
-  // models are refused).
+  // models and rtl are refused).
   const bool rtl = !sysc::rtl_persp_pipes().empty();
   std::string hash;
   for (const char* model : {"fixed", "float", "reference", "tlm --check", "mixed:interp --check", "mixed:interp,addr",
                             "mixed:interp,shade --check", "mixed:shade", "mixed:gradient --check",
-                            "mixed:interp,gradient,shade,addr --check"}) {
-    const bool mixed = std::string(model).rfind("mixed", 0) == 0;
+                            "mixed:interp,gradient,shade,addr --check", "rtl --check", "mixed:composite --check"}) {
+    // The levels with units at RTL: every mixed one, and rtl.
+    const bool mixed = std::string(model).rfind("mixed", 0) == 0 || std::string(model).rfind("rtl", 0) == 0;
     const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("o.png") + " --report " +
                                   path("r.json"));
     if (mixed && !rtl) {
@@ -376,8 +377,6 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
     EXPECT_EQ(h, hash) << model << ": the base plane differs from --model fixed";
   }
   const std::pair<const char*, const char*> refused[] = {
-      {"rtl", "\"view.projection\": \"perspective\": the composite unit has no perspective RTL yet"},
-      {"mixed:interp,composite", "\"view.projection\": \"perspective\": the composite unit has no perspective RTL yet"},
       {"splat", "\"view.projection\": \"perspective\": the splat model projects voxels in parallel only"}};
   for (const auto& [model, why] : refused) {
     const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("no.png"));

@@ -412,19 +412,45 @@ TEST(SystemPerspective, ClockedCompositingKeepsGoldensAccumulatorsAndBlendModes)
     opt.accumulators = true;
     const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, opt);
     ASSERT_FALSE(want.acc.empty());
-    SCOPED_TRACE(extra);
-    sysc::SystemConfig cfg = clocked_config(4, false);
-    cfg.accumulators = true;
-    const sysc::SystemResult res = sysc::run_frame(s.host.regs, s.volume, cfg);
-    EXPECT_FALSE(res.mismatch);
-    EXPECT_FALSE(res.back_loosely_timed);
-    expect_plane(want, res.plane);
-    ASSERT_EQ(res.plane.acc.size(), want.acc.size());
-    size_t differ = 0;
-    for (size_t i = 0; i < want.acc.size(); ++i)
-      differ += !(res.plane.acc[i].r == want.acc[i].r && res.plane.acc[i].g == want.acc[i].g &&
-                  res.plane.acc[i].b == want.acc[i].b && res.plane.acc[i].a == want.acc[i].a);
-    EXPECT_EQ(differ, 0u);
+    for (const bool rtl : {false, true}) {
+      if (rtl && !rtl_perspective(4)) continue;
+      SCOPED_TRACE(std::string(extra) + (rtl ? ", the compositing ring at RTL" : ", clocked TLM"));
+      sysc::SystemConfig cfg = clocked_config(4, false);
+      cfg.accumulators = true;
+      if (rtl) cfg.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
+      const sysc::SystemResult res = sysc::run_frame(s.host.regs, s.volume, cfg);
+      EXPECT_FALSE(res.mismatch);
+      EXPECT_FALSE(res.back_loosely_timed);
+      expect_plane(want, res.plane);
+      ASSERT_EQ(res.plane.acc.size(), want.acc.size());
+      size_t differ = 0;
+      for (size_t i = 0; i < want.acc.size(); ++i) differ += !(res.plane.acc[i] == want.acc[i]);
+      EXPECT_EQ(differ, 0u);
+    }
+  }
+}
+
+// Every unit at RTL (--model rtl): the perspective interpolation, gradient
+// and compositing rings, the shading units and the address generation,
+// from every face at p = 1, 4, 5 and 8: golden's image, every sample and
+// gradient checked, and the clocked TLM units' cycles (the same schedule);
+// and two frames back to back.
+TEST(SystemPerspective, EveryUnitAtRtlFromEveryFace) {
+  if (!CUBE4_TEST_RTL) GTEST_SKIP() << "a build without RTL";
+  for (const char* eye : kEyes) {
+    const test::Setup s = setup(scene(eye));
+    golden::RenderStats stats;
+    const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, &stats);
+    for (int p : {1, 4, 5, 8}) {
+      if (!rtl_perspective(p)) continue;
+      SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p));
+      sysc::SystemConfig cfg = clocked_config(p, true);
+      cfg.levels = kRtl;
+      expect_clocked(s, cfg, want, stats);
+      if (p != 4) continue;
+      cfg.frames = 2;
+      expect_clocked(s, cfg, want, stats);
+    }
   }
 }
 
@@ -687,7 +713,7 @@ TEST(SystemPerspective, TheRtlWeightGeneratorGivesGoldensSlicesAndAWrongOneIsCau
   EXPECT_EQ(res.mismatch->slice, 5);
 }
 
-TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
+TEST(SystemPerspective, FramesOutsideTheRingsPlansAreRefusedNamingWhy) {
   const test::Setup s = setup(scene(kEyes[0]));
   auto refused = [&](const sysc::SystemConfig& cfg, const golden::Registers& r, const std::string& says) {
     try {
@@ -697,13 +723,19 @@ TEST(SystemPerspective, UnitsWithoutPerspectiveModelsAreRefusedNamingThem) {
       EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
     }
   };
-  sysc::SystemConfig rtl;
-  rtl.p = 4;
-  rtl.levels = kRtl;
-  refused(rtl, s.host.regs, "the composite unit has no perspective RTL yet");
+  // The compositing ring's preconditions: a beam of 8 + R positions.
   sysc::SystemConfig composite = clocked_config(4, false);
   composite.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
-  refused(composite, s.host.regs, "the composite unit has no perspective RTL yet");
+  golden::Registers narrow = s.host.regs;
+  narrow.dim[0] = 7;
+  refused(composite, narrow, "the RTL perspective compositing ring needs at least 6 rows and 11 positions a beam");  // 8 at p = 4
+  // And no polygon hardware yet.
+  try {
+    sysc::check_polygon_levels(composite, true);
+    ADD_FAILURE() << "polygons accepted at the perspective compositing ring";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("no polygon hardware yet"), std::string::npos) << e.what();
+  }
   // The gradient ring's preconditions, named with what to do instead:
   // five rows (a slice's neighbours would not be within its four stores).
   sysc::SystemConfig gradient = clocked_config(4, false);

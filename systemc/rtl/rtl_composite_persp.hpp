@@ -1,0 +1,137 @@
+// The perspective compositing unit at RTL: cube4_composite_persp_ring
+// (docs/rtl-composite-persp.md), its p pipelines and links, on the schedule
+// TlmCompositePersp models (the same frame ends, cycle for cycle). Each
+// beat is one stream step: its flags and the shaded samples on their
+// lanes; at a pass's first step the ring takes that pass's constants,
+// looked up by the pass tag the beat carries (the zero pass, tag K, has no
+// rays). Each ray's pixel (and with `accumulators` its accumulator) is
+// written as it leaves the ring; a frame ends with the last of its rays,
+// when the pixels of rays that sampled nothing are written too.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "golden/perspective.hpp"
+#include "golden/perspective_dataflow.hpp"
+#include "golden/slice_steps.hpp"
+#include "systemc/core/frame_plan.hpp"
+#include "systemc/core/unit_if.hpp"
+#include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/unit_registers.hpp"
+#include "systemc/rtl/unit_streams.hpp"
+#include "systemc/rtl/vl_bits.hpp"
+
+namespace cube4::sysc {
+
+template <class M>
+class RtlCompositePersp final : public PerspCompositor {
+ public:
+  RtlCompositePersp(const FramePlan& plan, bool accumulators, VerilatedContext& ctx, const TraceWindow& trace)
+      : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), a_(plan.r.p.alpha_bits),
+        ab_(plan.r.p.alpha_bits + plan.r.p.acc_guard_bits), tag_bits_(plan.tag_bits()), accumulators_(accumulators),
+        origin_x_(plan.r.base_origin_x()), origin_y_(plan.r.base_origin_y()),
+        per_frame_(golden::perspective_samples(plan.r)), plane_(golden::empty_base_plane(plan.r)),
+        m_(ctx, "composite_persp", trace, "composite") {
+    rtl::drive_composite_registers(*m_, plan.r);
+    // The rays that leave a frame: those that sample some slice (each
+    // samples one run of slices and leaves once).
+    std::vector<uint8_t> sampled(static_cast<size_t>(plane_.width) * plane_.height, 0);
+    for (const golden::PerspectiveSlice& s : plan.persp)
+      for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
+        for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) sampled[pixel(u, v)] = 1;
+    for (const uint8_t s : sampled) leaving_per_frame_ += s;
+    start_frame();
+  }
+
+  void clock(const RayShadedBeat& in, CompositeOut& out) override {
+    using rtl::get_bits;
+    using rtl::put_bits;
+    M& m = *m_;
+    out = CompositeOut{};
+    const bool step = in.step >= 0;
+    rtl::drive_stream_flags(m, step, in.f);
+    if (step && in.f.slice_start && in.f.beam_start && !in.f.flush) drive_pass(in.pass_tag);
+    m.sample_valid_i = step ? in.valid : 0u;
+    for (int k = 0; k < p_; ++k) {
+      const auto i = static_cast<size_t>(k);
+      put_bits(m.red_i, k * a_, a_, in.red[i]);
+      put_bits(m.green_i, k * a_, a_, in.green[i]);
+      put_bits(m.blue_i, k * a_, a_, in.blue[i]);
+      put_bits(m.alpha_i, k * a_, a_, in.alpha[i]);
+      put_bits(m.value_i, k * v_, v_, in.value[i]);
+    }
+    m_.settle();
+    for (int k = 0; k < p_; ++k) {
+      if (!get_bits(m.pixel_valid_o, k, 1)) continue;
+      const int64_t u = rtl::sign_extend(get_bits(m.ray_u_o, k * kPerspRayBits, kPerspRayBits), kPerspRayBits);
+      const int64_t v = rtl::sign_extend(get_bits(m.ray_v_o, k * kPerspRayBits, kPerspRayBits), kPerspRayBits);
+      const size_t i = pixel(u, v);
+      golden::write_pixel(frame_, static_cast<int>(u + origin_x_), static_cast<int>(v + origin_y_),
+                          {static_cast<uint16_t>(get_bits(m.pixel_red_o, k * a_, a_)),
+                           static_cast<uint16_t>(get_bits(m.pixel_green_o, k * a_, a_)),
+                           static_cast<uint16_t>(get_bits(m.pixel_blue_o, k * a_, a_)),
+                           static_cast<uint16_t>(get_bits(m.pixel_alpha_o, k * a_, a_))});
+      if (!frame_.acc.empty()) {
+        golden::RayAcc& acc = frame_.acc[i];
+        acc.r = static_cast<uint32_t>(get_bits(m.acc_red_o, k * ab_, ab_));
+        acc.g = static_cast<uint32_t>(get_bits(m.acc_green_o, k * ab_, ab_));
+        acc.b = static_cast<uint32_t>(get_bits(m.acc_blue_o, k * ab_, ab_));
+        acc.a = static_cast<uint32_t>(get_bits(m.acc_alpha_o, k * ab_, ab_));
+        acc.value = static_cast<uint16_t>(get_bits(m.acc_value_o, k * v_, v_));
+        acc.valid = get_bits(m.acc_selected_o, k, 1) != 0;
+      }
+      written_[i] = 1;
+      if (++left_ == leaving_per_frame_) {
+        end_frame();
+        out.frame_done = true;
+      }
+    }
+    m_.rise();
+  }
+  Level level() const override { return Level::Rtl; }
+  const golden::BasePlane& plane() const override { return plane_; }
+  uint64_t samples_per_frame() const override { return per_frame_; }
+
+ private:
+  size_t pixel(int64_t u, int64_t v) const {
+    return static_cast<size_t>(v + origin_y_) * static_cast<size_t>(plane_.width) + static_cast<size_t>(u + origin_x_);
+  }
+  void start_frame() {
+    frame_ = golden::empty_base_plane(plan_.r);
+    if (accumulators_) frame_.acc.assign(static_cast<size_t>(frame_.width) * frame_.height, golden::RayAcc{});
+    written_.assign(static_cast<size_t>(frame_.width) * frame_.height, 0);
+    left_ = 0;
+  }
+  void end_frame() {
+    // Rays that sampled nothing leave as they started: empty.
+    for (int y = 0; y < frame_.height; ++y)
+      for (int x = 0; x < frame_.width; ++x)
+        if (!written_[static_cast<size_t>(y) * frame_.width + x])
+          golden::write_ray(frame_, x, y, golden::RayAcc{}, plan_.r.p);
+    plane_ = std::move(frame_);
+    start_frame();
+  }
+  // The constants of the pass `tag` names (K: the zero pass, no rays).
+  void drive_pass(uint64_t tag) {
+    M& m = *m_;
+    const bool zero = tag >= static_cast<uint64_t>(plan_.K);
+    const golden::PerspectiveSlice& s = plan_.persp[zero ? plan_.persp.size() - 1 : static_cast<size_t>(tag)];
+    drive_persp_rays(m, s, zero);
+    rtl::put_bits(m.z_voxel_i, 0, golden::kPositionBits, static_cast<uint64_t>(s.z_voxel));
+    rtl::put_bits(m.wz_i, 0, plan_.r.p.weight_bits, s.wz);
+    m.first_i = !zero && tag == 0;
+    m.last_i = !zero && tag + 1 == static_cast<uint64_t>(plan_.K);
+    rtl::put_bits(m.tag_i, 0, tag_bits_, tag);
+  }
+
+  const FramePlan& plan_;
+  int p_, v_, a_, ab_, tag_bits_;
+  bool accumulators_;
+  int origin_x_, origin_y_;
+  uint64_t per_frame_, leaving_per_frame_ = 0, left_ = 0;
+  golden::BasePlane frame_, plane_;
+  std::vector<uint8_t> written_;
+  RtlModel<M> m_;
+};
+
+}  // namespace cube4::sysc
