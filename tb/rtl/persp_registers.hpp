@@ -74,4 +74,19 @@ inline golden::Registers ring_registers(Random& rng, int frac_bits, std::array<i
   return random_perspective_registers(rng, frac_bits, {max_dim, max_dim, 24}, {min_xy[0], min_xy[1], 1}, 3);
 }
 
+// The rays of a frame that leave the volume through each side face (x low,
+// x high, y low, y high) between two slices: the perspective rings'
+// directed cases, which their tests count over their random frames.
+inline std::array<long, 4> rays_leaving(const golden::Registers& r) {
+  std::array<long, 4> out{};
+  for (int k = 0; k + 1 < r.sample_slices(); ++k)
+    for (int axis = 0; axis < 2; ++axis) {
+      const golden::RayRange here = r.rays_in_slice(axis, k), next = r.rays_in_slice(axis, k + 1);
+      if (here.empty()) continue;
+      out[static_cast<size_t>(2 * axis)] += std::max<int64_t>(0, std::min(next.lo, here.hi) - here.lo);
+      out[static_cast<size_t>(2 * axis + 1)] += std::max<int64_t>(0, here.hi - std::max(next.hi, here.lo));
+    }
+  return out;
+}
+
 }  // namespace cube4::rtl

@@ -202,6 +202,7 @@ void test_ring(int p, uint64_t salt) {
   uint64_t cycle = 0;
   long blended = 0;
   int streams = 0;
+  std::array<long, 4> faces{};
   while (blended < n && c.ok()) {
     g::Registers r = rtl::ring_registers(rng, kF, {11, 7}, kMaxDim);
     // The ring's preconditions: ny >= 6, a beam of at least 8 + Reach
@@ -220,10 +221,16 @@ void test_ring(int p, uint64_t salt) {
     }
     r.crop.mask = static_cast<uint8_t>(rng.bits(8));
     blended += stream_frames(m, p, r, frames, rng, c, cycle);
+    const std::array<long, 4> leaving = rtl::rays_leaving(r);
+    for (size_t f = 0; f < 4; ++f) faces[f] += leaving[f];
     ++streams;
   }
   EXPECT_TRUE(c.ok()) << c.report();
-  std::printf("  [%s: %d streams]\n", name.c_str(), streams);
+  // Rays left the volume through every side face in these streams (their
+  // pixels written before the frame's last slice).
+  for (size_t f = 0; f < 4; ++f) EXPECT_GT(faces[f], 0) << "no ray left through side face " << f;
+  std::printf("  [%s: %d streams; rays leaving through x-, x+, y-, y+: %ld %ld %ld %ld]\n", name.c_str(), streams,
+              faces[0], faces[1], faces[2], faces[3]);
 }
 
 TEST(RtlCompositePerspRing, EveryRayLeavesOnceWithGoldensAccumulatorWhereThePlanSaysAtP4) {

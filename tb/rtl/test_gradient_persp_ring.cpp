@@ -233,6 +233,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
   uint64_t cycle = 0;
   long gradients = 0;
   int frames_run = 0;
+  std::array<long, 4> faces{};
   while (gradients < n && c.ok()) {
     const g::Registers r = rtl::ring_registers(rng, kF, {7, 7}, kMaxDim);
     // The ring's preconditions: ny >= 6, a beam of at least seven positions.
@@ -240,10 +241,16 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
     const int frames = rng.chance(0.3) ? 2 : 1;
     if (frames * r.sample_slices() + 1 > (1 << kTag) - 1) continue;
     gradients += stream_frames(m, p, r, frames, vtag_bits, rng, c, cycle);
+    const std::array<long, 4> leaving = rtl::rays_leaving(r);
+    for (size_t f = 0; f < 4; ++f) faces[f] += leaving[f];
     ++frames_run;
   }
   EXPECT_TRUE(c.ok()) << c.report();
-  std::printf("  [%s: %d streams]\n", name.c_str(), frames_run);
+  // Rays left the volume through every side face in these streams (their
+  // neighbours and realigned points miss the slices beyond).
+  for (size_t f = 0; f < 4; ++f) EXPECT_GT(faces[f], 0) << "no ray left through side face " << f;
+  std::printf("  [%s: %d streams; rays leaving through x-, x+, y-, y+: %ld %ld %ld %ld]\n", name.c_str(),
+              frames_run, faces[0], faces[1], faces[2], faces[3]);
 }
 
 TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWhereTheScheduleSaysAtP4) {

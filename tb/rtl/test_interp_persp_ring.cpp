@@ -61,20 +61,6 @@ struct Want {
 // tags in the words' upper bits) through ring m, checking every sample
 // against golden: its value, tag, lane and cycle, each ray once. Returns
 // the samples checked.
-// The rays of a frame that leave the volume through each side face (x low,
-// x high, y low, y high) between two slices: the ring's directed cases.
-std::array<long, 4> rays_leaving(const g::Registers& r) {
-  std::array<long, 4> out{};
-  for (int k = 0; k + 1 < r.sample_slices(); ++k)
-    for (int axis = 0; axis < 2; ++axis) {
-      const g::RayRange here = r.rays_in_slice(axis, k), next = r.rays_in_slice(axis, k + 1);
-      if (here.empty()) continue;
-      out[static_cast<size_t>(2 * axis)] += std::max<int64_t>(0, std::min(next.lo, here.hi) - here.lo);
-      out[static_cast<size_t>(2 * axis + 1)] += std::max<int64_t>(0, here.hi - std::max(next.hi, here.lo));
-    }
-  return out;
-}
-
 template <class M>
 long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const Volume& tags, int frames, int vtag_bits,
                    rtl::Random& rng, rtl::Checker& c, uint64_t& cycle) {
@@ -233,7 +219,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
     if (vtag_bits > 0)
       for (uint32_t& x : tags.v) x = static_cast<uint32_t>(rng.bits(vtag_bits));
     samples += stream_frames(m, p, r, vol, tags, frames, vtag_bits, rng, c, cycle);
-    const std::array<long, 4> leaving = rays_leaving(r);
+    const std::array<long, 4> leaving = rtl::rays_leaving(r);
     for (size_t f = 0; f < 4; ++f) faces[f] += leaving[f];
     ++frames_run;
   }
