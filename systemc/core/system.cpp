@@ -119,11 +119,9 @@ void check_polygon_levels(const SystemConfig& cfg, bool perspective) {
   require_rtl_polygons(cfg.p);
 }
 
-// Perspective frames run loosely timed at TLM, or clocked: the
-// perspective interpolation and gradient units (clocked TLM or RTL), the
-// address generation and the shading unit at either level, the
-// compositing unit at clocked TLM (no perspective RTL of its own yet;
-// systemc/core/perspective_frame.hpp).
+// Perspective frames run loosely timed at TLM, or clocked, every unit at
+// clocked TLM or RTL (systemc/core/perspective_frame.hpp); what the rings'
+// plans cannot follow is refused here, before any voxel is read.
 void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
   if (r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences)
