@@ -251,40 +251,47 @@ module cube4_composite_persp_ring #(
   assign gp_before = passes_q[gpass - 2'd1];
   assign gp_after  = passes_q[gpass + 2'd1];
 
-  logic beam_last, next_forms, walk_start_y;
-  assign beam_last    = valid_i && beam_end_i;
-  assign next_forms   = beam_real[4] && beam_after_first[4];
-  assign walk_start_y = beam_last && next_forms && beam_row[4*RowBits +: RowBits] == '0;
-  assign next_gp      = passes_q[beam_pass[4*2 +: 2] - 2'd1];
+  logic beam_last;
+  assign beam_last = valid_i && beam_end_i;
+  assign next_gp   = passes_q[beam_pass[4*2 +: 2] - 2'd1];
 
-  logic [0:0]                  y_valid;
-  logic [RayBits-1:0]          y_ray;
-  logic [0:0]                  y_unused_left;
-  logic [4*(WeightBits+1)-1:0] y_unused_box;
-  logic [WeightBits-1:0]       y_weight;
-  cube4_persp_lanes #(
-    .Pipes     (1),
+  // The blend row's ray and its weight (y) and, a step ahead, its cells'
+  // rays and weights (x): the sample's place.
+  logic                    y_valid;
+  logic [RayBits-1:0]      y_ray;
+  logic [WeightBits-1:0]   y_weight;
+  logic [P-1:0]            x_valid;
+  logic [P*RayBits-1:0]    x_ray;
+  logic [P*WeightBits-1:0] x_weight;
+  cube4_persp_cell_walks #(
+    .NumPipes  (P),
     .FracBits  (FracBits),
     .WeightBits(WeightBits),
     .PosBits   (DdaBits),
     .RayBits   (RayBits)
-  ) u_walk_y (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .spacing_i (next_gp[PSpacing +: DdaBits]),
-    .ray0_i    (next_gp[PRay0Y +: DdaBits]),
-    .rays_lo_i (next_gp[PYLo +: RayBits]),
-    .rays_hi_i (next_gp[PYHi +: RayBits]),
-    .start_i   (walk_start_y),
-    .advance_i (beam_last && !walk_start_y),
-    .valid_o   (y_valid),
-    .ray_o     (y_ray),
-    .box_left_o(y_unused_left),
-    .overlap_o (y_unused_box),
-    .weight_o  (y_weight)
+  ) u_walks (
+    .clk_i          (clk_i),
+    .rst_ni         (rst_ni),
+    .valid_i        (valid_i),
+    .beam_end_i     (beam_end_i),
+    .next_forms_i   (beam_real[4] && beam_after_first[4]),
+    .next_row_zero_i(beam_row[4*RowBits +: RowBits] == '0),
+    .spacing_i      (next_gp[PSpacing +: DdaBits]),
+    .ray0_x_i       (next_gp[PRay0X +: DdaBits]),
+    .ray0_y_i       (next_gp[PRay0Y +: DdaBits]),
+    .rays_x_lo_i    (next_gp[PXLo +: RayBits]),
+    .rays_x_hi_i    (next_gp[PXHi +: RayBits]),
+    .rays_y_lo_i    (next_gp[PYLo +: RayBits]),
+    .rays_y_hi_i    (next_gp[PYHi +: RayBits]),
+    .row_valid_o    (y_valid),
+    .row_ray_o      (y_ray),
+    .row_weight_o   (y_weight),
+    .lane_valid_o   (x_valid),
+    .lane_ray_o     (x_ray),
+    .lane_weight_o  (x_weight)
   );
-  logic unused_y_walk;
-  assign unused_y_walk = ^{y_unused_left, y_unused_box, poly_enabled_i};
+  logic unused_poly;  // no polygon hardware yet
+  assign unused_poly = poly_enabled_i;
 
   // The ray's row on the slice before: one multiply a beam.
   logic [DdaBits-1:0]  y_before_pos;
@@ -311,7 +318,7 @@ module cube4_composite_persp_ring #(
   /* verilator lint_off UNUSEDSIGNAL */  // the column stages read the rows, the blends the rest
   logic [CtxBits-1:0] ctx_now, ctx_prev_q;
   /* verilator lint_on UNUSEDSIGNAL */
-  assign ctx_now = {beam_real[5] && beam_after_first[5] && y_valid[0], gpass, y_ray, y_to_after, y_from_before,
+  assign ctx_now = {beam_real[5] && beam_after_first[5] && y_valid, gpass, y_ray, y_to_after, y_from_before,
                     y_before[RowBits-1:0], beam_row[5*RowBits +: RowBits], y_weight};
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -366,39 +373,6 @@ module cube4_composite_persp_ring #(
       .packet_o(pkt_live[k*AccBits +: AccBits])
     );
   end
-
-  // -------------------------------------------------------------------------
-  // The x walk over the blend row's cells, a step ahead (as the gradient
-  // ring's): step j's lanes are cells j*p + k.
-  logic x_start;
-  assign x_start = beam_last && next_forms;
-  logic [P-1:0]                  x_valid, x_unused_left;
-  logic [P*RayBits-1:0]          x_ray;
-  logic [P*4*(WeightBits+1)-1:0] x_unused_box;
-  logic [P*WeightBits-1:0]       x_weight;
-  cube4_persp_lanes #(
-    .Pipes     (P),
-    .FracBits  (FracBits),
-    .WeightBits(WeightBits),
-    .PosBits   (DdaBits),
-    .RayBits   (RayBits)
-  ) u_walk_x (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .spacing_i (next_gp[PSpacing +: DdaBits]),
-    .ray0_i    (next_gp[PRay0X +: DdaBits]),
-    .rays_lo_i (next_gp[PXLo +: RayBits]),
-    .rays_hi_i (next_gp[PXHi +: RayBits]),
-    .start_i   (x_start),
-    .advance_i (valid_i && !x_start),
-    .valid_o   (x_valid),
-    .ray_o     (x_ray),
-    .box_left_o(x_unused_left),
-    .overlap_o (x_unused_box),
-    .weight_o  (x_weight)
-  );
-  logic unused_x_walk;
-  assign unused_x_walk = ^{x_unused_left, x_unused_box};
 
   // -------------------------------------------------------------------------
   // Histories, shifted at every step (index 0 live): the samples of the

@@ -232,44 +232,46 @@ module cube4_gradient_persp_ring #(
 
   logic  beam_last;
   assign beam_last = valid_i && beam_end_i;
-  logic  y_start;
-  // Walks start only on a pass's constants (the walks' checkers hold them
-  // to their ranges): the next beam's gradient row must be one.
-  logic  next_forms;
-  assign next_forms = beam_real[4] && beam_after_first[4];
-  assign y_start = beam_last && next_forms && beam_row[4*RowBits +: RowBits] == '0;
   logic [PassBits-1:0] next_gp;  // the next beam's gradient row's pass
   assign next_gp = passes_q[beam_pass[4*2 +: 2] - 2'd1];
   /* verilator lint_on UNUSEDSIGNAL */
 
-  logic [0:0]                y_valid;
-  logic [RayBits-1:0]        y_ray;
-  logic [0:0]                y_unused_left;
-  logic [4*(WeightBits+1)-1:0] y_unused_box;
-  logic [WeightBits-1:0]     y_unused_weight;
-  cube4_persp_lanes #(
-    .Pipes     (1),
+  // The gradient row's ray (y) and, a step ahead, its cells' (x).
+  logic                    y_valid;
+  logic [RayBits-1:0]      y_ray;
+  logic [WeightBits-1:0]   y_unused_weight;
+  logic [P-1:0]            x_valid;
+  logic [P*RayBits-1:0]    x_ray;
+  logic [P*WeightBits-1:0] x_unused_weight;
+  cube4_persp_cell_walks #(
+    .NumPipes  (P),
     .FracBits  (FracBits),
     .WeightBits(WeightBits),
     .PosBits   (PosBits),
     .RayBits   (RayBits)
-  ) u_walk_y (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .spacing_i (next_gp[PSpacing +: PosBits]),
-    .ray0_i    (next_gp[PRay0Y +: PosBits]),
-    .rays_lo_i (next_gp[PYLo +: RayBits]),
-    .rays_hi_i (next_gp[PYHi +: RayBits]),
-    .start_i   (y_start),
-    .advance_i (beam_last && !y_start),
-    .valid_o   (y_valid),
-    .ray_o     (y_ray),
-    .box_left_o(y_unused_left),
-    .overlap_o (y_unused_box),
-    .weight_o  (y_unused_weight)
+  ) u_walks (
+    .clk_i          (clk_i),
+    .rst_ni         (rst_ni),
+    .valid_i        (valid_i),
+    .beam_end_i     (beam_end_i),
+    .next_forms_i   (beam_real[4] && beam_after_first[4]),
+    .next_row_zero_i(beam_row[4*RowBits +: RowBits] == '0),
+    .spacing_i      (next_gp[PSpacing +: PosBits]),
+    .ray0_x_i       (next_gp[PRay0X +: PosBits]),
+    .ray0_y_i       (next_gp[PRay0Y +: PosBits]),
+    .rays_x_lo_i    (next_gp[PXLo +: RayBits]),
+    .rays_x_hi_i    (next_gp[PXHi +: RayBits]),
+    .rays_y_lo_i    (next_gp[PYLo +: RayBits]),
+    .rays_y_hi_i    (next_gp[PYHi +: RayBits]),
+    .row_valid_o    (y_valid),
+    .row_ray_o      (y_ray),
+    .row_weight_o   (y_unused_weight),
+    .lane_valid_o   (x_valid),
+    .lane_ray_o     (x_ray),
+    .lane_weight_o  (x_unused_weight)
   );
-  logic unused_y_walk;
-  assign unused_y_walk = ^{y_unused_left, y_unused_box, y_unused_weight};
+  logic unused_weights;  // the gradient needs no sample places
+  assign unused_weights = ^{y_unused_weight, x_unused_weight};
 
   // The rows the beam's gradients read, and the realigned y weights.
   logic signed [HomeBits-1:0] y_home;
@@ -334,7 +336,7 @@ module cube4_gradient_persp_ring #(
   /* verilator lint_off UNUSEDSIGNAL */  // the early columns read the rows (waiver above)
   logic [RowsBits-1:0] rows_now, rows_prev_q;
   /* verilator lint_on UNUSEDSIGNAL */
-  assign rows_now = {beam_real[5] && beam_after_first[5] && y_valid[0], gpass, y_ray,
+  assign rows_now = {beam_real[5] && beam_after_first[5] && y_valid, gpass, y_ray,
                       {y_ahead_valid, y_behind_valid, y_side_valid, 1'b1},
                       {row_of(y_ahead, 1), row_of(y_ahead, 0), row_of(y_behind, 1), row_of(y_behind, 0),
                        row_of(y_side, 1), row_of(y_side, 0), beam_row[5*RowBits +: RowBits]},
@@ -409,39 +411,6 @@ module cube4_gradient_persp_ring #(
       .packet_o(pkt_live[k*PktBits +: PktBits])
     );
   end
-
-  // -------------------------------------------------------------------------
-  // The x walk over the gradient row's cells, a step ahead: started at the
-  // previous beam's last step, so that step j's lanes are cells j*p + k.
-  logic x_start;
-  assign x_start = beam_last && next_forms;
-  logic [P-1:0]              x_valid, x_unused_left;
-  logic [P*RayBits-1:0]      x_ray;
-  logic [P*4*(WeightBits+1)-1:0] x_unused_box;
-  logic [P*WeightBits-1:0]   x_unused_weight;
-  cube4_persp_lanes #(
-    .Pipes     (P),
-    .FracBits  (FracBits),
-    .WeightBits(WeightBits),
-    .PosBits   (PosBits),
-    .RayBits   (RayBits)
-  ) u_walk_x (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .spacing_i (next_gp[PSpacing +: PosBits]),
-    .ray0_i    (next_gp[PRay0X +: PosBits]),
-    .rays_lo_i (next_gp[PXLo +: RayBits]),
-    .rays_hi_i (next_gp[PXHi +: RayBits]),
-    .start_i   (x_start),
-    .advance_i (valid_i && !x_start),
-    .valid_o   (x_valid),
-    .ray_o     (x_ray),
-    .box_left_o(x_unused_left),
-    .overlap_o (x_unused_box),
-    .weight_o  (x_unused_weight)
-  );
-  logic unused_x_walk;
-  assign unused_x_walk = ^{x_unused_left, x_unused_box, x_unused_weight};
 
   // -------------------------------------------------------------------------
   // Histories, shifted at every step: the packets of the last ColDepth

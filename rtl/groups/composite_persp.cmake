@@ -6,7 +6,7 @@
 # p = 4, 1 and 5 (the test file holds the values).
 cube4_rtl_test(test_rtl_composite_persp
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_composite_persp_ring.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
-set(_composite_persp_sources cube4_box_axis.sv cube4_persp_lanes.sv cube4_persp_column.sv cube4_persp_stream.sv cube4_composite.sv
+set(_composite_persp_sources cube4_box_axis.sv cube4_persp_lanes.sv cube4_persp_column.sv cube4_persp_stream.sv cube4_persp_cell_walks.sv cube4_composite.sv
     cube4_compose_node.sv cube4_mul_frac.sv cube4_to_acc.sv cube4_acc_to_pixel.sv)
 foreach(p 4 1 5)
   set(_prefix Vcube4_composite_persp_ring_p${p})

@@ -11,7 +11,7 @@ cube4_rtl_test(test_rtl_gradient_persp
   TESTS ${PROJECT_SOURCE_DIR}/tb/rtl/test_gradient_persp_homes.cpp ${PROJECT_SOURCE_DIR}/tb/rtl/test_gradient_persp_ring.cpp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 set(_gradient_persp_sources cube4_lerp.sv cube4_gradient.sv cube4_box_axis.sv cube4_persp_lanes.sv
-    cube4_gradient_persp_homes.sv cube4_persp_column.sv cube4_persp_stream.sv)
+    cube4_gradient_persp_homes.sv cube4_persp_column.sv cube4_persp_stream.sv cube4_persp_cell_walks.sv)
 foreach(p 4 1 5 8)
   set(_prefix Vcube4_gradient_persp_ring_p${p})
   if(p EQUAL 4)
