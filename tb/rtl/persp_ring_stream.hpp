@@ -7,6 +7,7 @@
 // rings must not take).
 #pragma once
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "golden/perspective.hpp"
@@ -103,5 +104,36 @@ inline HomedRay ray_homed_at(const std::vector<golden::PerspectiveSlice>& slices
   if (!hu.valid || !hv.valid) return {};
   return {true, k, hu.ray, hv.ray};
 }
+
+// What a ring owes, cycle by cycle: each driven step's expected outputs by
+// lane (`want`: step -> lane -> Expect), due `latency` cycles after the
+// step's cycle. take(cycle) finds the step due then (-1: none), lane(k)
+// what lane k owes in it (nullptr: nothing).
+template <class Expect>
+class DueLanes {
+ public:
+  DueLanes(std::map<int64_t, std::map<int, Expect>>& want, uint64_t latency) : want_(want), latency_(latency) {}
+  void driven(uint64_t cycle, int64_t step) { due_[cycle + latency_] = step; }
+  int64_t take(uint64_t cycle) {
+    lanes_ = nullptr;
+    const auto d = due_.find(cycle);
+    if (d == due_.end()) return -1;
+    const int64_t step = d->second;
+    due_.erase(d);
+    if (const auto w = want_.find(step); w != want_.end()) lanes_ = &w->second;
+    return step;
+  }
+  Expect* lane(int k) const {
+    if (!lanes_) return nullptr;
+    const auto it = lanes_->find(k);
+    return it == lanes_->end() ? nullptr : &it->second;
+  }
+
+ private:
+  std::map<int64_t, std::map<int, Expect>>& want_;
+  uint64_t latency_;
+  std::map<uint64_t, int64_t> due_;
+  std::map<int, Expect>* lanes_ = nullptr;
+};
 
 }  // namespace cube4::rtl

@@ -95,24 +95,12 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, rtl::Random& 
     }
   }
 
-  std::map<uint64_t, int64_t> due;  // the cycle a step's rays leave in -> the step
+  rtl::DueLanes<Expect> due(want, 7);
   auto observe = [&] {
-    const auto d = due.find(cycle);
-    std::map<int, Expect>* lanes = nullptr;
-    int64_t step = -1;
-    if (d != due.end()) {
-      step = d->second;
-      const auto w = want.find(step);
-      if (w != want.end()) lanes = &w->second;
-      due.erase(d);
-    }
+    const int64_t step = due.take(cycle);
     for (int lane = 0; lane < p; ++lane) {
       const bool valid = rtl::get_bits(m.pixel_valid_o, lane, 1) != 0;
-      Expect* e = nullptr;
-      if (lanes) {
-        const auto it = lanes->find(lane);
-        if (it != lanes->end()) e = &it->second;
-      }
+      Expect* e = due.lane(lane);
       const rtl::Fields where{{"step", step}, {"lane", lane}, {"nx", nx}, {"ny", ny}, {"nz", r.dim[2]},
                               {"S", r.supersampling}, {"frames", frames}, {"blend", static_cast<int>(r.blend)}};
       if (valid != (e != nullptr)) {
@@ -176,7 +164,7 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, rtl::Random& 
           rtl::put_bits(m.value_i, lane * kV, kV, x.value);
         }
         m.sample_valid_i = valid;
-        due[cycle + 7] = st.step;
+        due.driven(cycle, st.step);
       },
       clock, [&] { return c.ok(); });
   m.valid_i = 0;
