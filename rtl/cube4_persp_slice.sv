@@ -1,14 +1,17 @@
-// cube4_persp_slice: the perspective weight generator's per-slice part.
+// cube4_persp_slice: the perspective weight generator's per-slice
+// divisions, part of cube4_dda (the weight generator of both projections).
 //
-// Function: for sample slice k (k_i, with start_i) computes what every
-// sample of the slice shares (golden perspective_slice(), golden/perspective.hpp;
-// docs/perspective.md): the rays' spacing m_k and ray 0's position c_k
-// (x, y), the rays inside the volume per axis (two ceiling divisions each),
-// the box filter's reciprocal round(2^Q / E^2), the gradient's lateral
-// reciprocal round(2^(R+F) / m_k), and the four realignment DDAs of the
-// points straight behind and ahead (floor divisions by the neighbouring
-// slices' spacings; zero for the first and last slice). Bit-exact with the
-// golden function.
+// Function: from sample slice k's positions, which cube4_dda's walks hold
+// (the rays' spacing m and ray 0's position c, x and y, on slices k - 1, k
+// and k + 1), computes the rest of what every sample of the slice shares
+// (golden perspective_slice(), golden/perspective.hpp;
+// docs/perspective.md): the rays inside the volume per axis (two ceiling
+// divisions each), the box filter's reciprocal round(2^Q / E^2), the
+// gradient's lateral reciprocal round(2^(R+F) / m_k), and the four
+// realignment DDAs of the points straight behind and ahead (floor
+// divisions by the neighbouring slices' spacings; zero without the
+// neighbour: the first and the last slice). Bit-exact with the golden
+// function.
 //
 // The twelve divisions share one serial restoring divider, one quotient
 // bit per cycle (a load, DivBits steps and a store per division), meant to
@@ -20,21 +23,20 @@
 //
 // Latency: done_o is high for one cycle, 1 + 12 * (DivBits + 2) clock
 // edges after the edge that samples start_i (DivBits = PosBits + FracBits;
-// 841 at the defaults, tested); the outputs hold until the next start_i.
-// start_i while busy_o is high is ignored.
+// 841 at the defaults, tested); the results hold until the next start_i.
+// The positions are read from the cycle after start_i until done_o and
+// must hold meanwhile. start_i while busy_o is high starts over (the
+// weight generator moved to another slice).
 //
 // Precondition: the slice's ray spacing m_k lies in [1, 4) (the camera
 // refuses spacings above 3); its box extent then has WeightBits + 2 bits.
 //
 // Parameters:
-//   FracBits   - DDA fraction bits (golden Precision::dda_frac_bits, 20;
-//                not yet in cube4_pkg: the DDA ran in C++ until this unit,
-//                and the test ties the default to golden's)
+//   FracBits   - DDA fraction bits (golden Precision::dda_frac_bits)
 //   WeightBits - box weights' fraction (cube4_pkg::WeightBits)
 //   VoxelBits  - sample width, which sets both reciprocals' precision
 //   PosBits    - DDA registers and positions, signed (48)
 //   DimBits    - volume size per axis (cube4_pkg::DimBits)
-//   SliceBits  - sample slice index (16)
 `include "cube4_pkg.sv"
 
 module cube4_persp_slice #(
@@ -42,30 +44,30 @@ module cube4_persp_slice #(
   parameter int unsigned WeightBits = cube4_pkg::WeightBits,
   parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned PosBits    = 48,
-  parameter int unsigned DimBits    = cube4_pkg::DimBits,
-  parameter int unsigned SliceBits  = 16
+  parameter int unsigned DimBits    = cube4_pkg::DimBits
 ) (
   input  logic                        clk_i,
   input  logic                        rst_ni,
-  // Frame registers (golden Registers).
-  input  logic signed [PosBits-1:0]   scale_start_i,
-  input  logic signed [PosBits-1:0]   scale_step_i,
-  input  logic signed [PosBits-1:0]   x_start_i,
-  input  logic signed [PosBits-1:0]   x_step_i,
-  input  logic signed [PosBits-1:0]   y_start_i,
-  input  logic signed [PosBits-1:0]   y_step_i,
+  // Slice k's neighbourhood, from cube4_dda's walks (behind: k - 1,
+  // ahead: k + 1; whether they are slices of the frame).
+  input  logic signed [PosBits-1:0]   spacing_behind_i,
+  input  logic signed [PosBits-1:0]   spacing_i,
+  input  logic signed [PosBits-1:0]   spacing_ahead_i,
+  input  logic signed [PosBits-1:0]   ray0_x_behind_i,
+  input  logic signed [PosBits-1:0]   ray0_x_i,
+  input  logic signed [PosBits-1:0]   ray0_x_ahead_i,
+  input  logic signed [PosBits-1:0]   ray0_y_behind_i,
+  input  logic signed [PosBits-1:0]   ray0_y_i,
+  input  logic signed [PosBits-1:0]   ray0_y_ahead_i,
+  input  logic                        has_behind_i,
+  input  logic                        has_ahead_i,
   input  logic [DimBits-1:0]          dim_x_i,
   input  logic [DimBits-1:0]          dim_y_i,
-  input  logic [SliceBits-1:0]        last_slice_i,   // sample_slices() - 1
   // Command.
   input  logic                        start_i,
-  input  logic [SliceBits-1:0]        k_i,
   output logic                        busy_o,
   output logic                        done_o,
   // Slice k's constants.
-  output logic signed [PosBits-1:0]   spacing_o,
-  output logic signed [PosBits-1:0]   ray0_x_o,
-  output logic signed [PosBits-1:0]   ray0_y_o,
   output logic signed [PosBits-1:0]   rays_x_lo_o,
   output logic signed [PosBits-1:0]   rays_x_hi_o,
   output logic signed [PosBits-1:0]   rays_y_lo_o,
@@ -92,27 +94,20 @@ module cube4_persp_slice #(
 
   typedef enum logic [1:0] { RoundTrunc, RoundFloor, RoundCeil } round_e;
 
-  // ---- Slice positions: k, k - 1 and k + 1 (products, not accumulators, so
-  // that any slice can be asked for).
-  logic [SliceBits-1:0] k_q;
   logic signed [PosBits-1:0] m_here, m_behind, m_ahead;
   logic signed [PosBits-1:0] cx_here, cx_behind, cx_ahead, cy_here, cy_behind, cy_ahead;
-  logic signed [PosBits-1:0] k_signed;
-
-  assign k_signed  = PosBits'($signed({1'b0, k_q}));
-  assign m_here    = scale_start_i + k_signed * scale_step_i;
-  assign m_behind  = m_here - scale_step_i;
-  assign m_ahead   = m_here + scale_step_i;
-  assign cx_here   = x_start_i + k_signed * x_step_i;
-  assign cx_behind = cx_here - x_step_i;
-  assign cx_ahead  = cx_here + x_step_i;
-  assign cy_here   = y_start_i + k_signed * y_step_i;
-  assign cy_behind = cy_here - y_step_i;
-  assign cy_ahead  = cy_here + y_step_i;
-
   logic has_behind, has_ahead;
-  assign has_behind = k_q != '0;
-  assign has_ahead  = k_q != last_slice_i;
+  assign m_here     = spacing_i;
+  assign m_behind   = spacing_behind_i;
+  assign m_ahead    = spacing_ahead_i;
+  assign cx_here    = ray0_x_i;
+  assign cx_behind  = ray0_x_behind_i;
+  assign cx_ahead   = ray0_x_ahead_i;
+  assign cy_here    = ray0_y_i;
+  assign cy_behind  = ray0_y_behind_i;
+  assign cy_ahead   = ray0_y_ahead_i;
+  assign has_behind = has_behind_i;
+  assign has_ahead  = has_ahead_i;
 
   // The box extent E = m >> (F - W) and its square. The ray spacing is
   // below 4 (the camera allows at most 3: the box filter's four taps), so
@@ -214,16 +209,14 @@ module cube4_persp_slice #(
       quot_q     <= '0;
       rem_q      <= '0;
       neg_q      <= 1'b0;
-      k_q        <= '0;
     end else begin
       done_o <= 1'b0;
-      if (!running_q) begin
-        if (start_i) begin
-          running_q  <= 1'b1;
-          dividing_q <= 1'b0;
-          job_q      <= '0;
-          k_q        <= k_i;
-        end
+      if (start_i) begin
+        running_q  <= 1'b1;
+        dividing_q <= 1'b0;
+        job_q      <= '0;
+      end else if (!running_q) begin
+        // idle
       end else if (!dividing_q) begin
         // Load the job's operands.
         num_q      <= magnitude[DivBits-1:0];
@@ -255,7 +248,7 @@ module cube4_persp_slice #(
       box_recip_o <= '0; lateral_recip_o <= '0;
       behind_start_x_o <= '0; behind_start_y_o <= '0; behind_step_o <= '0;
       ahead_start_x_o <= '0; ahead_start_y_o <= '0; ahead_step_o <= '0;
-    end else if (running_q && dividing_q && count_q == '0) begin
+    end else if (running_q && dividing_q && count_q == '0 && !start_i) begin
       unique case (job_q)
         4'd0: rays_x_lo_o <= result;
         4'd1: rays_x_hi_o <= result;
@@ -274,10 +267,7 @@ module cube4_persp_slice #(
     end
   end
 
-  assign spacing_o = m_here;
-  assign ray0_x_o  = cx_here;
-  assign ray0_y_o  = cy_here;
-  assign busy_o    = running_q;
+  assign busy_o = running_q;
 
   // The reciprocals' dividends fit: 2^Q and 2^(R+F) are below 2^DivBits
   // for every width the golden model allows (Q <= 49, R + F <= 48, DivBits

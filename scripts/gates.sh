@@ -77,6 +77,7 @@ extra=(
   "cube4_interp_unit HasZDiff=1"
   "cube4_gradient HasVoxelZ=1"
   "cube4_gradient_unit HasVoxelZ=1"
+  "cube4_dda HasPerspective=0"
 )
 
 tmp=$(mktemp -d)

@@ -267,6 +267,9 @@ std::string gate_config(const golden::Scene& s) {
   // cube4_interp_zdiff, the gradient unit's difference path (their effect
   // parameters; a scene without it counts none of it).
   if (s.z_gradient == golden::ZGradient::VoxelDifferences) c += ",HasZDiff=1,HasVoxelZ=1";
+  // The weight generator's perspective divisions, likewise (the pipelines
+  // counted are parallel projection's: docs/explore.md says so).
+  c += s.view.perspective() ? ",HasPerspective=1" : ",HasPerspective=0";
   return c;
 }
 

@@ -1,6 +1,7 @@
 # Perspective weight generator (`persp`, docs/rtl-persp.md): cube4_persp_slice,
-# the per-slice constants of Cube-4's perspective projection (golden
-# perspective_slice()), and cube4_persp_ray, the per-sample positions and
+# the per-slice divisions of Cube-4's perspective projection (golden
+# perspective_slice(); part of cube4_dda, which walks the positions it
+# divides), and cube4_persp_ray, the per-sample positions and
 # weights along a beam. One executable, test_rtl_persp
 # (tb/rtl/test_persp_slice.cpp, tb/rtl/test_persp_ray.cpp).
 cube4_rtl_test(test_rtl_persp

@@ -207,7 +207,7 @@ struct ClockedFrame {
 void run_perspective(const ClockedFrame& f, SystemResult& res) {
   const SystemConfig& cfg = f.cfg;
   // The weight generator runs at RTL with the interpolation unit, as in
-  // parallel projection: the ring then reads cube4_persp_slice's slice
+  // parallel projection: the ring then reads cube4_dda's perspective slice
   // constants; the frame's check keeps golden's.
   std::optional<FramePlan> rtl_plan;
   if (cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl) {

@@ -290,20 +290,20 @@ inline constexpr Register kListed[] = {
      [](const RegisterValues& v, const HardwareParams&) { return uint64_t{mode_word(v.regs)}; },
      [](RegisterValues& v, uint64_t w) { set_mode(v.regs, w); },
      "cube4_shade_unit magnitude_i … gm_specular_i, cube4_composite_ring blend_mode_i, crop_enabled_i, "
-     "cut_enabled_i, window_enabled_i",
+     "cut_enabled_i, window_enabled_i, cube4_dda perspective_i",
      "bit 0 `gradient`, 1 `magnitude`, 2 `shading`, 3 `specular`, 4 `gm_opacity`, 5 `gm_diffuse`, "
      "6 `gm_specular`, bits 9:8 `blend` (0 composite, 1 MIP, 2 MinIP; 3 is out of range), "
      "bit 12 `crop_enabled`, bit 13 `cut_enabled`, bit 14 `window_enabled` (a block of a partitioned volume), "
      "bit 15 `z_gradient` (0 the 12-neighbourhood, 1 VolumePro's interpolated voxel differences: the rings "
      "built with HasZDiff and HasVoxelZ, the stream primed each frame; docs/rtl-interp-zdiff.md), bit 16 `perspective` (Cube-4's perspective projection: X_START … Y_STEP then give ray "
-     "0's position per slice, and cube4_persp_slice.x_start_i … y_step_i read them; docs/perspective.md)"},
+     "0's position per slice, which cube4_dda walks as in parallel projection; docs/perspective.md)"},
     // Perspective: the rays' spacing per sample slice (golden Registers::ray_spacing()).
     {"SCALE_START", 0x150, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width,
-     CUBE4_REG_FIELD(scale_start), "cube4_persp_slice.scale_start_i",
+     CUBE4_REG_FIELD(scale_start), "cube4_dda.scale_start_i",
      "perspective: the rays' spacing on the first sample slice, `dda_frac_bits` fraction (one for a whole volume, "
      "that slice's spacing for a block: golden/blocks.hpp); START refuses it below one or above three"},
     {"SCALE_STEP", 0x158, Block::View, Access::RW, 2, bits(64), Sign::Signed, Rule::Width,
-     CUBE4_REG_FIELD(scale_step), "cube4_persp_slice.scale_step_i",
+     CUBE4_REG_FIELD(scale_step), "cube4_dda.scale_step_i",
      "perspective: the spacing's growth per sample slice; START refuses it negative or taking the last slice's "
      "spacing above three (the box filter's reach)"},
 

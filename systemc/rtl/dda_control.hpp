@@ -1,9 +1,11 @@
 // A slice's control as cube4_dda's outputs show it, read into golden's
-// SliceControl: by the system's wrapper (rtl_dda.hpp) and the unit's test
-// (tb/rtl/test_dda.cpp) alike. No SystemC.
+// SliceControl (parallel projection) or PerspectiveSlice: by the system's
+// wrapper (rtl_dda.hpp) and the unit's test (tb/rtl/test_dda.cpp) alike.
+// No SystemC.
 #pragma once
 #include <cstdint>
 
+#include "golden/perspective.hpp"
 #include "golden/pipeline.hpp"
 
 namespace cube4::rtl {
@@ -31,6 +33,28 @@ golden::SliceControl read_dda_control(const M& m, int int_bits) {
   c.ahead_x = realign(m.ahead_x_base_o, m.ahead_x_weight_o);
   c.ahead_y = realign(m.ahead_y_base_o, m.ahead_y_weight_o);
   return c;
+}
+
+// pos_bits: the unit's PosBits, the width of its perspective outputs.
+template <class M>
+golden::PerspectiveSlice read_perspective_slice(const M& m, int pos_bits) {
+  auto get = [&](uint64_t v) { return static_cast<int64_t>(v << (64 - pos_bits)) >> (64 - pos_bits); };
+  golden::PerspectiveSlice s;
+  s.k = static_cast<int>(m.k_o);
+  s.z_voxel = static_cast<int>(m.z_voxel_o);
+  s.wz = m.wz_o;
+  s.spacing = get(m.spacing_o);
+  s.ray0_x = get(m.ray0_x_o);
+  s.ray0_y = get(m.ray0_y_o);
+  s.rays_x = {get(m.rays_x_lo_o), get(m.rays_x_hi_o)};
+  s.rays_y = {get(m.rays_y_lo_o), get(m.rays_y_hi_o)};
+  s.box_reciprocal = static_cast<uint64_t>(get(m.box_recip_o));
+  s.lateral_reciprocal = get(m.lateral_recip_o);
+  s.behind_x = {get(m.behind_start_x_o), get(m.behind_step_o)};
+  s.behind_y = {get(m.behind_start_y_o), get(m.behind_step_o)};
+  s.ahead_x = {get(m.ahead_start_x_o), get(m.ahead_step_o)};
+  s.ahead_y = {get(m.ahead_start_y_o), get(m.ahead_step_o)};
+  return s;
 }
 
 }  // namespace cube4::rtl

@@ -11,7 +11,7 @@
 #include "Vsys_compose_node.h"
 #include "Vsys_compose_out.h"
 #include "Vsys_dda.h"
-#include "Vsys_persp_slice.h"
+#include "Vsys_dda_persp.h"
 #include "Vsys_shade_lean.h"
 #include "Vsys_shade_tags.h"
 #include "Vsys_shade_unit.h"
@@ -26,7 +26,6 @@
 #include "systemc/rtl/rtl_gradient_persp.hpp"
 #include "systemc/rtl/rtl_interp.hpp"
 #include "systemc/rtl/rtl_interp_persp.hpp"
-#include "systemc/rtl/rtl_persp_slice.hpp"
 #include "systemc/rtl/rtl_shade.hpp"
 
 namespace cube4::sysc {
@@ -233,7 +232,7 @@ std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r,
 }
 
 std::vector<golden::PerspectiveSlice> rtl_perspective_slices(const golden::Registers& r, VerilatedContext& ctx) {
-  return run_rtl_persp_slices<Vsys_persp_slice>(r, ctx);
+  return run_rtl_dda_perspective<Vsys_dda_persp>(r, ctx);
 }
 
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,

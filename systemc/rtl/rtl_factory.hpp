@@ -89,9 +89,9 @@ std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan& plan,
 // (set-up clocks, not traced: docs/rtl-dda.md says why the frame's cycles
 // are the same).
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers& r, VerilatedContext& ctx);
-// Its perspective counterpart (cube4_persp_slice): the constants of slices
-// 0 .. K - 1 of a perspective frame (FramePlan's perspective_slices), set-up
-// clocks before the frame like cube4_dda's.
+// The same unit in a perspective frame (its divisions, cube4_persp_slice,
+// included): the constants of slices 0 .. K - 1 (FramePlan's
+// perspective_slices), set-up clocks before the frame likewise.
 std::vector<golden::PerspectiveSlice> rtl_perspective_slices(const golden::Registers& r, VerilatedContext& ctx);
 std::unique_ptr<AddrIf> make_rtl_addr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx,
                                       const TraceWindow& trace);

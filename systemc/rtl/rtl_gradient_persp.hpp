@@ -38,7 +38,7 @@ class RtlGradientPersp final : public PerspGradientIf {
         vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), m_(ctx, "gradient_persp", trace, "gradient") {
     m_->supersampling_i = static_cast<uint8_t>(plan.r.supersampling);
     // The ring takes one realignment step per neighbour for both axes (as
-    // cube4_persp_slice gives it): m_k / m_(k -/+ 1), the same in x and y.
+    // cube4_dda gives it): m_k / m_(k -/+ 1), the same in x and y.
     for (const golden::PerspectiveSlice& s : plan.persp)
       if (s.behind_x.step != s.behind_y.step || s.ahead_x.step != s.ahead_y.step)
         throw std::logic_error("RtlGradientPersp: slice " + std::to_string(s.k) +

@@ -9,7 +9,11 @@
 // restarted part-way (start_i wins over advance_i). Two width sets: the
 // defaults (FracBits 20 = golden's dda_frac_bits, W 8, 48-bit DDA) and
 // Vcube4_dda_w12 (rtl/groups/dda.cmake: W 12 over a 32-bit DDA of 16
-// fraction bits, S up to 31).
+// fraction bits, S up to 31, and no perspective hardware). The same unit
+// in perspective frames (perspective_i) against golden perspective_slice():
+// every constant of every slice of random cameras and of the host's
+// perspective views from all six base planes, the divisions' exact cycle
+// count, commands while they run, and frames of both projections in turn.
 //
 // CUBE4_RTL_VECTORS overrides the random slice count (default 1,000,000
 // per width set).
@@ -26,6 +30,7 @@
 #include "golden/scene_io.hpp"
 #include "golden/volume_io.hpp"
 #include "systemc/rtl/dda_control.hpp"
+#include "tb/rtl/persp_registers.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -76,6 +81,7 @@ class Bench {
     m_.y_start_i = mask(r.y_start, w_.pos_bits);
     m_.y_step_i = mask(r.y_step, w_.pos_bits);
     m_.supersampling_i = static_cast<uint32_t>(r.supersampling);
+    m_.perspective_i = 0;
     command(true, rng.chance(0.5));  // start_i wins over advance_i
     const int K = r.sample_slices();
     for (int k = 0;; ++k) {
@@ -95,7 +101,104 @@ class Bench {
     }
   }
 
+  // Runs the perspective frame of r, slices 0 .. K - 1: after each command
+  // the divided constants take exactly kSliceCycles (ready_o low until
+  // then) and every constant is golden's; now and then a command comes
+  // while the divisions run (they start over for the new slice) and idle
+  // cycles follow (the constants hold).
+  void perspective_frame(const g::Registers& r, rtl::Checker& c, rtl::Random& rng, double interrupt = 0) {
+    m_.x_start_i = mask(r.x_start, w_.pos_bits);
+    m_.x_step_i = mask(r.x_step, w_.pos_bits);
+    m_.y_start_i = mask(r.y_start, w_.pos_bits);
+    m_.y_step_i = mask(r.y_step, w_.pos_bits);
+    m_.scale_start_i = mask(r.scale_start, w_.pos_bits);
+    m_.scale_step_i = mask(r.scale_step, w_.pos_bits);
+    m_.supersampling_i = static_cast<uint32_t>(r.supersampling);
+    m_.dim_x_i = static_cast<uint32_t>(r.dim[0]);
+    m_.dim_y_i = static_cast<uint32_t>(r.dim[1]);
+    const int K = r.sample_slices();
+    m_.last_slice_i = static_cast<uint32_t>(K - 1);
+    m_.perspective_i = 1;
+    command(true, rng.chance(0.5));
+    for (int k = 0; k < K; ++k) {
+      if (k + 1 < K && rng.chance(interrupt)) {
+        // The next slice before this one's divisions are done.
+        const int wait = static_cast<int>(rng.range(0, kSliceCycles - 2));
+        for (int i = 0; i < wait && !m_.ready_o; ++i) command(false, false);
+        if (!m_.ready_o) {
+          ++interrupted_;
+          command(false, true);
+          continue;
+        }
+      }
+      int cycles = 1;  // the command's edge
+      while (!m_.ready_o && cycles <= 2 * kSliceCycles) {
+        command(false, false);
+        ++cycles;
+      }
+      check_perspective(r, k, cycles, c);
+      while (rng.chance(0.1)) {
+        command(false, false);
+        check_perspective(r, k, 0, c);
+      }
+      if (k + 1 < K) command(false, true);
+    }
+    m_.perspective_i = 0;
+  }
+
+  long interrupted() const { return interrupted_; }
+
+  // The clock edges from a command's (the first) to the one that raises
+  // ready_o in a perspective frame: cube4_persp_slice's start and twelve
+  // divisions of DivBits quotient bits, each with a load and a store (the
+  // unit's header).
+  static constexpr int kSliceCycles = 1 + 12 * (48 + 20 + 2);
+
  private:
+  void check_perspective(const g::Registers& r, int k, int cycles, rtl::Checker& c) {
+    const g::PerspectiveSlice e = g::perspective_slice(r, k);
+    const g::PerspectiveSlice got = rtl::read_perspective_slice(m_, w_.pos_bits);
+    // The first check of a slice counts its cycles; later ones (idle) hold.
+    const int expected_cycles = cycles == 0 ? 0 : kSliceCycles;
+    auto fields = [](const g::PerspectiveSlice& s, int cyc, bool ready) {
+      return Fields{{"ready", ready},
+                    {"cycles", cyc},
+                    {"k", s.k},
+                    {"z_voxel", s.z_voxel},
+                    {"wz", s.wz},
+                    {"spacing", s.spacing},
+                    {"ray0_x", s.ray0_x},
+                    {"ray0_y", s.ray0_y},
+                    {"rays_x_lo", s.rays_x.lo},
+                    {"rays_x_hi", s.rays_x.hi},
+                    {"rays_y_lo", s.rays_y.lo},
+                    {"rays_y_hi", s.rays_y.hi},
+                    {"box_recip", static_cast<int64_t>(s.box_reciprocal)},
+                    {"lateral_recip", s.lateral_reciprocal},
+                    {"behind_start_x", s.behind_x.start},
+                    {"behind_start_y", s.behind_y.start},
+                    {"behind_step_x", s.behind_x.step},
+                    {"behind_step_y", s.behind_y.step},
+                    {"ahead_start_x", s.ahead_x.start},
+                    {"ahead_start_y", s.ahead_y.start},
+                    {"ahead_step_x", s.ahead_x.step},
+                    {"ahead_step_y", s.ahead_y.step}};
+    };
+    c.check(cycle_,
+            Fields{{"k", k},
+                   {"K", r.sample_slices()},
+                   {"S", r.supersampling},
+                   {"scale_start", r.scale_start},
+                   {"scale_step", r.scale_step},
+                   {"x_start", r.x_start},
+                   {"x_step", r.x_step},
+                   {"y_start", r.y_start},
+                   {"y_step", r.y_step},
+                   {"nx", r.dim[0]},
+                   {"ny", r.dim[1]}},
+            fields(e, expected_cycles, true), fields(got, cycles, m_.ready_o));
+  }
+
   void command(bool start, bool advance) {
     m_.start_i = start;
     m_.advance_i = advance;
@@ -110,7 +213,8 @@ class Bench {
   void check(const g::Registers& r, int k, rtl::Checker& c) {
     const g::SliceControl e = g::slice_control(r, k);
     const g::SliceControl got = rtl::read_dda_control(m_, w_.pos_bits - w_.frac_bits);
-    const bool valid = m_.valid_o;
+    // Parallel frames need no divisions: ready_o is valid_o.
+    const bool valid = m_.valid_o && m_.ready_o;
     const bool equal = valid && got.k == e.k && got.z_voxel == e.z_voxel && got.wx == e.wx && got.wy == e.wy &&
                        got.wz == e.wz && got.ix == e.ix && got.iy == e.iy && got.dx == e.dx && got.dy == e.dy &&
                        same(got.behind_x, e.behind_x) && same(got.behind_y, e.behind_y) &&
@@ -142,6 +246,7 @@ class Bench {
   rtl::Dut<M> dut_ = rtl::make_dut<M>();
   M& m_ = *dut_;
   uint64_t cycle_ = 0;
+  long interrupted_ = 0;
 };
 
 g::Registers frame_registers(const Widths& w) {
@@ -258,6 +363,73 @@ TEST(RtlDda, EverySliceOfScenesMatchesGolden) {
     }
   EXPECT_TRUE(c.ok()) << c.report();
   EXPECT_EQ(frames, 24);
+}
+
+// Perspective frames: every slice of random cameras (up to 60 slices a
+// frame, so that many frames fit), with commands now and then while the
+// divisions run.
+TEST(RtlDda, RandomPerspectiveFramesMatchGolden) {
+  rtl::Random rng(17);
+  Bench<Vcube4_dda> b(kDefault);
+  rtl::Checker c("cube4_dda (perspective)");
+  const long n = rtl::vector_count(20000);
+  rtl::Timer t("cube4_dda: " + std::to_string(n) + " random perspective slices");
+  long slices = 0;
+  while (slices < n && c.ok()) {
+    const g::Registers r = rtl::random_perspective_registers(rng, kDefault.frac_bits, {1023, 1023, 20}, {1, 1, 1}, 3);
+    b.perspective_frame(r, c, rng, 0.05);
+    slices += r.sample_slices();
+  }
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_GT(b.interrupted(), 100);
+}
+
+// Every slice the host programs for perspective views from all six base
+// planes and oblique ones, several fields of view, S = 2.
+TEST(RtlDda, EverySliceOfPerspectiveScenesMatchesGolden) {
+  rtl::Random rng(23);
+  Bench<Vcube4_dda> b(kDefault);
+  rtl::Checker c("cube4_dda (perspective)");
+  const std::string views[] = {
+      R"({"projection": "perspective", "fov": 20, "rotate": [20, 30, 0]})",
+      R"({"projection": "perspective", "fov": 60, "rotate": [-40, 130, 10]})",
+      R"({"projection": "perspective", "fov": 80, "direction": [0.2, -1, 0.3]})",
+      R"({"projection": "perspective", "fov": 45, "direction": [0.1, 1, -0.4]})",
+      R"({"projection": "perspective", "fov": 45, "direction": [1, 0.1, -0.2]})",
+      R"({"projection": "perspective", "fov": 35, "direction": [-1, 0.3, 0.2]})",
+      R"({"projection": "perspective", "fov": 45, "direction": [-0.3, 0.2, -1]})",
+      R"({"projection": "perspective", "fov": 30, "direction": [0, 0, 1]})",
+  };
+  int slices = 0;
+  for (const std::string& view : views)
+    for (const char* volume : {R"({"synthetic": "sphere", "size": [40, 56, 24]})",
+                               R"({"synthetic": "sphere", "size": [64, 64, 64]})"}) {
+      const g::Scene sc = g::parse_scene(std::string(R"({"volume": )") + volume + R"(, "view": )" + view +
+                                             R"(, "supersampling": 2})",
+                                         "test.json");
+      const g::Volume vol = g::load_volume(sc.volume, sc.precision.voxel_bits, ".");
+      const g::Registers r = g::program_host(sc, vol).regs;
+      b.perspective_frame(r, c, rng);
+      slices += r.sample_slices();
+    }
+  EXPECT_TRUE(c.ok()) << c.report();
+  EXPECT_GT(slices, 1000);
+}
+
+// One unit serves both projections: frames of either kind in turn, each
+// from a unit the other kind left behind.
+TEST(RtlDda, ProjectionsInTurnMatchGolden) {
+  rtl::Random rng(29);
+  Bench<Vcube4_dda> b(kDefault);
+  rtl::Checker c("cube4_dda (both projections)");
+  for (int i = 0; i < 40 && c.ok(); ++i) {
+    if (i % 2 == 0)
+      b.perspective_frame(rtl::random_perspective_registers(rng, kDefault.frac_bits, {300, 300, 12}, {1, 1, 1}, 2), c,
+                          rng, 0.2);
+    else
+      b.frame(random_registers(rng, kDefault), c, rng, 0.1);
+  }
+  EXPECT_TRUE(c.ok()) << c.report();
 }
 
 }  // namespace

@@ -123,6 +123,10 @@ TEST(Explore, EachUnitIsSynthesisedWithTheParametersItDeclares) {
   EXPECT_EQ(d.at("cube4_addr"), "NumPipes=4");
   EXPECT_NE(d.at("cube4_dda").find("FracBits=20"), std::string::npos) << d.at("cube4_dda");
   EXPECT_EQ(d.at("cube4_dda").find("NumPipes"), std::string::npos);
+  // The weight generator's perspective divisions for perspective points only.
+  EXPECT_NE(d.at("cube4_dda").find("HasPerspective=0"), std::string::npos) << d.at("cube4_dda");
+  s.view.projection = golden::View::Projection::Perspective;
+  EXPECT_NE(declared_parameters(gate_config(s)).at("cube4_dda").find("HasPerspective=1"), std::string::npos);
   EXPECT_NE(d.at("cube4_shade_unit").find("AlphaBits=16"), std::string::npos);
   EXPECT_EQ(d.at("cube4_shade_unit").find("NumPipes"), std::string::npos);
   EXPECT_NE(d.at("cube4_composite_unit").find("SliceDepth=16384"), std::string::npos);

@@ -671,8 +671,8 @@ TEST(SystemPerspective, TheCheckNamesAWrongOrMissingGradientBySliceAndRay) {
     }
 }
 
-// The system's RTL weight generator (cube4_persp_slice) gives every slice
-// golden's constants, for views from each face; a wrong constant in the
+// The system's RTL weight generator (cube4_dda, its divisions included)
+// gives every slice golden's constants (its z weights too), for views from each face; a wrong constant in the
 // plan the unit runs with is caught by the frame's check, which keeps
 // golden's slices.
 TEST(SystemPerspective, TheRtlWeightGeneratorGivesGoldensSlicesAndAWrongOneIsCaught) {
