@@ -139,10 +139,14 @@ BasePlane empty_base_plane(const Registers& r) {
   bp.height = r.base_height();
   bp.bits = r.p.alpha_bits;
   bp.rgba.assign(static_cast<size_t>(bp.width) * bp.height * 4, 0);
+  set_base_plane_shift(bp, r);
+  return bp;
+}
+
+void set_base_plane_shift(BasePlane& bp, const Registers& r) {
   const double frac_one = std::ldexp(1.0, r.p.dda_frac_bits);
   bp.shift_x = r.base_origin_x() - r.x_start / frac_one;
   bp.shift_y = r.base_origin_y() - r.y_start / frac_one;
-  return bp;
 }
 
 }  // namespace cube4::golden

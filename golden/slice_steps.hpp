@@ -300,5 +300,8 @@ class SliceCompositor {
 
 // An empty base plane of the frame's size, with the warp's shift.
 BasePlane empty_base_plane(const Registers& r);
+// The warp's shift of the frame's base plane (BasePlane::shift_x, shift_y):
+// where ray (0, 0) enters, for either projection, margins included.
+void set_base_plane_shift(BasePlane& bp, const Registers& r);
 
 }  // namespace cube4::golden

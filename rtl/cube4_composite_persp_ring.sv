@@ -34,6 +34,18 @@
 // positions, the rays per axis; its voxel slice and z weight; whether it is
 // the frame's first or last slice; its tag). The ring keeps four passes'.
 //
+// Polygons (Cube-5 in perspective; HasPolygons, poly_enabled_i): each
+// sample comes with its ray's data, which the host's polygon images hold
+// by pixel (the ray's depth Z, front and back pixels) and the slab pixel
+// behind the sample (the slice's slab image at the ray's rank: the system
+// reads it decoded, where the parallel ring decodes its slab lines); a ray
+// starts from its front pixel instead of the empty accumulator, each
+// sample passes the Z test and is followed by its slab pixel
+// (cube4_composite's double composition), and a ray's pixel is its
+// accumulator over its back pixel (golden write_ray() with a polygon
+// frame; the accumulator leaves as it is). Rays that sample nothing are
+// the host's front over back, as in parallel projection.
+//
 // Preconditions: every pass has the same ny >= 6 rows and ceil(nx/p) <=
 // BeamDepth partial beams a beam, a beam at least 8 + Reach positions;
 // nx, ny <= MaxDim; no ray moves more than Reach cells between slices
@@ -46,6 +58,9 @@
 //   Reach    - the largest move R of a ray's home between slices
 //   VoxelBits, WeightBits, AlphaBits, AccGuardBits, CutBits, CutInvShift,
 //   PosBits, CutCoefBits, HasCutPlane - as cube4_composite
+//   HasPolygons - the polygon hardware above (0: none; poly_enabled_i,
+//              slice_k_i and the rays' polygon data are ignored)
+//   ZBits, SliceBits - a ray's depth and the slice index, as cube4_composite
 //   FracBits, DdaBits, RayBits - the walks' (cube4_persp_lanes: PosBits there)
 //   TagBits  - the pass tag's width
 `include "cube4_pkg.sv"
@@ -63,6 +78,9 @@ module cube4_composite_persp_ring #(
   parameter int unsigned  PosBits      = cube4_pkg::PosBits,
   parameter int unsigned  CutCoefBits  = cube4_pkg::CutCoefBits,
   parameter bit           HasCutPlane  = 1'b1,
+  parameter bit           HasPolygons  = 1'b1,
+  parameter int unsigned  ZBits        = cube4_pkg::ZBits,
+  parameter int unsigned  SliceBits    = cube4_pkg::SliceBits,
   parameter int unsigned  FracBits     = cube4_pkg::FracBits,
   parameter int unsigned  DdaBits      = 48,
   parameter int unsigned  RayBits      = 16,
@@ -97,8 +115,8 @@ module cube4_composite_persp_ring #(
   input  logic [CutBits-1:0]                 cut_falloff_i,
   input  logic [AlphaBits+CutInvShift-1:0]   cut_inv_falloff_i,
   input  logic                               cut_keep_inside_i,
-  // No polygon hardware (a later variant): must be 0; the port is
-  // cube4_composite's, so that one driver binds every compositing unit.
+  // Frame register: polygons (with HasPolygons; the blend must then be
+  // composite).
   input  logic                               poly_enabled_i,
   // Stream steps.
   input  logic                               valid_i,
@@ -120,6 +138,7 @@ module cube4_composite_persp_ring #(
   input  logic                               first_i,
   input  logic                               last_i,
   input  logic [TagBits-1:0]                 tag_i,
+  input  logic [SliceBits-1:0]               slice_k_i,  // the pass's slice (polygons' Z test)
   // The shaded samples of this step, on their lanes.
   input  logic [NumPipes-1:0]                sample_valid_i,
   input  logic [NumPipes*AlphaBits-1:0]      red_i,
@@ -127,6 +146,21 @@ module cube4_composite_persp_ring #(
   input  logic [NumPipes*AlphaBits-1:0]      blue_i,
   input  logic [NumPipes*AlphaBits-1:0]      alpha_i,
   input  logic [NumPipes*VoxelBits-1:0]      value_i,
+  // Polygons, with each sample: its ray's depth, front and back pixels,
+  // and the slab pixel behind it (premultiplied).
+  input  logic [NumPipes*ZBits-1:0]          ray_z_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_front_red_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_front_green_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_front_blue_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_front_alpha_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_back_red_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_back_green_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_back_blue_i,
+  input  logic [NumPipes*AlphaBits-1:0]      ray_back_alpha_i,
+  input  logic [NumPipes*AlphaBits-1:0]      slab_red_i,
+  input  logic [NumPipes*AlphaBits-1:0]      slab_green_i,
+  input  logic [NumPipes*AlphaBits-1:0]      slab_blue_i,
+  input  logic [NumPipes*AlphaBits-1:0]      slab_alpha_i,
   // Rays that leave: their accumulator and pixel, per pipeline.
   output logic [NumPipes-1:0]                pixel_valid_o,
   output logic [NumPipes*RayBits-1:0]        ray_u_o,
@@ -154,6 +188,10 @@ module cube4_composite_persp_ring #(
   localparam int unsigned HomeBits  = DdaBits - FracBits;
   localparam int unsigned AccBits   = 1 + V + 4 * AB;  // {selected, value, alpha, blue, green, red}
   localparam int unsigned SampleBits = 4 * A + V;      // {value, alpha, blue, green, red}
+  // A sample's polygon data: {slab, back, front (each alpha, blue, green,
+  // red), Z}; one unused bit without polygons.
+  localparam int unsigned PixBits  = 4 * A;
+  localparam int unsigned PolyBits = HasPolygons ? ZBits + 3 * PixBits : 1;
   localparam int unsigned Latency   = 7;               // cube4_composite
   localparam int unsigned AccDelay  = 6;               // its accumulator input
   // The stream columns a cell's sample arrives and blends after its home.
@@ -169,7 +207,8 @@ module cube4_composite_persp_ring #(
   // The last four passes' constants, in one word each (fields from the LSB
   // up; words, not structs, for yosys 0.23: docs/toolchain.md).
   localparam int unsigned PTag     = 0;
-  localparam int unsigned PLast    = PTag + TagBits;
+  localparam int unsigned PK       = PTag + TagBits;
+  localparam int unsigned PLast    = PK + SliceBits;
   localparam int unsigned PFirst   = PLast + 1;
   localparam int unsigned PWz      = PFirst + 1;
   localparam int unsigned PZ       = PWz + WeightBits;
@@ -220,7 +259,7 @@ module cube4_composite_persp_ring #(
   always_ff @(posedge clk_i) begin
     if (pass_start) begin
       passes_q[pass_now] <= {spacing_i, ray0_x_i, ray0_y_i, rays_x_lo_i, rays_x_hi_i, rays_y_lo_i, rays_y_hi_i,
-                             z_voxel_i, wz_i, first_i, last_i, tag_i};
+                             z_voxel_i, wz_i, first_i, last_i, slice_k_i, tag_i};
     end
   end
 
@@ -290,8 +329,6 @@ module cube4_composite_persp_ring #(
     .lane_ray_o     (x_ray),
     .lane_weight_o  (x_weight)
   );
-  logic unused_poly;  // no polygon hardware yet
-  assign unused_poly = poly_enabled_i;
 
   // The ray's row on the slice before: one multiply a beam.
   logic [DdaBits-1:0]  y_before_pos;
@@ -379,7 +416,7 @@ module cube4_composite_persp_ring #(
   // last SampleDepth steps, the x walk's lanes (with the step's partial
   // beam) and the blend contexts of the last CellDepth, the packets of the
   // last WinDepth.
-  localparam int unsigned SlotBits = 1 + SampleBits;
+  localparam int unsigned SlotBits = 1 + PolyBits + SampleBits;
   localparam int unsigned LaneBits = 1 + RayBits + WeightBits + HomeBits;  // valid, u, wx, cell X
   logic [(SampleDepth+1)*P*SlotBits-1:0] smp_hist;
   logic [(CellDepth+1)*P*LaneBits-1:0]   lane_hist;
@@ -392,10 +429,26 @@ module cube4_composite_persp_ring #(
   logic [CellDepth*ColBits-1:0]          col_hist_q;
   logic [WinDepth*P*AccBits-1:0]         pkt_hist_q;
 
+  if (!HasPolygons) begin : g_no_polygon_inputs
+    logic unused_polygon_inputs;  // a ring without polygon hardware ignores them
+    assign unused_polygon_inputs = ^{ray_z_i, ray_front_red_i, ray_front_green_i, ray_front_blue_i,
+                                     ray_front_alpha_i, ray_back_red_i, ray_back_green_i, ray_back_blue_i,
+                                     ray_back_alpha_i, slab_red_i, slab_green_i, slab_blue_i, slab_alpha_i};
+  end
+
   // The cell each lane of the x walk holds: j*p + k (its home column).
   for (genvar k = 0; k < P; k++) begin : g_live
+    logic [PolyBits-1:0] poly;
+    if (HasPolygons) begin : g_poly
+      assign poly = {slab_alpha_i[k*A +: A], slab_blue_i[k*A +: A], slab_green_i[k*A +: A], slab_red_i[k*A +: A],
+                     ray_back_alpha_i[k*A +: A], ray_back_blue_i[k*A +: A], ray_back_green_i[k*A +: A],
+                     ray_back_red_i[k*A +: A], ray_front_alpha_i[k*A +: A], ray_front_blue_i[k*A +: A],
+                     ray_front_green_i[k*A +: A], ray_front_red_i[k*A +: A], ray_z_i[k*ZBits +: ZBits]};
+    end else begin : g_no_poly
+      assign poly = 1'b0;
+    end
     assign smp_hist[k*SlotBits +: SlotBits] =
-        {sample_valid_i[k], value_i[k*V +: V], alpha_i[k*A +: A], blue_i[k*A +: A], green_i[k*A +: A],
+        {sample_valid_i[k], poly, value_i[k*V +: V], alpha_i[k*A +: A], blue_i[k*A +: A], green_i[k*A +: A],
          red_i[k*A +: A]};
     assign lane_hist[k*LaneBits +: LaneBits] =
         {x_valid[k], x_ray[k*RayBits +: RayBits], x_weight[k*WeightBits +: WeightBits],
@@ -433,6 +486,7 @@ module cube4_composite_persp_ring #(
   // at s - R, of the cell at s - Blend, with the window's word at s - d.
   logic [P*AccBits-1:0] blended;   // cube4_composite's results
   logic [P-1:0]         blended_valid;
+  logic [P*4*A-1:0]     back_out;  // with each result, its ray's back pixel
   localparam int unsigned WbBits = 1 + 1 + RowBits + HomeBits + 1 + 2 * RayBits + TagBits;
   logic [P*WbBits-1:0]  blended_where;  // {leaves, parity, row, stored lane, early, u, v, tag}
 
@@ -444,7 +498,32 @@ module cube4_composite_persp_ring #(
 
     logic                  smp_valid;
     logic [SampleBits-1:0] smp;
-    assign {smp_valid, smp} = smp_hist[(SmpBack*P + SmpPipe)*SlotBits +: SlotBits];
+    logic [PolyBits-1:0]   smp_poly;
+    assign {smp_valid, smp_poly, smp} = smp_hist[(SmpBack*P + SmpPipe)*SlotBits +: SlotBits];
+
+    // Polygons: the ray's start (its front pixel widened: golden
+    // pixel_to_acc), its depth, and the slab and back pixels, which join
+    // the blend in its cycle 6 and its result in cycle 7.
+    logic [AccBits-1:0]    start;
+    logic [ZBits-1:0]      ray_z;
+    logic [PixBits-1:0]    slab_pix, back_pix;
+    if (HasPolygons) begin : g_poly
+      logic [PixBits-1:0] front_pix;
+      logic [4*AB-1:0]    front_acc;
+      assign {slab_pix, back_pix, front_pix, ray_z} = smp_poly;
+      for (genvar ch = 0; ch < 4; ch++) begin : g_widen
+        cube4_to_acc #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_front (
+          .pixel_i(front_pix[ch*A +: A]), .acc_o(front_acc[ch*AB +: AB]));
+      end
+      assign start = poly_enabled_i ? {1'b0, V'(0), front_acc} : '0;
+    end else begin : g_no_poly
+      assign start    = '0;
+      assign ray_z    = '0;
+      assign slab_pix = '0;
+      assign back_pix = '0;
+      logic unused_poly;
+      assign unused_poly = ^{smp_poly, poly_enabled_i};
+    end
 
     logic                  lane_valid;
     logic [RayBits-1:0]    u;
@@ -482,7 +561,7 @@ module cube4_composite_persp_ring #(
     logic [AccBits-1:0]  acc_in;
     assign back = cell_x - x_before + HomeBits'(R);
     always_comb begin
-      acc_in = '0;
+      acc_in = start;
       for (int unsigned d = 0; d <= 2 * R; d++) begin
         if (from_before && back == HomeBits'(d)) acc_in = window[d*AccBits +: AccBits];
       end
@@ -498,6 +577,16 @@ module cube4_composite_persp_ring #(
     end
     logic [AccBits-1:0] acc_late;
     assign acc_late = acc_q[(AccDelay-1)*AccBits +: AccBits];
+    // The slab pixel with the accumulator, the back pixel with the result.
+    logic [AccDelay*PixBits-1:0] slab_q;
+    logic [Latency*PixBits-1:0]  back_q;
+    always_ff @(posedge clk_i) begin
+      slab_q <= {slab_q[0 +: (AccDelay-1)*PixBits], slab_pix};
+      back_q <= {back_q[0 +: (Latency-1)*PixBits], back_pix};
+    end
+    logic [PixBits-1:0] slab_late;
+    assign slab_late = slab_q[(AccDelay-1)*PixBits +: PixBits];
+    assign back_out[k*PixBits +: PixBits] = back_q[(Latency-1)*PixBits +: PixBits];
 
     logic [AB-1:0] o_red, o_green, o_blue, o_alpha;
     logic [V-1:0]  o_value;
@@ -512,7 +601,9 @@ module cube4_composite_persp_ring #(
       .PosBits     (PosBits),
       .CutCoefBits (CutCoefBits),
       .HasCutPlane (HasCutPlane),
-      .HasPolygons (1'b0)
+      .HasPolygons (HasPolygons),
+      .ZBits       (ZBits),
+      .SliceBits   (SliceBits)
     ) u_composite (
       .clk_i            (clk_i),
       .rst_ni           (rst_ni),
@@ -541,13 +632,13 @@ module cube4_composite_persp_ring #(
       .cut_falloff_i    (cut_falloff_i),
       .cut_inv_falloff_i(cut_inv_falloff_i),
       .cut_keep_inside_i(cut_keep_inside_i),
-      .poly_enabled_i   (1'b0),
-      .slice_k_i        ('0),
-      .ray_z_i          ('0),
-      .slab_red_i       ('0),
-      .slab_green_i     ('0),
-      .slab_blue_i      ('0),
-      .slab_alpha_i     ('0),
+      .poly_enabled_i   (poly_enabled_i),
+      .slice_k_i        (fp[PK +: SliceBits]),
+      .ray_z_i          (ray_z),
+      .slab_red_i       (slab_late[0 +: A]),
+      .slab_green_i     (slab_late[A +: A]),
+      .slab_blue_i      (slab_late[2*A +: A]),
+      .slab_alpha_i     (slab_late[3*A +: A]),
       .valid_i          (form),
       .red_i            (smp[0 +: A]),
       .green_i          (smp[A +: A]),
@@ -673,13 +764,59 @@ module cube4_composite_persp_ring #(
     assign acc_alpha_o[k*AB +: AB]       = acc[3*AB +: AB];
     assign acc_value_o[k*V +: V]         = acc[4*AB +: V];
     assign acc_selected_o[k]             = acc[4*AB + V];
-    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_red   (.acc_i(acc[0 +: AB]),
+    // The pixel: the ray over its back pixel with polygons (golden
+    // leave_with_polygons(); a blank back pixel leaves the ray as it is).
+    logic [4*AB-1:0] exit;  // {alpha, blue, green, red}
+    if (HasPolygons) begin : g_leave
+      logic [4*AB-1:0] back_acc, back_in;
+      for (genvar ch = 0; ch < 4; ch++) begin : g_widen
+        cube4_to_acc #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_back (
+          .pixel_i(back_out[k*4*A + ch*A +: A]), .acc_o(back_acc[ch*AB +: AB]));
+      end
+      assign back_in = poly_enabled_i ? back_acc : '0;
+      logic                 unused_exit_valid, unused_exit_selected;
+      logic [V-1:0]         unused_exit_value;
+      cube4_compose_node #(
+        .VoxelBits(V), .AlphaBits(A), .AccGuardBits(AccGuardBits), .Latency(0)
+      ) u_leave (
+        .clk_i,
+        .rst_ni,
+        .blend_mode_i    (cube4_pkg::BlendComposite),
+        .valid_i         (blended_valid[k]),
+        .front_red_i     (acc[0 +: AB]),
+        .front_green_i   (acc[AB +: AB]),
+        .front_blue_i    (acc[2*AB +: AB]),
+        .front_alpha_i   (acc[3*AB +: AB]),
+        .front_value_i   (acc[4*AB +: V]),
+        .front_selected_i(acc[4*AB + V]),
+        .back_red_i      (back_in[0 +: AB]),
+        .back_green_i    (back_in[AB +: AB]),
+        .back_blue_i     (back_in[2*AB +: AB]),
+        .back_alpha_i    (back_in[3*AB +: AB]),
+        .back_value_i    ('0),
+        .back_selected_i (1'b0),
+        .valid_o         (unused_exit_valid),
+        .red_o           (exit[0 +: AB]),
+        .green_o         (exit[AB +: AB]),
+        .blue_o          (exit[2*AB +: AB]),
+        .alpha_o         (exit[3*AB +: AB]),
+        .value_o         (unused_exit_value),
+        .selected_o      (unused_exit_selected)
+      );
+      logic unused_leave;
+      assign unused_leave = ^{unused_exit_valid, unused_exit_selected, unused_exit_value};
+    end else begin : g_no_leave
+      assign exit = acc[0 +: 4*AB];
+      logic unused_back;
+      assign unused_back = ^back_out[k*4*A +: 4*A];
+    end
+    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_red   (.acc_i(exit[0 +: AB]),
                                                                            .pixel_o(pixel_red_o[k*A +: A]));
-    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_green (.acc_i(acc[AB +: AB]),
+    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_green (.acc_i(exit[AB +: AB]),
                                                                            .pixel_o(pixel_green_o[k*A +: A]));
-    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_blue  (.acc_i(acc[2*AB +: AB]),
+    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_blue  (.acc_i(exit[2*AB +: AB]),
                                                                            .pixel_o(pixel_blue_o[k*A +: A]));
-    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_alpha (.acc_i(acc[3*AB +: AB]),
+    cube4_acc_to_pixel #(.AlphaBits(A), .AccGuardBits(AccGuardBits)) u_alpha (.acc_i(exit[3*AB +: AB]),
                                                                            .pixel_o(pixel_alpha_o[k*A +: A]));
     logic unused_where;
     assign unused_where = ^{parity, row, lane, early};

@@ -113,10 +113,9 @@ void check_system_limits(const golden::Registers& r, const SystemConfig& cfg) {
 void check_polygon_levels(const SystemConfig& cfg, bool perspective) {
   if (cfg.levels[static_cast<size_t>(Unit::Composite)] != Level::Rtl) return;
   if (perspective)
-    throw std::invalid_argument(
-        "the perspective compositing ring has no polygon hardware yet; run the composite unit at TLM (--model "
-        "mixed: without composite)");
-  require_rtl_polygons(cfg.p);
+    require_rtl_persp_polygons(cfg.p);
+  else
+    require_rtl_polygons(cfg.p);
 }
 
 // Perspective frames run loosely timed at TLM, or clocked, every unit at
@@ -244,7 +243,7 @@ void run_perspective(const ClockedFrame& f, SystemResult& res) {
     shade = std::make_unique<TlmShadePersp>(plan);
   std::unique_ptr<PerspCompositor> composite;
   if (cfg.levels[static_cast<size_t>(Unit::Composite)] == Level::Rtl)
-    composite = make_rtl_composite_persp(plan, cfg.accumulators, *f.ctx, cfg.trace);
+    composite = make_rtl_composite_persp(plan, cfg.accumulators, *f.ctx, cfg.trace, f.polygons);
   else
     composite = std::make_unique<TlmCompositePersp>(plan, cfg.accumulators, f.polygons);
   const PerspectiveFrameResult pr =

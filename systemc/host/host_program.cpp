@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "golden/slice_steps.hpp"
 #include "systemc/host/register_map.hpp"
 
 namespace cube4::sysc {
@@ -369,12 +370,10 @@ golden::BasePlane read_base_plane_over_tlm(TlmTarget& target, const golden::Regi
     bp.rgba[2 * i] = static_cast<uint16_t>(words[i]);
     bp.rgba[2 * i + 1] = static_cast<uint16_t>(words[i] >> 16);
   }
-  // As golden::render_fixed: where ray (0, 0) enters, for the warp.
+  // As golden::render_fixed: where ray (0, 0) enters, for the warp
+  // (perspective frames and polygon margins included).
   bp.bits = regs.p.alpha_bits;
-  const int k_last = regs.sample_slices() - 1;
-  const double frac_one = static_cast<double>(int64_t{1} << regs.p.dda_frac_bits);
-  bp.shift_x = regs.x_offset(k_last).integer - regs.x_start / frac_one;
-  bp.shift_y = regs.y_offset(k_last).integer - regs.y_start / frac_one;
+  golden::set_base_plane_shift(bp, regs);
   return bp;
 }
 

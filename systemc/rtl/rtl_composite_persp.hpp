@@ -6,7 +6,11 @@
 // looked up by the pass tag the beat carries (the zero pass, tag K, has no
 // rays). Each ray's pixel (and with `accumulators` its accumulator) is
 // written as it leaves the ring; a frame ends with the last of its rays,
-// when the pixels of rays that sampled nothing are written too.
+// when the pixels of rays that sampled nothing are written too. With a
+// polygon frame (a ring built with HasPolygons) every sample goes in with
+// its ray's depth, front and back pixels and the slab pixel behind it,
+// read from the host's polygon images (PerspPolygonPixels), and the rays
+// that sampled nothing are the front over the back pixel.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -15,6 +19,7 @@
 #include "golden/perspective_dataflow.hpp"
 #include "golden/slice_steps.hpp"
 #include "systemc/core/frame_plan.hpp"
+#include "systemc/core/persp_polygon_pixels.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/rtl/rtl_model.hpp"
 #include "systemc/rtl/unit_registers.hpp"
@@ -26,13 +31,15 @@ namespace cube4::sysc {
 template <class M>
 class RtlCompositePersp final : public PerspCompositor {
  public:
-  RtlCompositePersp(const FramePlan& plan, bool accumulators, VerilatedContext& ctx, const TraceWindow& trace)
+  RtlCompositePersp(const FramePlan& plan, bool accumulators, VerilatedContext& ctx, const TraceWindow& trace,
+                    const golden::PolygonFrame* polygons = nullptr)
       : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), a_(plan.r.p.alpha_bits),
         ab_(plan.r.p.alpha_bits + plan.r.p.acc_guard_bits), tag_bits_(plan.tag_bits()), accumulators_(accumulators),
         origin_x_(plan.r.base_origin_x()), origin_y_(plan.r.base_origin_y()),
         per_frame_(golden::perspective_samples(plan.r)), plane_(golden::empty_base_plane(plan.r)),
-        m_(ctx, "composite_persp", trace, "composite") {
+        polygon_pixels_(plan, polygons), m_(ctx, "composite_persp", trace, "composite") {
     rtl::drive_composite_registers(*m_, plan.r);
+    m_->poly_enabled_i = polygons != nullptr;
     // The rays that leave a frame: those that sample some slice (each
     // samples one run of slices and leaves once).
     std::vector<uint8_t> sampled(static_cast<size_t>(plane_.width) * plane_.height, 0);
@@ -59,6 +66,7 @@ class RtlCompositePersp final : public PerspCompositor {
       put_bits(m.blue_i, k * a_, a_, in.blue[i]);
       put_bits(m.alpha_i, k * a_, a_, in.alpha[i]);
       put_bits(m.value_i, k * v_, v_, in.value[i]);
+      if (polygon_pixels_.frame() && step && (in.valid >> k & 1)) drive_polygons(k, in.tag[i], in.u[i], in.v[i]);
     }
     m_.settle();
     for (int k = 0; k < p_; ++k) {
@@ -103,13 +111,31 @@ class RtlCompositePersp final : public PerspCompositor {
     left_ = 0;
   }
   void end_frame() {
-    // Rays that sampled nothing leave as they started: empty.
+    // Rays that sampled nothing leave as they started.
     for (int y = 0; y < frame_.height; ++y)
       for (int x = 0; x < frame_.width; ++x)
         if (!written_[static_cast<size_t>(y) * frame_.width + x])
-          golden::write_ray(frame_, x, y, golden::RayAcc{}, plan_.r.p);
+          golden::write_ray(frame_, x, y, polygon_pixels_.start(static_cast<size_t>(y) * frame_.width + x), plan_.r.p,
+                            polygon_pixels_.frame());
     plane_ = std::move(frame_);
     start_frame();
+  }
+  // Lane k's sample of ray (u, v) on slice `slice`: its polygon data.
+  void drive_polygons(int k, uint32_t slice, int64_t u, int64_t v) {
+    using rtl::put_bits;
+    M& m = *m_;
+    const golden::PolygonFrame& poly = *polygon_pixels_.frame();
+    const size_t i = pixel(u, v);
+    put_bits(m.ray_z_i, k * golden::kZBits, golden::kZBits, poly.z[i]);
+    auto drive = [&](const golden::Pixel& px, auto& red, auto& green, auto& blue, auto& alpha) {
+      put_bits(red, k * a_, a_, px.r);
+      put_bits(green, k * a_, a_, px.g);
+      put_bits(blue, k * a_, a_, px.b);
+      put_bits(alpha, k * a_, a_, px.a);
+    };
+    drive(poly.front[i], m.ray_front_red_i, m.ray_front_green_i, m.ray_front_blue_i, m.ray_front_alpha_i);
+    drive(poly.back[i], m.ray_back_red_i, m.ray_back_green_i, m.ray_back_blue_i, m.ray_back_alpha_i);
+    drive(polygon_pixels_.behind(slice, u, v), m.slab_red_i, m.slab_green_i, m.slab_blue_i, m.slab_alpha_i);
   }
   // The constants of the pass `tag` names (K: the zero pass, no rays).
   void drive_pass(uint64_t tag) {
@@ -122,6 +148,7 @@ class RtlCompositePersp final : public PerspCompositor {
     m.first_i = !zero && tag == 0;
     m.last_i = !zero && tag + 1 == static_cast<uint64_t>(plan_.K);
     rtl::put_bits(m.tag_i, 0, tag_bits_, tag);
+    rtl::put_bits(m.slice_k_i, 0, 16, zero ? 0 : tag);
   }
 
   const FramePlan& plan_;
@@ -131,6 +158,7 @@ class RtlCompositePersp final : public PerspCompositor {
   uint64_t per_frame_, leaving_per_frame_ = 0, left_ = 0;
   golden::BasePlane frame_, plane_;
   std::vector<uint8_t> written_;
+  PerspPolygonPixels polygon_pixels_;
   RtlModel<M> m_;
 };
 

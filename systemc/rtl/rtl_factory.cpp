@@ -170,6 +170,20 @@ void require_rtl_perspective(int p) {
                   "CUBE4_SYSTEM_PERSP_PIPES", "run the perspective units at TLM");
 }
 
+std::vector<int> rtl_persp_polygon_pipes() {
+  return {
+#define CUBE4_RTL_PERSP_POLY_P(p) p,
+#include "rtl_persp_poly_variant_list.inc"
+#undef CUBE4_RTL_PERSP_POLY_P
+  };
+}
+
+void require_rtl_persp_polygons(int p) {
+  require_variant(p, rtl_persp_polygon_pipes(), "RTL perspective compositing ring with polygon hardware",
+                  "CUBE4_SYSTEM_PERSP_PIPES and CUBE4_SYSTEM_POLYGON_PIPES",
+                  "run the compositing unit at TLM (--model mixed: without composite)");
+}
+
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                      const TraceWindow& trace) {
   require_rtl_perspective(plan.p);
@@ -216,8 +230,20 @@ std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, 
 }
 
 std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan& plan, bool accumulators,
-                                                          VerilatedContext& ctx, const TraceWindow& trace) {
+                                                          VerilatedContext& ctx, const TraceWindow& trace,
+                                                          const golden::PolygonFrame* polygons) {
   require_rtl_perspective(plan.p);
+  if (polygons) {
+    require_rtl_persp_polygons(plan.p);
+    switch (plan.p) {
+#define CUBE4_RTL_PERSP_POLY_P(p)                                                                                   \
+  case p:                                                                                                           \
+    return std::make_unique<RtlCompositePersp<Vsys_composite_persp_poly_p##p>>(plan, accumulators, ctx, trace, \
+                                                                              polygons);
+#include "rtl_persp_poly_variant_list.inc"
+#undef CUBE4_RTL_PERSP_POLY_P
+    }
+  }
   switch (plan.p) {
 #define CUBE4_RTL_PERSP_P(p) \
   case p: return std::make_unique<RtlCompositePersp<Vsys_composite_persp_p##p>>(plan, accumulators, ctx, trace);

@@ -66,6 +66,11 @@ void require_rtl_zdiff(int p, int tag_bits);
 // has none.
 std::vector<int> rtl_persp_pipes();
 void require_rtl_perspective(int p);
+// The p values whose perspective compositing ring is verilated with polygon
+// hardware (both CUBE4_SYSTEM_PERSP_PIPES and CUBE4_SYSTEM_POLYGON_PIPES);
+// throws, naming them, if p has none.
+std::vector<int> rtl_persp_polygon_pipes();
+void require_rtl_persp_polygons(int p);
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                      const TraceWindow& trace);
 // The perspective gradient ring (cube4_gradient_persp_ring), on
@@ -77,12 +82,14 @@ constexpr int kRtlGradientPerspMinRows = 6, kRtlGradientPerspMinRow = 7;
 std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                          const TraceWindow& trace);
 // The perspective compositing ring (cube4_composite_persp_ring, reach
-// kPerspectiveReach), on TlmCompositePersp's schedule; frames with polygons,
-// fewer than kRtlGradientPerspMinRows rows or beams shorter than
-// kRtlCompositePerspMinRow positions are refused first.
+// kPerspectiveReach), on TlmCompositePersp's schedule; frames with fewer
+// than kRtlGradientPerspMinRows rows or beams shorter than
+// kRtlCompositePerspMinRow positions are refused first. A frame with
+// polygons gets the ring with polygon hardware, fed the polygon images.
 constexpr int kRtlCompositePerspMinRow = 8 + kPerspectiveReach;
 std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan& plan, bool accumulators,
-                                                          VerilatedContext& ctx, const TraceWindow& trace);
+                                                          VerilatedContext& ctx, const TraceWindow& trace,
+                                                          const golden::PolygonFrame* polygons = nullptr);
 // The weight generator at RTL (cube4_dda, one for all pipelines): the
 // control of slices 0 .. K of a parallel-projection frame (FramePlan's
 // slice_controls), clocked through the frame's slices before it starts

@@ -25,6 +25,8 @@ void require_rtl_zdiff(int, int) { unavailable(); }
 void require_rtl_polygons(int) { unavailable(); }
 std::vector<int> rtl_persp_pipes() { return {}; }
 void require_rtl_perspective(int) { unavailable(); }
+std::vector<int> rtl_persp_polygon_pipes() { return {}; }
+void require_rtl_persp_polygons(int) { unavailable(); }
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan&, VerilatedContext&, const TraceWindow&) {
   unavailable();
 }
@@ -32,7 +34,7 @@ std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan&, Veril
   unavailable();
 }
 std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan&, bool, VerilatedContext&,
-                                                          const TraceWindow&) {
+                                                          const TraceWindow&, const golden::PolygonFrame*) {
   unavailable();
 }
 std::vector<golden::SliceControl> rtl_slice_controls(const golden::Registers&, VerilatedContext&) { unavailable(); }

@@ -15,6 +15,7 @@ TlmCompositePersp::TlmCompositePersp(const FramePlan& plan, bool accumulators, c
     : plan_(plan),
       accumulators_(accumulators),
       polygons_(polygons),
+      polygon_pixels_(plan, polygons),
       reach_(reach),
       origin_x_(plan.r.base_origin_x()),
       origin_y_(plan.r.base_origin_y()),
@@ -28,33 +29,10 @@ TlmCompositePersp::TlmCompositePersp(const FramePlan& plan, bool accumulators, c
   start_frame();
 }
 
-golden::RayAcc TlmCompositePersp::start(size_t pixel) const {
-  return polygons_ ? golden::pixel_to_acc(polygons_->front[pixel], plan_.r.p) : golden::RayAcc{};
-}
-
 void TlmCompositePersp::start_frame() {
   frame_ = golden::empty_base_plane(plan_.r);
   if (accumulators_) frame_.acc.assign(static_cast<size_t>(frame_.width) * frame_.height, golden::RayAcc{});
   written_.assign(static_cast<size_t>(frame_.width) * frame_.height, 0);
-}
-
-const std::vector<golden::Pixel>& TlmCompositePersp::slab(uint32_t k) {
-  for (auto& [slice, pixels] : slabs_)
-    if (slice == k) return pixels;
-  auto& [slice, pixels] = slabs_[0].first < slabs_[1].first ? slabs_[0] : slabs_[1];
-  const golden::PerspectiveSlice& s = plan_.persp[k];
-  const golden::SlabImage& image = polygons_->slabs[k];
-  // Rays are at least a voxel apart: their ranks fit the volume's slice.
-  if (s.rays_x.hi - s.rays_x.lo > image.width() || s.rays_y.hi - s.rays_y.lo > image.beams())
-    throw std::logic_error("TlmCompositePersp: slice " + std::to_string(k) + "'s slab image (" +
-                           std::to_string(image.width()) + " x " + std::to_string(image.beams()) +
-                           ") is smaller than its rays");
-  const auto width = static_cast<size_t>(image.width());
-  pixels.assign(width * static_cast<size_t>(image.beams()), golden::Pixel{});
-  if (!image.empty())
-    for (int y = 0; y < image.beams(); ++y) image.decode_beam(y, &pixels[static_cast<size_t>(y) * width]);
-  slice = k;
-  return pixels;
 }
 
 void TlmCompositePersp::blend(const Sample& in, int64_t position, int64_t step) {
@@ -74,7 +52,7 @@ void TlmCompositePersp::blend(const Sample& in, int64_t position, int64_t step) 
       static_cast<size_t>(v + origin_y_) * static_cast<size_t>(frame_.width) + static_cast<size_t>(u + origin_x_);
   // The ray's accumulator: of the slice before, at its home there, read by
   // that home's column stage `d` positions before this blend.
-  golden::RayAcc ray = start(pixel);
+  golden::RayAcc ray = polygon_pixels_.start(pixel);
   if (k > 0 && golden::samples(plan_.persp[k - 1], u, v)) {
     const golden::PerspectiveSlice& before = plan_.persp[k - 1];
     const int64_t Xb = golden::ray_home(golden::axis_slice(before, 0), u, F);
@@ -101,12 +79,8 @@ void TlmCompositePersp::blend(const Sample& in, int64_t position, int64_t step) 
   if (!polygons_) {
     ray = golden::blend(plan_.r.blend, ray, out, plan_.r.p);
   } else {
-    // The slab's pixel (x, y) lies behind the slice's ray of rank (x, y).
-    const auto width = static_cast<size_t>(polygons_->slabs[k].width());
-    const golden::Pixel& behind =
-        slab(k)[static_cast<size_t>(v - s.rays_y.lo) * width + static_cast<size_t>(u - s.rays_x.lo)];
     ray = golden::double_composite(ray, out, golden::sample_before_z(static_cast<int>(k), polygons_->z[pixel]),
-                                   behind, plan_.r.p);
+                                   polygon_pixels_.behind(k, u, v), plan_.r.p);
   }
   stores_[static_cast<size_t>(pass & 1)][static_cast<size_t>(Y * plan_.nx + X)] = {ray, pass, u, v,
                                                                                  step + kLatency + reach_};
@@ -123,7 +97,7 @@ void TlmCompositePersp::end_frame() {
   for (int y = 0; y < frame_.height; ++y)
     for (int x = 0; x < frame_.width; ++x) {
       const size_t i = static_cast<size_t>(y) * frame_.width + x;
-      if (!written_[i]) golden::write_ray(frame_, x, y, start(i), plan_.r.p, polygons_);
+      if (!written_[i]) golden::write_ray(frame_, x, y, polygon_pixels_.start(i), plan_.r.p, polygons_);
     }
   plane_ = std::move(frame_);
   start_frame();

@@ -32,6 +32,7 @@
 
 #include "golden/renderers.hpp"
 #include "systemc/core/frame_plan.hpp"
+#include "systemc/core/persp_polygon_pixels.hpp"
 #include "systemc/core/unit_if.hpp"
 
 namespace cube4::sysc {
@@ -64,17 +65,14 @@ class TlmCompositePersp final : public PerspCompositor {
     int64_t ready = 0;  // the step from which it can be read
   };
   void blend(const Sample& in, int64_t position, int64_t step);
-  golden::RayAcc start(size_t pixel) const;
   void start_frame();
   void end_frame();
-  // Slice k's slab image, decoded (the last two slices asked for are kept).
-  const std::vector<golden::Pixel>& slab(uint32_t k);
 
   const FramePlan& plan_;
   bool accumulators_;
   const golden::PolygonFrame* polygons_;
+  PerspPolygonPixels polygon_pixels_;
   int reach_;
-  std::array<std::pair<int64_t, std::vector<golden::Pixel>>, 2> slabs_{{{-1, {}}, {-1, {}}}};
   int origin_x_, origin_y_;
   uint64_t per_frame_, composited_ = 0, frames_done_ = 0;
   // Samples waiting for their blend, by the stream position that blends it

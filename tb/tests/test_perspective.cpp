@@ -19,6 +19,7 @@
 #include "golden/units/dda.hpp"
 #include "golden/units/gradient.hpp"
 #include "systemc/rtl/rtl_factory.hpp"
+#include "tb/image_io.hpp"
 #include "tb/tests/cli_support.hpp"
 #include "tb/tests/test_support.hpp"
 
@@ -334,6 +335,7 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
   // models and rtl are refused).
   const bool rtl = !sysc::rtl_persp_pipes().empty();
   std::string hash;
+  std::vector<float> fixed_image;
   for (const char* model : {"fixed", "float", "reference", "tlm --check", "mixed:interp --check", "mixed:interp,addr",
                             "mixed:interp,shade --check", "mixed:shade", "mixed:gradient --check",
                             "mixed:interp,gradient,shade,addr --check", "rtl --check", "mixed:composite --check"}) {
@@ -347,7 +349,15 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
       continue;
     }
     ASSERT_EQ(r.code, 0) << model << ": " << r.err;
-    EXPECT_TRUE(test::fs::exists(path("o.png"))) << model;
+    ASSERT_TRUE(test::fs::exists(path("o.png"))) << model;
+    // Every fixed-point level's image is fixed's: the same base plane,
+    // warped from the same place (the system model's plane once lay 5
+    // pixels off, its image zoomed, with the base-plane hashes equal).
+    const std::vector<float> image = cube4::tb::read_image(path("o.png")).rgba;
+    if (fixed_image.empty()) fixed_image = image;
+    if (std::string(model) != "float" && std::string(model) != "reference") {
+      EXPECT_TRUE(image == fixed_image) << model << ": the image differs from --model fixed";
+    }
     test::fs::remove(path("o.png"));
     // The report says what the rings' dataflow would need for the frame
     // (docs/perspective.md, "The dataflow"), the same at every level.
@@ -391,7 +401,8 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
 // Polygons and blocks in perspective through the command line: the TLM
 // frame checked against golden (--check, through the host interface and
 // POLY_* windows), the same base plane as --model fixed, and the report's
-// fragment counts; blocks at fixed and tlm alike.
+// fragment counts; clocked, the compositing unit at TLM and at RTL, the
+// same image; blocks at fixed and tlm alike.
 TEST_F(PerspectiveCli, PolygonsAndBlocksRenderAtFixedAndTlmAlike) {
   const std::string scene = write("h.json", test::sphere_with_polygons(R"({"direction": [0.4, -0.3, 1], "projection": "perspective", "fov": 40})"));
   std::string hash;
@@ -416,19 +427,30 @@ TEST_F(PerspectiveCli, PolygonsAndBlocksRenderAtFixedAndTlmAlike) {
   // Clocked, the stream waits for the slab images the default connection
   // (rle) brings, at each pass's first beat: the waits the loosely timed
   // frame counts, and the same base plane.
+  // The compositing ring at RTL draws them too, with its polygon hardware
+  // (p = 4), the same image.
   if (!sysc::rtl_persp_pipes().empty()) {
-    uint64_t waits[2] = {0, 0};
-    for (const std::string model : {"tlm", "mixed:interp --check"}) {
+    ASSERT_EQ(run("render " + scene + " -q --model fixed -o " + path("f.png")).code, 0);
+    const std::vector<float> fixed_image = cube4::tb::read_image(path("f.png")).rgba;
+    uint64_t tlm_waits = 0;
+    for (const std::string model : {"tlm", "mixed:interp --check", "mixed:composite --check", "rtl --check"}) {
       const test::CliResult r = run("render " + scene + " -q --pipes 4 --model " + model + " -o " + path("c.png") +
                                     " --report " + path("rc.json"));
       ASSERT_EQ(r.code, 0) << model << ": " << r.err;
       const auto report = nlohmann::json::parse(std::ifstream(path("rc.json")));
       EXPECT_EQ(report["baseplane_hash_fnv1a64"].get<std::string>(), hash) << model;
+      EXPECT_TRUE(cube4::tb::read_image(path("c.png")).rgba == fixed_image) << model;
       EXPECT_EQ(report["system"]["polygon_connection"], "rle") << model;
-      waits[model == "tlm" ? 0 : 1] = report["system"]["polygon_wait_cycles"].get<uint64_t>();
+      const uint64_t waits = report["system"]["polygon_wait_cycles"].get<uint64_t>();
+      if (model == "tlm") tlm_waits = waits;
+      EXPECT_GT(waits, 0u) << model;
+      EXPECT_EQ(waits, tlm_waits) << model;
     }
-    EXPECT_GT(waits[0], 0u);
-    EXPECT_EQ(waits[1], waits[0]);
+    // A p without the ring's polygon variant is refused by name, no image.
+    const test::CliResult r = run("render " + scene + " -q --pipes 8 --model rtl -o " + path("no8.png"));
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("CUBE4_SYSTEM_POLYGON_PIPES"), std::string::npos) << r.err;
+    EXPECT_FALSE(test::fs::exists(path("no8.png")));
   }
   const std::string plain = write("b.json", sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "fov": 40})",
                                                    R"(, "output": {"width": 64, "height": 64})", "[24,24,24]"));

@@ -64,6 +64,9 @@ void expect_plane(const golden::BasePlane& want, const golden::BasePlane& got) {
   ASSERT_EQ(got.width, want.width);
   ASSERT_EQ(got.height, want.height);
   EXPECT_TRUE(got.rgba == want.rgba) << "the base planes differ";
+  // Where the plane lies, which the warp to the image reads.
+  EXPECT_EQ(got.shift_x, want.shift_x);
+  EXPECT_EQ(got.shift_y, want.shift_y);
 }
 
 // The cycle the interpolation unit's last sample of a stream of `frames`
@@ -152,17 +155,24 @@ TEST(SystemPerspective, ThroughTheHostInterfaceTlm) {
 // the golden polygon frame as render_fixed() does, directly at p = 1, 4, 5
 // and 8 (slab lines laid out for that p) and through the host interface
 // (POLY_WIDTH x POLY_HEIGHT: the perspective base plane with its margins).
-TEST(SystemPerspective, PolygonsInPerspectiveAtTlm) {
-  const std::string polygons = R"(, "polygons": [
+// A box, a needle through the volume and a sphere beside it.
+const char kPolygons[] = R"(, "polygons": [
       {"shape": "box", "size": [18, 14, 10], "transform": {"translate": [10, 8, 6], "rotate": [10, 20, 0]},
        "color": [0.2, 0.5, 1], "opacity": 0.3},
       {"shape": "needle", "radius": 1, "length": 40, "transform": {"translate": [10, 8, 6], "rotate": [0, 80, 10]}},
       {"shape": "sphere", "radius": 3, "segments": 12, "rings": 6, "transform": {"translate": [-6, 8, 6]},
        "color": [1, 0.3, 0.2], "opacity": 0.5}]})";
+
+std::string with_polygons(const char* eye) {
+  std::string json = scene(eye);
+  const std::string polygons = kPolygons;
+  json.insert(json.rfind('}'), polygons.substr(0, polygons.size() - 1));
+  return json;
+}
+
+TEST(SystemPerspective, PolygonsInPerspectiveAtTlm) {
   for (const char* eye : {kEyes[0], kEyes[3]}) {
-    std::string json = scene(eye);
-    json.insert(json.rfind('}'), polygons.substr(0, polygons.size() - 1));
-    test::Setup s = setup(json);
+    test::Setup s = setup(with_polygons(eye));
     ASSERT_TRUE(s.host.regs.perspective);
     ASSERT_FALSE(s.meshes.empty());
     for (int p : {1, 4, 5, 8}) {
@@ -189,6 +199,20 @@ sysc::SystemConfig clocked_config(int p, bool rtl_interp) {
   if (rtl_interp) cfg.levels[static_cast<size_t>(sysc::Unit::Interp)] = sysc::Level::Rtl;
   return cfg;
 }
+
+// A clocked frame with every unit clocked and nothing mismatched: golden's
+// base plane and accumulators.
+void expect_clocked_plane(const golden::BasePlane& want, const sysc::SystemResult& res) {
+  EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
+  EXPECT_FALSE(res.back_loosely_timed);
+  expect_plane(want, res.plane);
+  ASSERT_EQ(res.plane.acc.size(), want.acc.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < want.acc.size(); ++i) differ += !(res.plane.acc[i] == want.acc[i]);
+  EXPECT_EQ(differ, 0u);
+}
+
+bool has(const std::vector<int>& pipes, int p) { return std::find(pipes.begin(), pipes.end(), p) != pipes.end(); }
 
 bool rtl_perspective(int p) {
   if (!CUBE4_TEST_RTL) return false;
@@ -419,15 +443,45 @@ TEST(SystemPerspective, ClockedCompositingKeepsGoldensAccumulatorsAndBlendModes)
       cfg.accumulators = true;
       if (rtl) cfg.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
       const sysc::SystemResult res = sysc::run_frame(s.host.regs, s.volume, cfg);
-      EXPECT_FALSE(res.mismatch);
-      EXPECT_FALSE(res.back_loosely_timed);
-      expect_plane(want, res.plane);
-      ASSERT_EQ(res.plane.acc.size(), want.acc.size());
-      size_t differ = 0;
-      for (size_t i = 0; i < want.acc.size(); ++i) differ += !(res.plane.acc[i] == want.acc[i]);
-      EXPECT_EQ(differ, 0u);
+      expect_clocked_plane(want, res);
     }
   }
+}
+
+// Cube-5's polygons in clocked perspective frames, from every face: the
+// compositing unit as clocked TLM and as the verilated ring with polygon
+// hardware (p = 1, 4 and 5, CUBE4_SYSTEM_POLYGON_PIPES; every unit at RTL
+// at p = 4), golden's image and accumulators, every sample checked, and
+// the same cycles at either level.
+TEST(SystemPerspective, PolygonsInClockedPerspectiveFramesWithTheRingAtRtl) {
+  int rtl_frames = 0;
+  for (const char* eye : kEyes) {
+    test::Setup s = setup(with_polygons(eye));
+    for (int p : {1, 4, 5}) {
+      s.scene.pipelines = p;
+      const golden::PolygonFrame frame = golden::rasterise_polygons(s.scene, s.meshes, s.host);
+      golden::FixedOptions opt;
+      opt.polygons = &frame;
+      opt.accumulators = true;
+      const golden::BasePlane want = golden::render_fixed(s.volume, s.host.regs, opt);
+      uint64_t tlm_cycles = 0;
+      for (const int level : {0, 1, 2}) {  // clocked TLM, the ring at RTL, every unit at RTL
+        if (level > 0 && !(rtl_perspective(p) && has(sysc::rtl_persp_polygon_pipes(), p))) continue;
+        if (level == 2 && p != 4) continue;
+        SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p) + ", level " + std::to_string(level));
+        sysc::SystemConfig cfg = clocked_config(p, false);
+        cfg.accumulators = true;
+        if (level == 1) cfg.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
+        if (level == 2) cfg.levels = kRtl;
+        const sysc::SystemResult res = sysc::run_frame(s.host.regs, s.volume, cfg, {}, &frame);
+        expect_clocked_plane(want, res);
+        if (level == 0) tlm_cycles = res.frame_cycles;
+        EXPECT_EQ(res.frame_cycles, tlm_cycles);
+        rtl_frames += level > 0;
+      }
+    }
+  }
+  if (CUBE4_TEST_RTL) EXPECT_EQ(rtl_frames, 6 * 4);  // every face: p = 1, 4, 5, and every unit at p = 4
 }
 
 // Every unit at RTL (--model rtl): the perspective interpolation, gradient
@@ -729,12 +783,16 @@ TEST(SystemPerspective, FramesOutsideTheRingsPlansAreRefusedNamingWhy) {
   golden::Registers narrow = s.host.regs;
   narrow.dim[0] = 7;
   refused(composite, narrow, "the RTL perspective compositing ring needs at least 6 rows and 11 positions a beam");  // 8 at p = 4
-  // And no polygon hardware yet.
-  try {
-    sysc::check_polygon_levels(composite, true);
-    ADD_FAILURE() << "polygons accepted at the perspective compositing ring";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("no polygon hardware yet"), std::string::npos) << e.what();
+  // Polygons need the ring's polygon variant: p = 8 has none by default.
+  if (CUBE4_TEST_RTL && !has(sysc::rtl_persp_polygon_pipes(), 8)) {
+    sysc::SystemConfig at8 = clocked_config(8, false);
+    at8.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
+    try {
+      sysc::check_polygon_levels(at8, true);
+      ADD_FAILURE() << "polygons accepted at a perspective compositing ring without polygon hardware";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("CUBE4_SYSTEM_POLYGON_PIPES"), std::string::npos) << e.what();
+    }
   }
   // The gradient ring's preconditions, named with what to do instead:
   // five rows (a slice's neighbours would not be within its four stores).
