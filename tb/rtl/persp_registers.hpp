@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <array>
 #include <string>
+#include <vector>
 
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
 #include "golden/registers.hpp"
 #include "golden/scene_io.hpp"
+#include "golden/units/dda_perspective.hpp"
 #include "golden/volume_io.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
@@ -87,6 +89,72 @@ inline std::array<long, 4> rays_leaving(const golden::Registers& r) {
       out[static_cast<size_t>(2 * axis + 1)] += std::max<int64_t>(0, here.hi - std::max(next.hi, here.lo));
     }
   return out;
+}
+
+// The rings' directed cases (issue 13): rays a constant 1, 2 or 3 voxels
+// apart (box extents exactly 1, 2 and 3: SCALE_STEP zero), standing still
+// or drifting half a voxel a slice out through each side face, and rays
+// spreading from 1 to 3 voxels apart from a centred eye, out through all
+// four; each frame has its first and last slice. A 20 x 20 volume (every
+// ring's MaxDim-24 test build takes it) of `nz` slices.
+struct DirectedCase {
+  std::string name;
+  golden::Registers r;
+  int face = -1;  // the side face rays must leave through (rays_leaving()'s index), 4 all, or -1 none
+};
+inline std::vector<DirectedCase> directed_cases(int frac_bits, int nz = 8) {
+  const int64_t one = int64_t{1} << frac_bits, half = one / 2;
+  std::vector<DirectedCase> out;
+  auto base = [&](int64_t spacing, int slices) {
+    golden::Registers r;
+    r.perspective = true;
+    r.p.dda_frac_bits = frac_bits;
+    r.dim = {20, 20, slices};
+    r.supersampling = 1;
+    r.scale_start = spacing;
+    r.scale_step = 0;
+    r.x_start = one / 4;
+    r.y_start = one / 8;
+    return r;
+  };
+  const char* faces[] = {"x-", "x+", "y-", "y+"};
+  for (int e = 1; e <= 3; ++e) {
+    const std::string extent = "extent " + std::to_string(e);
+    out.push_back({extent + ", rays standing", base(e * one, nz), -1});
+    for (int f = 0; f < 4; ++f) {
+      golden::Registers r = base(e * one, nz);
+      (f < 2 ? r.x_step : r.y_step) = f % 2 == 0 ? -half : half;
+      out.push_back({extent + ", rays leaving through " + faces[f], r, f});
+    }
+  }
+  // Spreading from an eye over the volume's centre: m from 1 to 3.
+  const int deep = 3 * nz;
+  golden::Registers r = base(one, deep);
+  r.scale_step = 2 * one / (deep - 1);
+  r.x_step = r.y_step = -10 * r.scale_step;  // c_k = c_0 - 10 (m_k - 1): ray 10 stays put
+  out.push_back({"rays spreading 1 to 3 apart", r, 4});
+  return out;
+}
+
+// What a directed case promises, checked on golden's slices: the box
+// extent of every slice (exactly the spacing for the constant ones), and
+// rays leaving through its face (all four for 4, none for -1). Empty when
+// it holds, else what does not.
+inline std::string directed_case_broken(const DirectedCase& d) {
+  const golden::Registers& r = d.r;
+  const int F = r.p.dda_frac_bits, W = r.p.weight_bits;
+  if (r.scale_step == 0)
+    for (int k = 0; k < r.sample_slices(); ++k)
+      if (golden::box_extent(r.ray_spacing(k), F, W) != (r.scale_start >> F) << W)
+        return d.name + ": slice " + std::to_string(k) + "'s box extent is not the spacing";
+  const std::array<long, 4> leaving = rays_leaving(r);
+  for (int f = 0; f < 4; ++f) {
+    const bool want = d.face == 4 || d.face == f;
+    if ((leaving[static_cast<size_t>(f)] > 0) != want)
+      return d.name + ": " + std::to_string(leaving[static_cast<size_t>(f)]) + " rays leave through side face " +
+             std::to_string(f);
+  }
+  return {};
 }
 
 }  // namespace cube4::rtl

@@ -297,6 +297,32 @@ void test_ring(int p, uint64_t salt, bool has_polygons) {
               name.c_str(), streams, faces[0], faces[1], faces[2], faces[3], polygon_samples);
 }
 
+// The directed cases (tb/rtl/persp_registers.hpp): box extents exactly 1,
+// 2 and 3, rays leaving through each side face, spreading rays; one frame
+// each and two back to back, with polygons at p = 4.
+template <class M>
+void test_directed(int p, bool has_polygons) {
+  rtl::Random rng(9);
+  const auto dut = rtl::make_dut<M>();
+  rtl::reset(*dut);
+  rtl::Checker c("cube4_composite_persp_ring p=" + std::to_string(p) + " (directed)");
+  uint64_t cycle = 0;
+  int cases = 0;
+  for (const rtl::DirectedCase& d : rtl::directed_cases(kF)) {
+    ASSERT_EQ(rtl::directed_case_broken(d), "");
+    ASSERT_LE(g::largest_home_move(g::perspective_reach(d.r)), kReach) << d.name;
+    for (int frames : {1, 2})
+      EXPECT_GT(stream_frames(*dut, p, d.r, frames, has_polygons && frames == 2, rng, c, cycle), 0) << d.name;
+    EXPECT_TRUE(c.ok()) << d.name << ": " << c.report();
+    if (!c.ok()) return;
+    ++cases;
+  }
+  EXPECT_EQ(cases, 16);
+}
+
+TEST(RtlCompositePerspRing, DirectedCasesAtP4) { test_directed<Vcube4_composite_persp_ring>(4, true); }
+TEST(RtlCompositePerspRing, DirectedCasesAtP5) { test_directed<Vcube4_composite_persp_ring_p5>(5, false); }
+
 TEST(RtlCompositePerspRing, EveryRayLeavesOnceWithGoldensAccumulatorWhereThePlanSaysAtP4WithPolygons) {
   test_ring<Vcube4_composite_persp_ring>(4, 91, true);
 }

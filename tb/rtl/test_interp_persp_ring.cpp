@@ -230,6 +230,34 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
               faces[0], faces[1], faces[2], faces[3]);
 }
 
+// The directed cases (tb/rtl/persp_registers.hpp): box extents exactly 1,
+// 2 and 3, rays leaving through each side face, spreading rays; one frame
+// each and two back to back.
+template <class M>
+void test_directed(int p) {
+  rtl::Random rng(7);
+  const auto dut = rtl::make_dut<M>();
+  rtl::reset(*dut);
+  rtl::Checker c("cube4_interp_persp_ring p=" + std::to_string(p) + " (directed)");
+  uint64_t cycle = 0;
+  int cases = 0;
+  for (const rtl::DirectedCase& d : rtl::directed_cases(kF)) {
+    ASSERT_EQ(rtl::directed_case_broken(d), "");
+    Volume vol, tags;
+    vol.resize(d.r.dim[0], d.r.dim[1], d.r.dim[2]);
+    tags.resize(d.r.dim[0], d.r.dim[1], d.r.dim[2]);
+    for (uint32_t& x : vol.v) x = static_cast<uint32_t>(rng.edgy((1 << kV) - 1, 0.1));
+    for (int frames : {1, 2}) EXPECT_GT(stream_frames(*dut, p, d.r, vol, tags, frames, 0, rng, c, cycle), 0) << d.name;
+    EXPECT_TRUE(c.ok()) << d.name << ": " << c.report();
+    if (!c.ok()) return;
+    ++cases;
+  }
+  EXPECT_EQ(cases, 16);
+}
+
+TEST(RtlInterpPerspRing, DirectedCasesAtP4) { test_directed<Vcube4_interp_persp_ring>(4); }
+TEST(RtlInterpPerspRing, DirectedCasesAtP5) { test_directed<Vcube4_interp_persp_ring_p5>(5); }
+
 TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSaysAtP4) {
   test_ring<Vcube4_interp_persp_ring>(4, 91);
 }
