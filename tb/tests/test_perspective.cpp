@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -402,7 +403,7 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
 // frame checked against golden (--check, through the host interface and
 // POLY_* windows), the same base plane as --model fixed, and the report's
 // fragment counts; clocked, the compositing unit at TLM and at RTL, the
-// same image; blocks at fixed and tlm alike.
+// same image; blocks at fixed, tlm, mixed:interp and rtl alike.
 TEST_F(PerspectiveCli, PolygonsAndBlocksRenderAtFixedAndTlmAlike) {
   const std::string scene = write("h.json", test::sphere_with_polygons(R"({"direction": [0.4, -0.3, 1], "projection": "perspective", "fov": 40})"));
   std::string hash;
@@ -454,8 +455,13 @@ TEST_F(PerspectiveCli, PolygonsAndBlocksRenderAtFixedAndTlmAlike) {
   }
   const std::string plain = write("b.json", sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "fov": 40})",
                                                    R"(, "output": {"width": 64, "height": 64})", "[24,24,24]"));
+  // Blocks at every level: each machine's units at RTL too (every ring of
+  // each block's frame), the same base plane and image.
   std::string blocks_hash;
-  for (const char* model : {"fixed", "tlm --check"}) {
+  std::vector<float> blocks_image;
+  std::vector<std::string> block_models{"fixed", "tlm --check"};
+  if (!sysc::rtl_persp_pipes().empty()) block_models.insert(block_models.end(), {"mixed:interp --check", "rtl --check"});
+  for (const std::string& model : block_models) {
     const test::CliResult r = run("render " + plain + " -q --blocks 2x2x2 --model " + model + " -o " + path("b.png") +
                                   " --report " + path("rb.json"));
     ASSERT_EQ(r.code, 0) << model << ": " << r.err;
@@ -464,6 +470,9 @@ TEST_F(PerspectiveCli, PolygonsAndBlocksRenderAtFixedAndTlmAlike) {
     const std::string h = report["baseplane_hash_fnv1a64"].get<std::string>();
     if (blocks_hash.empty()) blocks_hash = h;
     EXPECT_EQ(h, blocks_hash) << model;
+    const std::vector<float> image = cube4::tb::read_image(path("b.png")).rgba;
+    if (blocks_image.empty()) blocks_image = image;
+    EXPECT_TRUE(image == blocks_image) << model;
   }
 }
 
