@@ -22,8 +22,15 @@ namespace cube4::sysc {
 
 class PerspPolygonPixels {
  public:
-  // `polygons` may be null (a frame without polygons); it must outlive this.
-  PerspPolygonPixels(const FramePlan& plan, const golden::PolygonFrame* polygons) : plan_(plan), polygons_(polygons) {}
+  // `polygons` may be null (a frame without polygons); it must outlive this
+  // and fit the registers' base plane, slices and blend.
+  PerspPolygonPixels(const FramePlan& plan, const golden::PolygonFrame* polygons) : plan_(plan), polygons_(polygons) {
+    if (polygons && (polygons->width != plan.r.base_width() || polygons->height != plan.r.base_height() ||
+                     polygons->slabs.size() != static_cast<size_t>(plan.K) ||
+                     plan.r.blend != golden::BlendMode::Composite))
+      throw std::logic_error("perspective compositing: the polygon frame does not fit the registers' base plane, "
+                             "slices and blend");
+  }
 
   const golden::PolygonFrame* frame() const { return polygons_; }
   golden::RayAcc start(size_t pixel) const {

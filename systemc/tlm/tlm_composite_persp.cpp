@@ -21,9 +21,6 @@ TlmCompositePersp::TlmCompositePersp(const FramePlan& plan, bool accumulators, c
       origin_y_(plan.r.base_origin_y()),
       per_frame_(golden::perspective_samples(plan.r)),
       plane_(golden::empty_base_plane(plan.r)) {
-  if (polygons && (polygons->width != plane_.width || polygons->height != plane_.height ||
-                   polygons->slabs.size() != static_cast<size_t>(plan.K) || plan.r.blend != golden::BlendMode::Composite))
-    throw std::logic_error("TlmCompositePersp: the polygon frame does not fit the registers' base plane and blend");
   for (std::vector<Stored>& store : stores_) store.assign(static_cast<size_t>(plan.nx) * static_cast<size_t>(plan.ny), {});
   pending_.resize(static_cast<size_t>(2 * plan.p + reach));
   start_frame();
