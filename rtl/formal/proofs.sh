@@ -24,6 +24,12 @@ proof interp_v6_z       quick ind 1 interp_fv "$INTERP_FILES" "VoxelBits=6 Weigh
 proof interp_x          slow  ind 1 interp_fv "$INTERP_FILES" "Stage=1 +noincr" $INTERP_PROBES
 proof interp_y          slow  ind 1 interp_fv "$INTERP_FILES" "Stage=2 +noincr" $INTERP_PROBES
 proof interp_z          slow  ind 1 interp_fv "$INTERP_FILES" "Stage=3 +noincr" $INTERP_PROBES
+# cube4_dda_walk: the weight generator's DDAs hold slices k - 1, k, k + 1
+# exactly, start + k * step, for any run of commands (8-bit quick, the
+# 48-bit default slow).
+proof dda_walk_p8          quick ind 1 dda_walk_fv "rtl/cube4_dda_walk.sv $F/dda_walk_fv.sv" "PosBits=8 +noincr"
+proof dda_walk             slow  ind 1 dda_walk_fv "rtl/cube4_dda_walk.sv $F/dda_walk_fv.sv" "PosBits=48 +noincr"
+proof bug_dda_walk_step    bug   bug 4 dda_walk_fv "$F/mutants/dda_walk_step.sed $F/dda_walk_fv.sv" "PosBits=8 +noincr"
 # cube4_delay_ram: pointer bound with free inputs; FIFO with constant depth.
 DR_FILES="rtl/cube4_delay_ram.sv $F/delay_ram_fv.sv"
 proof delay_ram_ptr_d5      quick ind 1 delay_ram_fv "$DR_FILES" "MaxDepth=5 Fifo=0" probe_ptr=u_dut.ptr_q $(mem_probes 2 5)
