@@ -157,4 +157,20 @@ inline std::string directed_case_broken(const DirectedCase& d) {
   return {};
 }
 
+// Streams every directed case through a ring's testbench, one frame and
+// two back to back: `stream(case, frames)` returns the results it checked
+// with `checker`. Stops at the first case whose premise fails, that
+// streams nothing, or that the checker faults. Returns what went wrong
+// (empty: every case ran and matched).
+template <class Checker, class Stream>
+std::string stream_directed_cases(int frac_bits, const Checker& checker, Stream&& stream) {
+  for (const DirectedCase& d : directed_cases(frac_bits)) {
+    if (std::string broken = directed_case_broken(d); !broken.empty()) return broken;
+    for (int frames : {1, 2})
+      if (stream(d, frames) <= 0) return d.name + ": nothing streamed in " + std::to_string(frames) + " frame(s)";
+    if (!checker.ok()) return d.name + ": " + checker.report();
+  }
+  return {};
+}
+
 }  // namespace cube4::rtl
