@@ -452,7 +452,7 @@ TEST(SystemPerspective, ClockedCompositingKeepsGoldensAccumulatorsAndBlendModes)
 // compositing unit as clocked TLM and as the verilated ring with polygon
 // hardware (p = 1, 4 and 5, CUBE4_SYSTEM_POLYGON_PIPES; every unit at RTL
 // at p = 4), golden's image and accumulators, every sample checked, and
-// the same cycles at either level.
+// the same cycles at either level; and two frames back to back at p = 4.
 TEST(SystemPerspective, PolygonsInClockedPerspectiveFramesWithTheRingAtRtl) {
   int rtl_frames = 0;
   for (const char* eye : kEyes) {
@@ -478,6 +478,22 @@ TEST(SystemPerspective, PolygonsInClockedPerspectiveFramesWithTheRingAtRtl) {
         if (level == 0) tlm_cycles = res.frame_cycles;
         EXPECT_EQ(res.frame_cycles, tlm_cycles);
         rtl_frames += level > 0;
+      }
+      // Two frames back to back (the polygon images again for the second):
+      // the ring at RTL as the clocked TLM unit, the same interval.
+      if (p == 4 && has(sysc::rtl_persp_polygon_pipes(), 4)) {
+        uint64_t interval = 0;
+        for (const bool rtl : {false, true}) {
+          sysc::SystemConfig cfg = clocked_config(4, false);
+          cfg.accumulators = true;
+          cfg.frames = 2;
+          if (rtl) cfg.levels = kRtl;
+          const sysc::SystemResult res = sysc::run_frame(s.host.regs, s.volume, cfg, {}, &frame);
+          expect_clocked_plane(want, res);
+          if (!rtl) interval = res.measured_interval;
+          EXPECT_EQ(res.measured_interval, interval) << "eye " << eye;
+          EXPECT_GT(res.measured_interval, 0u);
+        }
       }
     }
   }
