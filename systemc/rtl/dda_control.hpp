@@ -35,7 +35,23 @@ golden::SliceControl read_dda_control(const M& m, int int_bits) {
   return c;
 }
 
-// pos_bits: the unit's PosBits, the width of its perspective outputs.
+// The divided constants as cube4_persp_slice's outputs show them (the
+// weight generator's perspective part, and the unit's own test), into `s`.
+// pos_bits: the unit's PosBits, the width of its outputs.
+template <class M>
+void read_divided_constants(const M& m, int pos_bits, golden::PerspectiveSlice& s) {
+  auto get = [&](uint64_t v) { return static_cast<int64_t>(v << (64 - pos_bits)) >> (64 - pos_bits); };
+  s.rays_x = {get(m.rays_x_lo_o), get(m.rays_x_hi_o)};
+  s.rays_y = {get(m.rays_y_lo_o), get(m.rays_y_hi_o)};
+  s.box_reciprocal = static_cast<uint64_t>(get(m.box_recip_o));
+  s.lateral_reciprocal = get(m.lateral_recip_o);
+  s.behind_x = {get(m.behind_start_x_o), get(m.behind_step_o)};
+  s.behind_y = {get(m.behind_start_y_o), get(m.behind_step_o)};
+  s.ahead_x = {get(m.ahead_start_x_o), get(m.ahead_step_o)};
+  s.ahead_y = {get(m.ahead_start_y_o), get(m.ahead_step_o)};
+}
+
+// A perspective slice's constants as cube4_dda's outputs show them.
 template <class M>
 golden::PerspectiveSlice read_perspective_slice(const M& m, int pos_bits) {
   auto get = [&](uint64_t v) { return static_cast<int64_t>(v << (64 - pos_bits)) >> (64 - pos_bits); };
@@ -46,14 +62,7 @@ golden::PerspectiveSlice read_perspective_slice(const M& m, int pos_bits) {
   s.spacing = get(m.spacing_o);
   s.ray0_x = get(m.ray0_x_o);
   s.ray0_y = get(m.ray0_y_o);
-  s.rays_x = {get(m.rays_x_lo_o), get(m.rays_x_hi_o)};
-  s.rays_y = {get(m.rays_y_lo_o), get(m.rays_y_hi_o)};
-  s.box_reciprocal = static_cast<uint64_t>(get(m.box_recip_o));
-  s.lateral_reciprocal = get(m.lateral_recip_o);
-  s.behind_x = {get(m.behind_start_x_o), get(m.behind_step_o)};
-  s.behind_y = {get(m.behind_start_y_o), get(m.behind_step_o)};
-  s.ahead_x = {get(m.ahead_start_x_o), get(m.ahead_step_o)};
-  s.ahead_y = {get(m.ahead_start_y_o), get(m.ahead_step_o)};
+  read_divided_constants(m, pos_bits, s);
   return s;
 }
 

@@ -12,6 +12,7 @@
 
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
+#include "golden/perspective.hpp"
 #include "golden/registers.hpp"
 #include "golden/scene_io.hpp"
 #include "golden/units/dda_perspective.hpp"
@@ -89,6 +90,25 @@ inline std::array<long, 4> rays_leaving(const golden::Registers& r) {
       out[static_cast<size_t>(2 * axis + 1)] += std::max<int64_t>(0, here.hi - std::max(next.hi, here.lo));
     }
   return out;
+}
+
+// The constants cube4_persp_slice divides out of a perspective slice, as
+// checker fields: what test_persp_slice.cpp and test_dda.cpp compare.
+inline Fields divided_fields(const golden::PerspectiveSlice& s) {
+  return {{"rays_x_lo", s.rays_x.lo},
+          {"rays_x_hi", s.rays_x.hi},
+          {"rays_y_lo", s.rays_y.lo},
+          {"rays_y_hi", s.rays_y.hi},
+          {"box_recip", static_cast<int64_t>(s.box_reciprocal)},
+          {"lateral_recip", s.lateral_reciprocal},
+          {"behind_start_x", s.behind_x.start},
+          {"behind_start_y", s.behind_y.start},
+          {"behind_step_x", s.behind_x.step},
+          {"behind_step_y", s.behind_y.step},
+          {"ahead_start_x", s.ahead_x.start},
+          {"ahead_start_y", s.ahead_y.start},
+          {"ahead_step_x", s.ahead_x.step},
+          {"ahead_step_y", s.ahead_y.step}};
 }
 
 // The rings' directed cases (issue 13): rays a constant 1, 2 or 3 voxels

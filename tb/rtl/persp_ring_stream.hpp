@@ -128,6 +128,16 @@ class DueLanes {
     const auto it = lanes_->find(k);
     return it == lanes_->end() ? nullptr : &it->second;
   }
+  // After the stream: every ray due must have left (Expect::seen), else
+  // the first that did not is the checker's failure.
+  template <class Checker>
+  void check_every_ray_left(Checker& c, uint64_t cycle) const {
+    for (const auto& [at, lanes] : want_)
+      for (const auto& [lane, e] : lanes)
+        if (!e.seen && c.ok())
+          c.check(cycle, {{"pass", e.pass}, {"u", e.u}, {"v", e.v}, {"due at step", at}, {"lane", lane}},
+                  {{"left", 1}}, {{"left", 0}});
+  }
 
  private:
   std::map<int64_t, std::map<int, Expect>>& want_;

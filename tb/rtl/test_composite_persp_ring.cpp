@@ -238,11 +238,7 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, bool polygons
       clock, [&] { return c.ok(); });
   m.valid_i = 0;
   for (int i = 0; i < 12; ++i) clock();
-  for (const auto& [at, lanes] : want)
-    for (const auto& [lane, e] : lanes)
-      if (!e.seen && c.ok())
-        c.check(cycle, {{"pass", e.pass}, {"u", e.u}, {"v", e.v}, {"due at step", at}, {"lane", lane}},
-                {{"left", 1}}, {{"left", 0}});
+  due.check_every_ray_left(c, cycle);
   return blended;
 }
 

@@ -18,6 +18,7 @@
 
 #include "Vcube4_persp_slice.h"
 #include "golden/perspective.hpp"
+#include "systemc/rtl/dda_control.hpp"
 #include "tb/rtl/persp_registers.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
@@ -36,8 +37,6 @@ constexpr int kSliceCycles = 1 + 12 * (kDivBits + 2);
 
 // A PosBits port's value: Verilator reads its inputs without masking.
 uint64_t port(int64_t v) { return static_cast<uint64_t>(v) & ((uint64_t{1} << kPosBits) - 1); }
-
-int64_t sext(uint64_t v, int bits) { return static_cast<int64_t>(v << (64 - bits)) >> (64 - bits); }
 
 class Bench {
  public:
@@ -93,37 +92,12 @@ class Bench {
                     {"scale_step", r.scale_step}, {"x_start", r.x_start}, {"x_step", r.x_step},
                     {"y_start", r.y_start}, {"y_step", r.y_step}, {"nx", r.dim[0]}, {"ny", r.dim[1]}};
     };
-    const Fields expected{{"cycles", kSliceCycles},
-                          {"rays_x_lo", s.rays_x.lo},
-                          {"rays_x_hi", s.rays_x.hi},
-                          {"rays_y_lo", s.rays_y.lo},
-                          {"rays_y_hi", s.rays_y.hi},
-                          {"box_recip", static_cast<int64_t>(s.box_reciprocal)},
-                          {"lateral_recip", s.lateral_reciprocal},
-                          {"behind_start_x", s.behind_x.start},
-                          {"behind_start_y", s.behind_y.start},
-                          {"behind_step_x", s.behind_x.step},
-                          {"behind_step_y", s.behind_y.step},
-                          {"ahead_start_x", s.ahead_x.start},
-                          {"ahead_start_y", s.ahead_y.start},
-                          {"ahead_step_x", s.ahead_x.step},
-                          {"ahead_step_y", s.ahead_y.step}};
-    auto get = [&](uint64_t v) { return sext(v, kPosBits); };
-    const Fields got{{"cycles", m_.done_o ? cycles : -1},
-                     {"rays_x_lo", get(m_.rays_x_lo_o)},
-                     {"rays_x_hi", get(m_.rays_x_hi_o)},
-                     {"rays_y_lo", get(m_.rays_y_lo_o)},
-                     {"rays_y_hi", get(m_.rays_y_hi_o)},
-                     {"box_recip", get(m_.box_recip_o)},
-                     {"lateral_recip", get(m_.lateral_recip_o)},
-                     {"behind_start_x", get(m_.behind_start_x_o)},
-                     {"behind_start_y", get(m_.behind_start_y_o)},
-                     {"behind_step_x", get(m_.behind_step_o)},
-                     {"behind_step_y", get(m_.behind_step_o)},
-                     {"ahead_start_x", get(m_.ahead_start_x_o)},
-                     {"ahead_start_y", get(m_.ahead_start_y_o)},
-                     {"ahead_step_x", get(m_.ahead_step_o)},
-                     {"ahead_step_y", get(m_.ahead_step_o)}};
+    g::PerspectiveSlice out;
+    rtl::read_divided_constants(m_, kPosBits, out);
+    Fields expected{{"cycles", kSliceCycles}}, got{{"cycles", m_.done_o ? cycles : -1}};
+    const Fields want_divided = rtl::divided_fields(s), got_divided = rtl::divided_fields(out);
+    expected.insert(expected.end(), want_divided.begin(), want_divided.end());
+    got.insert(got.end(), got_divided.begin(), got_divided.end());
     c.check(cycle_, in(), expected, got);
     rtl::rise(m_);  // the done cycle
     ++cycle_;
