@@ -162,4 +162,15 @@ Gradient perspective_gradient(const Registers& r, const PerspectiveSlice& s, int
                               s.lateral_reciprocal, r.p);
 }
 
+// Ray (u, v)'s gradient with VolumePro's z: x and y as
+// perspective_gradient()'s, z its filtered voxel z difference
+// (perspective_z_difference()). The renderer, the gradient unit's model
+// and the system's checker take it from here.
+template <class Current>
+Gradient perspective_gradient_voxel_z(const Registers& r, const PerspectiveSlice& s, int64_t u, int64_t v,
+                                      Current&& current, int64_t z_difference) {
+  return gradient_perspective_z(current(u - 1, v), current(u + 1, v), current(u, v - 1), current(u, v + 1),
+                                z_difference, s.lateral_reciprocal, r.p);
+}
+
 }  // namespace cube4::golden

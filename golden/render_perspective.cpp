@@ -211,11 +211,8 @@ class Traversal {
 
   Gradient gradient(int64_t u, int64_t v) const {
     const PerspectiveSlice& s = current_.slice;
-    if (voxel_z_)
-      return gradient_perspective_z(current_.at(u - 1, v), current_.at(u + 1, v), current_.at(u, v - 1),
-                                    current_.at(u, v + 1), current_.z[current_.index(u, v)], s.lateral_reciprocal,
-                                    r_.p);
     auto at = [](const RayPlane& plane) { return [&plane](int64_t a, int64_t b) { return plane.at(a, b); }; };
+    if (voxel_z_) return perspective_gradient_voxel_z(r_, s, u, v, at(current_), current_.z[current_.index(u, v)]);
     return perspective_gradient(r_, s, u, v, at(current_), at(behind_), at(ahead_));
   }
 

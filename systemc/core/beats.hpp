@@ -54,7 +54,8 @@ struct SampleBeat {
 // beat, lane k at stream position step * p + k, or -1 on a clock that
 // carries no step: the position the units behind form their own work at
 // (golden/perspective_dataflow.hpp), as the ring's control would travel
-// with it.
+// with it. zdiff: with VolumePro's z gradient each sample's filtered voxel
+// z difference (golden perspective_z_difference()), 0 otherwise.
 struct RaySampleBeat {
   uint32_t valid = 0;
   int64_t step = -1;
@@ -67,6 +68,7 @@ struct RaySampleBeat {
   std::array<int32_t, kMaxLanes> u{}, v{};
   std::array<uint32_t, kMaxLanes> tag{};
   std::array<uint8_t, kMaxLanes> vtag{};
+  std::array<int32_t, kMaxLanes> zdiff{};
 };
 
 // Perspective gradient -> shading: each ray's sample with its gradient,

@@ -12,13 +12,14 @@
 //             a frame another follows (latency_followed) waits with VolumePro's
 //             z gradient for the next frame's priming pass too
 // A perspective frame (docs/perspective.md, "The dataflow") streams the
-// same passes (no priming pass: its voxel z differences come with the
-// slices it reads) and ends with three flush beams, not one, or six with
-// the gradient ring (stream_flush_beams()). Its units are clocked by ray,
+// same passes (the priming pass too, with VolumePro's z gradient) and ends
+// with three flush beams, not one, or six with the gradient ring
+// (stream_flush_beams()). Its units are clocked by ray,
 // so its latency is that of the frame's last-formed ray: the stream
 // position that forms its gradient (gradient_forming_position(): its home
 // cell + (5, 5) in the next pass), or without gradients its sample
-// (forming_position()), a beat a cycle from cycle 1; then the links, the
+// (forming_position()), counted from the frame's first pass (the priming
+// pass's positions come before), a beat a cycle from cycle 1; then the links, the
 // interpolation ring's 4 cycles, the gradient ring's 3 (no zero beam), the
 // shading unit, and the compositor's 7 from the step that blends it,
 // kPerspectiveReach positions later (systemc/tlm/tlm_composite_persp.hpp).
@@ -38,13 +39,15 @@ int64_t last_ray_position(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1], F = r.p.dda_frac_bits;
   const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
   int64_t last = -1;
+  // The priming pass streams before slice 0's.
+  const int64_t primed = zdiff_stream(r) ? row * ny : 0;
   for (int k = 0; k < r.sample_slices(); ++k) {
     const golden::PerspectiveSlice s = golden::perspective_slice(r, k);
     if (s.rays_x.empty() || s.rays_y.empty()) continue;
     const int64_t hx = golden::home_cell(golden::ray_position(s.ray0_x, s.spacing, s.rays_x.hi - 1), F);
     const int64_t hy = golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, s.rays_y.hi - 1), F);
-    last = std::max(last, r.gradient ? golden::gradient_forming_position(k, hx, hy, row, ny)
-                                     : golden::forming_position(k, hx, hy, row, ny));
+    last = std::max(last, primed + (r.gradient ? golden::gradient_forming_position(k, hx, hy, row, ny)
+                                               : golden::forming_position(k, hx, hy, row, ny)));
   }
   return last;
 }
@@ -52,7 +55,7 @@ int64_t last_ray_position(const golden::Registers& r, int p) {
 CycleCount frame_cycles(const golden::Registers& r, int p) {
   const int nx = r.dim[0], ny = r.dim[1];
   const uint64_t B = static_cast<uint64_t>((nx + p - 1) / p);
-  const bool zdiff = !r.perspective && r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences;
+  const bool zdiff = zdiff_stream(r);
   const uint64_t passes = static_cast<uint64_t>(r.sample_slices()) + (zdiff ? 1 : 0);
   CycleCount c;
   c.stream = passes * static_cast<uint64_t>(ny) * B;
@@ -79,7 +82,11 @@ CycleCount frame_cycles(const golden::Registers& r, int p) {
   static_assert(TlmCompositePersp::kLatency == kComposite);
   if (const int64_t last = r.perspective ? last_ray_position(r, p) : -1; last >= 0)
     c.latency = static_cast<uint64_t>((last + kPerspectiveReach) / p) + 1 + drain;
-  c.latency_followed = c.latency + (zdiff ? static_cast<uint64_t>(ny) * B : 0);
+  // A parallel frame's last gradients wait for the next frame's first pass,
+  // which comes after its priming pass; a perspective frame's last ray is
+  // formed in the pass after its last, the next frame's priming pass or the
+  // zero pass alike.
+  c.latency_followed = c.latency + (zdiff && !r.perspective ? static_cast<uint64_t>(ny) * B : 0);
   return c;
 }
 

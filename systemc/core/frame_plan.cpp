@@ -13,7 +13,7 @@ FramePlan::FramePlan(const golden::Registers& regs, int pipes, int user_tag_bits
     : r(regs), p(pipes), nx(regs.dim[0]), ny(regs.dim[1]), nz(regs.dim[2]),
       B(pipes > 0 ? (regs.dim[0] + pipes - 1) / pipes : 0),  // p < 1 is refused below
       K(regs.sample_slices()), perspective(regs.perspective), passes(K + (regs.gradient ? 1 : 0)),
-      zdiff(!perspective && regs.gradient && regs.z_gradient == golden::ZGradient::VoxelDifferences),
+      zdiff(zdiff_stream(regs)),
       user_tag_bits(user_tag_bits_),
       tag_base(tag_base_) {
   if (p < 1) throw std::invalid_argument("pipelines: " + std::to_string(p) + " (must be at least 1)");
@@ -49,7 +49,7 @@ int FramePlan::pass_voxel_slice(int pass) const {
   if (prime_pass(pass)) return 0;
   if (perspective) {
     const golden::PerspectiveSlice& s = persp[static_cast<size_t>(pass)];
-    return std::min(nz, s.z_voxel + (s.wz != 0 ? 1 : 0));
+    return std::min(nz, s.z_voxel + (s.wz != 0 ? 1 : 0) + (zdiff ? 1 : 0));
   }
   const golden::SliceControl& c = slices[static_cast<size_t>(pass)];
   return std::min(nz, c.z_voxel + (c.wz != 0 ? 1 : 0) + (zdiff ? 1 : 0));

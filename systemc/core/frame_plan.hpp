@@ -46,6 +46,13 @@ struct PassStep {
 // past the pass after it (golden gradient_cell()).
 constexpr int stream_flush_beams(bool perspective, bool gradient) { return !perspective ? 1 : gradient ? 6 : 3; }
 
+// VolumePro's z gradient (gradient on, z_gradient voxel_differences): the
+// stream reads one voxel slice ahead after a priming pass, in either
+// projection (docs/rtl-interp-zdiff.md; FramePlan::zdiff).
+inline bool zdiff_stream(const golden::Registers& r) {
+  return r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences;
+}
+
 struct FramePlan {
   // user_tag_bits and tag_base shape the tag's user field (the system's:
   // the pass number in kUserTagBits); a testbench that streams frames back

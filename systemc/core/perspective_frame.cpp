@@ -35,37 +35,44 @@ class RaySamples final : public golden::PerspectiveSamples {
       Slice& out = slices_[static_cast<size_t>(k)];
       out.value.assign(rays.count(k), 0);
       out.vtag.assign(rays.count(k), 0);
+      if (plan.zdiff) out.zdiff.assign(rays.count(k), 0);
       out.count.assign(rays.count(k), 0);
     }
   }
 
   uint32_t sample(int k, int64_t u, int64_t v) const override { return at(k, u, v, &Slice::value); }
   uint32_t vtag(int k, int64_t u, int64_t v) const override { return at(k, u, v, &Slice::vtag); }
+  // With VolumePro's z gradient, the sample's filtered voxel z difference.
+  int32_t z_difference(int k, int64_t u, int64_t v) const {
+    return slices_[static_cast<size_t>(k)].zdiff[rays_.index(k, u, v)];
+  }
 
-  // One sample that left the unit on some lane.
-  void take(uint32_t slice, int64_t u, int64_t v, uint32_t value, uint32_t vtag) {
+  // One sample that left the unit on some lane (zdiff: 0 without plan.zdiff).
+  void take(uint32_t slice, int64_t u, int64_t v, uint32_t value, uint32_t vtag, int32_t zdiff) {
     ++taken_;
     const auto k = static_cast<int>(slice);
+    const Got got{value, vtag, zdiff};
     if (!rays_.samples(k, u, v)) {
-      fail(k, u, v, "no sample (the ray does not sample the slice)", describe(value, vtag));
+      fail(k, u, v, "no sample (the ray does not sample the slice)", describe(got));
       return;
     }
     Slice& s = slices_[slice];
     const size_t i = rays_.index(k, u, v);
     if (++s.count[i] > frames_) {
-      fail(k, u, v, "the ray's sample " + std::to_string(frames_) + " time(s) a stream",
-           "one more: " + describe(value, vtag));
+      fail(k, u, v, "the ray's sample " + std::to_string(frames_) + " time(s) a stream", "one more: " + describe(got));
       return;
     }
-    if (s.count[i] > 1 && (s.value[i] != value || s.vtag[i] != vtag)) {
-      fail(k, u, v, describe(s.value[i], s.vtag[i]) + " (the frame before's)", describe(value, vtag));
+    const Got before{s.value[i], s.vtag[i], plan_.zdiff ? s.zdiff[i] : 0};
+    if (s.count[i] > 1 && !(before == got)) {
+      fail(k, u, v, describe(before) + " (the frame before's)", describe(got));
       return;
     }
     s.value[i] = static_cast<uint16_t>(value);
     s.vtag[i] = static_cast<uint8_t>(vtag);
+    if (plan_.zdiff) s.zdiff[i] = zdiff;
     if (check_) {
-      const uint32_t want = expected(k, u, v), want_tag = expected_tag(k, u, v);
-      if (want != value || want_tag != vtag) fail(k, u, v, describe(want, want_tag), describe(value, vtag));
+      const Got want{expected(k, u, v), expected_tag(k, u, v), expected_z_difference(k, u, v)};
+      if (!(want == got)) fail(k, u, v, describe(want), describe(got));
     }
   }
 
@@ -89,7 +96,14 @@ class RaySamples final : public golden::PerspectiveSamples {
   struct Slice {
     std::vector<uint16_t> value;
     std::vector<uint8_t> vtag;
+    std::vector<int32_t> zdiff;  // plan.zdiff only
     std::vector<int> count;
+  };
+  // What a lane gave for a ray.
+  struct Got {
+    uint32_t value, vtag;
+    int32_t zdiff;
+    bool operator==(const Got& o) const { return value == o.value && vtag == o.vtag && zdiff == o.zdiff; }
   };
   template <class T>
   uint32_t at(int k, int64_t u, int64_t v, std::vector<T> Slice::*field) const {
@@ -106,8 +120,17 @@ class RaySamples final : public golden::PerspectiveSamples {
     const golden::TagVoxel t = golden::perspective_tag_voxel(plan_.r, s, u, v);
     return pv_.tag_at(t.x, t.y, s.z_voxel + t.dz);
   }
-  std::string describe(uint32_t value, uint32_t vtag) const {
-    return std::to_string(value) + (plan_.r.p.tag_bits > 0 ? " (voxel tag " + std::to_string(vtag) + ")" : "");
+  int32_t expected_z_difference(int k, int64_t u, int64_t v) const {
+    if (!plan_.zdiff) return 0;
+    const golden::PerspectiveSlice& s = rays_.slice(k);
+    return golden::perspective_z_difference(plan_.r, s, u, v, [&](int x, int y, int dz) {
+      const int z = s.z_voxel + dz;
+      return golden::voxel_z_difference(pv_.at(x, y, z + 1), pv_.at(x, y, z - 1));
+    });
+  }
+  std::string describe(const Got& g) const {
+    return std::to_string(g.value) + (plan_.r.p.tag_bits > 0 ? " (voxel tag " + std::to_string(g.vtag) + ")" : "") +
+           (plan_.zdiff ? " (z difference " + std::to_string(g.zdiff) + ")" : "");
   }
   void fail(int k, int64_t u, int64_t v, const std::string& expected, const std::string& got) {
     if (!first_) first_ = Mismatch{Unit::Interp, k, static_cast<int>(u), static_cast<int>(v), expected, got};
@@ -136,7 +159,8 @@ class PerspectiveStream {
                     RaySamples& samples, RayGradients& gradients, PerspectiveFrameResult& res)
       : in_(in), former_(former), units_(units), gradient_(units.gradient), samples_(samples),
         gradients_(gradients), res_(res),
-        total_(static_cast<uint64_t>(in.frames) * in.plan.passes * in.plan.pass_beats() +
+        total_(static_cast<uint64_t>(in.frames) * static_cast<uint64_t>(in.plan.passes - in.plan.first_pass()) *
+                   in.plan.pass_beats() +
                static_cast<uint64_t>(in.plan.flush_beams()) * in.plan.B),
         drain_(1 + 4 + 1 + TlmGradientPersp::kLatency +
                (units.shade ? 1 + static_cast<uint64_t>(shade_latency(in.plan.r.p)) + 1 + TlmCompositePersp::kLatency
@@ -160,7 +184,7 @@ class PerspectiveStream {
     for (int k = 0; out.valid && k < in_.plan.p; ++k) {
       if (!(out.valid >> k & 1)) continue;
       const auto i = static_cast<size_t>(k);
-      samples_.take(out.tag[i], out.u[i], out.v[i], out.sample[i], out.vtag[i]);
+      samples_.take(out.tag[i], out.u[i], out.v[i], out.sample[i], out.vtag[i], out.zdiff[i]);
       res_.last_sample_cycle = cycle;
     }
   }
@@ -358,7 +382,8 @@ PerspectiveFrameResult run_perspective_frame(const PerspectiveFrameInput& in, St
   PerspectiveStream stream(in, former, units, samples, gradients, res);
   res.cycles = in.kernel == Kernel::SystemC ? run_systemc(stream) : run_plain(stream);
   samples.check_complete();
-  if (units.gradient) gradients.finish(samples, in.check);
+  if (units.gradient)
+    gradients.finish(samples, in.check, [&samples](int k, int64_t u, int64_t v) { return samples.z_difference(k, u, v); });
   res.polygon_stall_cycles = stream.first_frame_stalls();
   res.beats = former.beats();
   res.samples = samples.taken();

@@ -48,7 +48,7 @@ void RayGradients::take(uint32_t slice, int64_t u, int64_t v, const golden::Grad
   s.gz[i] = static_cast<int16_t>(g.z);
 }
 
-void RayGradients::finish(const golden::PerspectiveSamples& samples, bool check) {
+void RayGradients::finish(const golden::PerspectiveSamples& samples, bool check, const ZDifferences& z_difference) {
   auto from = [&](int slice) {
     return [&samples, this, slice](int64_t u, int64_t v) -> uint32_t {
       return rays_.samples(slice, u, v) ? samples.sample(slice, u, v) : 0;
@@ -62,8 +62,10 @@ void RayGradients::finish(const golden::PerspectiveSamples& samples, bool check)
         fail(k, u, v, "the ray's gradient " + std::to_string(frames_) + " time(s)",
              std::to_string(got.count[i]) + " time(s)");
       } else if (check) {
+        const golden::PerspectiveSlice& s = rays_.slice(k);
         const golden::Gradient want =
-            golden::perspective_gradient(plan_.r, rays_.slice(k), u, v, from(k), from(k - 1), from(k + 1));
+            plan_.zdiff ? golden::perspective_gradient_voxel_z(plan_.r, s, u, v, from(k), z_difference(k, u, v))
+                        : golden::perspective_gradient(plan_.r, s, u, v, from(k), from(k - 1), from(k + 1));
         if (!(want == gradient(k, u, v))) fail(k, u, v, describe(want), describe(gradient(k, u, v)));
       }
     }

@@ -8,6 +8,7 @@
 // (FrameRays), whatever weight generator the units ran with.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,8 +30,11 @@ class RayGradients final : public golden::PerspectiveGradients {
   // One gradient that left the unit on some lane.
   void take(uint32_t k, int64_t u, int64_t v, const golden::Gradient& g);
   // After the stream: the first ray without its `frames` gradients, then
-  // (with check) the first whose gradient is not golden's from `samples`.
-  void finish(const golden::PerspectiveSamples& samples, bool check);
+  // (with check) the first whose gradient is not golden's from `samples`
+  // (and with VolumePro's z gradient each ray's `z_difference`, which came
+  // with its sample).
+  using ZDifferences = std::function<int32_t(int k, int64_t u, int64_t v)>;
+  void finish(const golden::PerspectiveSamples& samples, bool check, const ZDifferences& z_difference);
 
   uint64_t taken() const { return taken_; }
   const std::optional<Mismatch>& first() const { return first_; }

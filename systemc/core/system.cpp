@@ -123,10 +123,12 @@ void check_polygon_levels(const SystemConfig& cfg, bool perspective) {
 // plans cannot follow is refused here, before any voxel is read.
 void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
-  if (r.gradient && r.z_gradient == golden::ZGradient::VoxelDifferences)
+  if (zdiff_stream(r) && (cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl ||
+                          cfg.levels[static_cast<size_t>(Unit::Gradient)] == Level::Rtl))
     throw std::invalid_argument(
         "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
-        "interpolation unit's clocked models have no voxel z differences yet; run --model tlm (docs/perspective.md)");
+        "interpolation and gradient rings have no voxel z differences at RTL yet; run those two units at TLM "
+        "(--model tlm, or mixed: naming neither interp nor gradient; docs/perspective.md)");
   // The compositing ring's plan (docs/perspective.md): every ray moves at
   // most its reach from slice to slice, and its last blend, that many
   // positions after its last gradient, falls within the stream.
@@ -138,7 +140,8 @@ void check_perspective_levels(const golden::Registers& r, const SystemConfig& cf
         " at the clocked levels; raise \"supersampling\" (each step halves the moves), narrow \"fov\", or run "
         "--model tlm (docs/perspective.md)");
   const int64_t row = static_cast<int64_t>((r.dim[0] + cfg.p - 1) / cfg.p) * cfg.p;
-  const int64_t stream_end = (static_cast<int64_t>(r.sample_slices() + (r.gradient ? 1 : 0)) * r.dim[1] +
+  const int64_t passes = r.sample_slices() + (r.gradient ? 1 : 0) + (zdiff_stream(r) ? 1 : 0);  // the priming pass
+  const int64_t stream_end = (passes * r.dim[1] +
                               stream_flush_beams(true, r.gradient)) * row;
   if (const int64_t last = last_ray_position(r, cfg.p); last >= 0 && last + kPerspectiveReach >= stream_end)
     throw std::invalid_argument(

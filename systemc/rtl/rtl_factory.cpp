@@ -184,9 +184,20 @@ void require_rtl_persp_polygons(int p) {
                   "run the compositing unit at TLM (--model mixed: without composite)");
 }
 
+namespace {
+// The perspective rings at RTL have no voxel z differences yet
+// (check_perspective_levels() refuses such frames before any voxel is read).
+void require_no_persp_zdiff(const FramePlan& plan, const char* ring) {
+  if (plan.zdiff)
+    throw std::invalid_argument(std::string("the RTL perspective ") + ring +
+                                " ring has no voxel z differences (\"z_gradient\": \"voxel_differences\")");
+}
+}  // namespace
+
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                      const TraceWindow& trace) {
   require_rtl_perspective(plan.p);
+  require_no_persp_zdiff(plan, "interpolation");
   if (plan.r.p.tag_bits > 0) {
     // The tag variants are those of the p with the parallel rings' ones too.
     require_rtl_tags(plan.p, plan.r.p.tag_bits);
@@ -210,6 +221,7 @@ std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, Veri
 std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                          const TraceWindow& trace) {
   require_rtl_perspective(plan.p);
+  require_no_persp_zdiff(plan, "gradient");
   if (plan.r.p.tag_bits > 0) {
     require_rtl_tags(plan.p, plan.r.p.tag_bits);
     switch (plan.p) {

@@ -11,9 +11,6 @@ namespace cube4::sysc {
 TlmGradientPersp::TlmGradientPersp(const FramePlan& plan) : plan_(plan), row_(static_cast<int64_t>(plan.B) * plan.p) {
   if (!plan.perspective || !plan.r.gradient)
     throw std::invalid_argument("TlmGradientPersp: a perspective frame with the gradient unit on");
-  if (plan.r.z_gradient == golden::ZGradient::VoxelDifferences)
-    throw std::invalid_argument(
-        "TlmGradientPersp: VolumePro's voxel-difference z gradient is not in the perspective gradient unit yet");
 }
 
 TlmGradientPersp::PassSamples& TlmGradientPersp::pass_for(int64_t pass, int k) {
@@ -26,6 +23,7 @@ TlmGradientPersp::PassSamples& TlmGradientPersp::pass_for(int64_t pass, int k) {
   const auto n = static_cast<size_t>(s.width * (slice.rays_y.hi - slice.rays_y.lo));
   s.value.assign(n, 0);
   s.vtag.assign(n, 0);
+  if (plan_.zdiff) s.zdiff.assign(n, 0);
   s.arrived.assign(n, 0);
   return s;
 }
@@ -42,6 +40,7 @@ void TlmGradientPersp::take(const RaySampleBeat& in, int lane) {
   const auto at = static_cast<size_t>((in.v[i] - slice.rays_y.lo) * s.width + (in.u[i] - slice.rays_x.lo));
   s.value[at] = in.sample[i];
   s.vtag[at] = in.vtag[i];
+  if (plan_.zdiff) s.zdiff[at] = in.zdiff[i];
   s.arrived[at] = 1;
 }
 
@@ -75,8 +74,11 @@ void TlmGradientPersp::form(int64_t position, int lane, RayGradientBeat& out) {
   auto from = [&](int64_t pass, int slice) {
     return [this, pass, slice, position](int64_t u, int64_t v) { return sample(pass, slice, u, v, position); };
   };
-  const golden::Gradient g = golden::perspective_gradient(plan_.r, s, hu.ray, hv.ray, from(c.pass, k),
-                                                          from(c.pass - 1, k - 1), from(c.pass + 1, k + 1));
+  const auto at = static_cast<size_t>((hv.ray - s.rays_y.lo) * own.width + (hu.ray - s.rays_x.lo));
+  const golden::Gradient g =
+      plan_.zdiff ? golden::perspective_gradient_voxel_z(plan_.r, s, hu.ray, hv.ray, from(c.pass, k), own.zdiff[at])
+                  : golden::perspective_gradient(plan_.r, s, hu.ray, hv.ray, from(c.pass, k), from(c.pass - 1, k - 1),
+                                                 from(c.pass + 1, k + 1));
   const auto i = static_cast<size_t>(lane);
   out.valid |= 1u << lane;
   out.sample[i] = static_cast<uint16_t>(sample(c.pass, k, hu.ray, hv.ray, position));
@@ -86,7 +88,7 @@ void TlmGradientPersp::form(int64_t position, int lane, RayGradientBeat& out) {
   out.u[i] = static_cast<int32_t>(hu.ray);
   out.v[i] = static_cast<int32_t>(hv.ray);
   out.tag[i] = static_cast<uint32_t>(k);
-  out.vtag[i] = own.vtag[static_cast<size_t>((hv.ray - s.rays_y.lo) * own.width + (hu.ray - s.rays_x.lo))];
+  out.vtag[i] = own.vtag[at];
   ++gradients_;
 }
 

@@ -11,10 +11,11 @@
 // (std::logic_error naming the ray, slice and position), so the unit
 // checks the plan while it runs.
 //
-// The 12-neighbourhood only: VolumePro's voxel-difference z gradient in
-// perspective needs each ray's filtered z difference from the
-// interpolation ring, which its beats do not carry yet (refused at
-// construction).
+// With VolumePro's voxel-difference z gradient (plan.zdiff) a gradient's
+// z is its ray's filtered voxel z difference, which came with the sample
+// (golden perspective_gradient_voxel_z()); the schedule stays the
+// 12-neighbourhood's, so the ring's storage and cycles do not depend on
+// the z gradient chosen.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -45,6 +46,7 @@ class TlmGradientPersp final : public PerspGradientIf {
     int k = -1;         // its sample slice
     int64_t width = 0;
     std::vector<uint16_t> value;
+    std::vector<int32_t> zdiff;  // plan.zdiff only
     std::vector<uint8_t> vtag, arrived;
   };
   PassSamples& pass_for(int64_t pass, int k);

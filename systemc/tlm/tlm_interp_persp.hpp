@@ -11,6 +11,14 @@
 // The voxel slices are the ring's: each pass's streamed slice, and the
 // stored slice of the last pass with wz = 0 (cube4_slice_store), which a
 // pass with wz > 0 reads as its lower slice.
+//
+// With VolumePro's z gradient (plan.zdiff) each sample also carries its
+// filtered voxel z difference (golden perspective_z_difference()), which
+// needs voxel slices z - 1 .. z + 2: the stream reads one slice ahead
+// after a priming pass, as the parallel unit's (docs/rtl-interp-zdiff.md):
+// the priming pass and each wz = 0 pass stream z + 1 and move the stored
+// slices down by one (z - 1, z, z + 1), the others stream z + 2. The
+// priming pass forms no samples.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -38,7 +46,9 @@ class TlmInterpPersp final : public PerspInterpIf {
   struct Pass {
     int64_t index = -1;  // in the stream
     uint64_t tag = 0;    // its stream tag: the sample slice k (K: the zero pass)
+    bool prime = false;  // the priming pass (zdiff): no samples
     std::shared_ptr<const Slice> lo, hi;
+    std::shared_ptr<const Slice> below, above;  // zdiff: voxel slices z - 1 and z + 2 (wz > 0 only)
   };
   std::shared_ptr<Slice> new_slice() const;
   void start_pass(const VoxelBeat& in);
@@ -49,7 +59,8 @@ class TlmInterpPersp final : public PerspInterpIf {
   bool tagged_;
   std::array<Pass, 2> passes_;          // by index % 2: the streaming pass and the one before
   std::shared_ptr<Slice> streaming_;    // the streaming pass's slice, being written
-  std::shared_ptr<const Slice> store_;  // the last slice a pass with wz = 0 streamed
+  std::shared_ptr<const Slice> store_;  // the last slice a pass with wz = 0 streamed; zdiff: z
+  std::shared_ptr<const Slice> below_, above_;  // zdiff: z - 1 and z + 1
   int64_t pass_ = -1, steps_ = 0;       // the streaming pass; valid beats so far
   int y_ = 0, j_ = 0;
   std::array<RaySampleBeat, 4> delay_;  // the ring's 4 cycles, by clock % 4

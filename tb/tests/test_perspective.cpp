@@ -399,6 +399,38 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
   }
 }
 
+// VolumePro's voxel-difference z gradient in perspective runs wherever the
+// interpolation and gradient units are clocked TLM (the others at RTL
+// included), with fixed's image; with either ring at RTL it is refused
+// before anything is written, naming the key and what to run instead.
+TEST_F(PerspectiveCli, VoxelDifferenceZGradientRendersWithTheRingsAtTlmAndIsRefusedWithEitherAtRtl) {
+  const std::string scene =
+      write("zd.json", sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "fov": 40})",
+                              R"(, "z_gradient": "voxel_differences", "output": {"width": 64, "height": 64})",
+                              "[16,16,16]"));
+  const bool rtl = !sysc::rtl_persp_pipes().empty();
+  std::vector<float> fixed_image;
+  for (const char* model : {"fixed", "tlm --check", "mixed:shade --check", "mixed:composite,addr --check",
+                            "mixed:shade,composite,addr --check"}) {
+    const bool mixed = std::string(model).rfind("mixed", 0) == 0;
+    const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("o.png"));
+    if (mixed && !rtl) continue;
+    ASSERT_EQ(r.code, 0) << model << ": " << r.err;
+    const std::vector<float> image = cube4::tb::read_image(path("o.png")).rgba;
+    if (fixed_image.empty()) fixed_image = image;
+    EXPECT_TRUE(image == fixed_image) << model << ": the image differs from --model fixed";
+    test::fs::remove(path("o.png"));
+  }
+  if (!rtl) return;
+  for (const char* model : {"mixed:interp", "mixed:gradient", "rtl"}) {
+    const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("o.png"));
+    EXPECT_EQ(r.code, 2) << model;
+    EXPECT_NE(r.err.find("\"z_gradient\": \"voxel_differences\""), std::string::npos) << model << ": " << r.err;
+    EXPECT_NE(r.err.find("mixed: naming neither interp nor gradient"), std::string::npos) << model << ": " << r.err;
+    EXPECT_FALSE(test::fs::exists(path("o.png"))) << model;
+  }
+}
+
 // Polygons and blocks in perspective through the command line: the TLM
 // frame checked against golden (--check, through the host interface and
 // POLY_* windows), the same base plane as --model fixed, and the report's

@@ -82,6 +82,8 @@ uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool g
   const int nx = r.dim[0], ny = r.dim[1], K = r.sample_slices();
   const int64_t row = static_cast<int64_t>((nx + p - 1) / p) * p;
   const int F = r.p.dda_frac_bits;
+  // VolumePro's z gradient: each frame's priming pass comes before its slices.
+  const int primed = sysc::zdiff_stream(r) ? 1 : 0;
   int64_t last = -1;
   for (int k = 0; k < K; ++k) {
     const golden::PerspectiveSlice s = golden::perspective_slice(r, k);
@@ -89,7 +91,7 @@ uint64_t last_sample_cycle(const golden::Registers& r, int p, int frames, bool g
     // The last-formed ray of a slice: the largest home row, then column.
     const int64_t hy = golden::home_cell(golden::ray_position(s.ray0_y, s.spacing, s.rays_y.hi - 1), F);
     const int64_t hx = golden::home_cell(golden::ray_position(s.ray0_x, s.spacing, s.rays_x.hi - 1), F);
-    const int64_t pass = int64_t{frames - 1} * K + k;
+    const int64_t pass = int64_t{frames - 1} * (K + primed) + primed + k;
     last = std::max(last, gradient ? golden::gradient_forming_position(pass, hx, hy, row, ny)
                                    : golden::forming_position(pass, hx, hy, row, ny));
   }
@@ -220,8 +222,8 @@ bool rtl_perspective(int p) {
   return std::find(pipes.begin(), pipes.end(), p) != pipes.end();
 }
 
-void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const golden::BasePlane& want,
-                    const golden::RenderStats& stats) {
+sysc::SystemResult expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const golden::BasePlane& want,
+                                  const golden::RenderStats& stats) {
   const golden::Registers& r = s.host.regs;
   const sysc::SystemResult res = sysc::run_frame(r, s.volume, cfg);
   EXPECT_FALSE(res.mismatch) << res.mismatch->describe();
@@ -247,6 +249,7 @@ void expect_clocked(const test::Setup& s, const sysc::SystemConfig& cfg, const g
   if (cfg.frames > 1) {
     EXPECT_EQ(res.measured_interval, cc.stream);
   }
+  return res;
 }
 
 }  // namespace
@@ -520,6 +523,53 @@ TEST(SystemPerspective, EveryUnitAtRtlFromEveryFace) {
       if (p != 4) continue;
       cfg.frames = 2;
       expect_clocked(s, cfg, want, stats);
+    }
+  }
+}
+
+// VolumePro's voxel-difference z gradient in clocked perspective frames:
+// the stream reads a voxel slice ahead after each frame's priming pass,
+// the interpolation unit gives each sample's filtered z difference with
+// it, and the gradient unit takes z from there (docs/perspective.md,
+// "Gradient"). From every face at p = 1, 4 and 5 with the units at clocked
+// TLM, the shading unit and compositing ring at RTL where built, and two
+// frames back to back: golden's image and accumulators, every sample, z
+// difference and gradient checked as it leaves, the cycles the cycle
+// model's (one pass more than the 12-neighbourhood's stream).
+TEST(SystemPerspective, VoxelDifferenceZGradientClockedFromEveryFace) {
+  for (const char* eye : kEyes) {
+    std::string json = scene(eye);
+    json.insert(1, R"("z_gradient": "voxel_differences", )");
+    const test::Setup s = setup(json);
+    const golden::Registers& r = s.host.regs;
+    ASSERT_EQ(r.z_gradient, golden::ZGradient::VoxelDifferences);
+    golden::FixedOptions opt;
+    opt.accumulators = true;
+    golden::RenderStats stats;
+    opt.stats = &stats;
+    const golden::BasePlane want = golden::render_fixed(s.volume, r, opt);
+    opt.stats = nullptr;
+    // Not the 12-neighbourhood's image: the z gradient chosen shows.
+    golden::Registers twelve = r;
+    twelve.z_gradient = golden::ZGradient::Abc;
+    EXPECT_FALSE(golden::render_fixed(s.volume, twelve, opt).rgba == want.rgba) << eye;
+    golden::Registers parallel_stream = twelve;
+    EXPECT_EQ(sysc::frame_cycles(r, 4).stream,
+              sysc::frame_cycles(parallel_stream, 4).stream + static_cast<uint64_t>(r.dim[1]) * ((r.dim[0] + 3) / 4));
+    for (int p : {1, 4, 5}) {
+      SCOPED_TRACE(std::string("eye ") + eye + ", p = " + std::to_string(p));
+      sysc::SystemConfig cfg = clocked_config(p, false);
+      cfg.accumulators = true;
+      expect_clocked_plane(want, expect_clocked(s, cfg, want, stats));
+      if (!rtl_perspective(p)) continue;
+      cfg.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
+      cfg.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
+      cfg.levels[static_cast<size_t>(sysc::Unit::Addr)] = sysc::Level::Rtl;
+      SCOPED_TRACE("shading, compositing and address generation at RTL");
+      expect_clocked_plane(want, expect_clocked(s, cfg, want, stats));
+      if (p != 4) continue;
+      cfg.frames = 2;
+      expect_clocked_plane(want, expect_clocked(s, cfg, want, stats));
     }
   }
 }
@@ -822,10 +872,17 @@ TEST(SystemPerspective, FramesOutsideTheRingsPlansAreRefusedNamingWhy) {
   golden::Registers drifting = s.host.regs;
   drifting.x_step += int64_t{4} << drifting.p.dda_frac_bits;
   refused(clocked_config(4, false), drifting, "more than the perspective compositing ring's reach 3");
+  // VolumePro's z gradient: not in the interpolation and gradient rings at
+  // RTL (the clocked TLM units have it: VoxelDifferenceZGradientClocked...).
   golden::Registers zdiff = s.host.regs;
   zdiff.gradient = true;
   zdiff.z_gradient = golden::ZGradient::VoxelDifferences;
-  refused(clocked_config(4, false), zdiff, "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\"");
+  for (const sysc::Unit ring : {sysc::Unit::Interp, sysc::Unit::Gradient}) {
+    sysc::SystemConfig cfg = clocked_config(4, false);
+    cfg.levels[static_cast<size_t>(ring)] = sysc::Level::Rtl;
+    refused(cfg, zdiff, "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the "
+                        "perspective interpolation and gradient rings have no voxel z differences at RTL");
+  }
   if (CUBE4_TEST_RTL) {
     refused(clocked_config(2, true), s.host.regs, "CUBE4_SYSTEM_PERSP_PIPES");
     sysc::SystemConfig gradient_p2 = clocked_config(2, false);
