@@ -63,7 +63,7 @@ PassStep FramePlan::step(int pass, int y, int j) const {
   s.f.slice_start = y == 0 && !s.f.flush;
   s.f.slice_end = y == ny - 1;
   s.f.prime = prime_pass(pass) && !s.f.flush;
-  if (perspective && !s.f.flush && !zero_pass(pass)) {
+  if (perspective && !s.f.flush && !zero_pass(pass) && !prime_pass(pass)) {
     s.wz = persp[static_cast<size_t>(pass)].wz;
   } else if (!zero_pass(pass) && !prime_pass(pass) && !s.f.flush) {
     const golden::SliceControl& c = slices[static_cast<size_t>(pass)];
@@ -77,8 +77,9 @@ PassStep FramePlan::step(int pass, int y, int j) const {
 }
 
 uint64_t FramePlan::pass_tag(int pass) const {
-  // The priming pass gives no samples: its tag never leaves the ring.
-  if (prime_pass(pass)) return 0;
+  // The priming pass gives no samples: its tag never leaves the ring. In
+  // perspective the rings see it as the zero pass's (slice K: no rays).
+  if (prime_pass(pass)) return perspective ? user_tag(K) : 0;
   if (perspective) return user_tag(pass);
   const golden::SliceControl* control = zero_pass(pass) ? nullptr : &slices[static_cast<size_t>(pass)];
   return rtl::gradient_tag(control, 0, static_cast<uint64_t>(r.supersampling), pass == 0, user_tag(pass), r.p.weight_bits,

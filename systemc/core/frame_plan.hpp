@@ -105,7 +105,8 @@ struct FramePlan {
   PassStep step(int pass, int y, int j) const;
   // The interpolation ring's tag of a pass: the gradient ring's control
   // fields (realign x4, S, ZeroSlice, FrameStart), then tag_base + pass;
-  // in perspective only the latter (the perspective ring's TagBits).
+  // in perspective only the latter (the perspective ring's TagBits), the
+  // priming pass's being the zero pass's (no rays).
   uint64_t pass_tag(int pass) const;
   uint64_t user_tag(int pass) const {
     return (tag_base + static_cast<uint64_t>(pass)) & ((uint64_t{1} << user_tag_bits) - 1);
