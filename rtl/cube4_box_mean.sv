@@ -18,27 +18,41 @@
 // Widths (V = VoxelBits, W = WeightBits): sum_i V+2W+4 bits (the row stage),
 // recip_i V+6 bits (round(2^Q / E^2) <= 2^(Q-2W) at E = 2^W).
 //
+// Signed means (Signed = 1, DataBits = V+1: VolumePro's voxel z
+// differences, golden box_mean<int32_t>()): sum_i and sample_o are two's
+// complement, the shift arithmetic (rounding half up, towards +infinity,
+// as golden's). The product is taken modulo 2^(Q+DataBits) of the
+// sign-extended sum, exact in the bits kept, and the mean lies between the
+// extreme differences, so DataBits hold it. Q stays the voxels' (the
+// reciprocal is the slice's, whatever it filters).
+//
 // Parameters:
-//   VoxelBits  - voxel and sample width (golden Precision::voxel_bits, 12)
+//   VoxelBits  - voxel width (golden Precision::voxel_bits, 12): sets Q
 //   WeightBits - overlap fraction bits (Precision::weight_bits, 8)
+//   DataBits   - (Signed) the data's width: VoxelBits, or VoxelBits+1 signed
+//   Signed     - 1: sum_i and sample_o two's complement
 `include "cube4_pkg.sv"
 
 module cube4_box_mean #(
   parameter int unsigned VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned WeightBits = cube4_pkg::WeightBits,
-  localparam int unsigned SumBits   = VoxelBits + 2 * WeightBits + 4
+  parameter bit          Signed     = 1'b0,
+  parameter int unsigned DataBits   = VoxelBits + (Signed ? 1 : 0),
+  localparam int unsigned SumBits   = DataBits + 2 * WeightBits + 4
 ) (
   input  logic [SumBits-1:0]     sum_i,
   input  logic [VoxelBits+5:0]   recip_i,
-  output logic [VoxelBits-1:0]   sample_o
+  output logic [DataBits-1:0]    sample_o
 );
 
   localparam int unsigned RecipFrac = VoxelBits + 2 * WeightBits + 5;  // Q
-  localparam int unsigned ProdBits  = RecipFrac + VoxelBits;
+  localparam int unsigned ProdBits  = RecipFrac + DataBits;
   localparam logic [ProdBits-1:0] Half = ProdBits'(1) << (RecipFrac - 1);
 
-  logic [ProdBits-1:0] rounded;
-  assign rounded  = ProdBits'(sum_i) * ProdBits'(recip_i) + Half;
+  // ProdBits exceeds SumBits by V + 1, so the sum is always extended.
+  logic [ProdBits-1:0] sum_ext, rounded;
+  assign sum_ext  = {{(ProdBits-SumBits){Signed && sum_i[SumBits-1]}}, sum_i};
+  assign rounded  = sum_ext * ProdBits'(recip_i) + Half;
   assign sample_o = rounded[ProdBits-1:RecipFrac];
 
   // The product's fraction bits, dropped by the rounding shift.

@@ -22,14 +22,21 @@
 // The filter's own sums (at most 3 * 2^W of overlap per axis) exceed
 // 2^(DataBits+W+1) at the largest data, so no bit can go.
 //
+// Signed data (Signed = 1: VolumePro's voxel z differences, V+1 bits, and
+// their column sums, filtered by the same stages for the voxel-difference
+// z gradient; golden box_taps() of int32_t): d_i and sum_o are two's
+// complement; |sum_o| <= 3 * 2^W * 2^(DataBits-1) fits DataBits+W+2 bits.
+//
 // Parameters:
 //   DataBits   - width of the four values
 //   WeightBits - overlap fraction bits; overlaps are WeightBits+1 wide (8)
+//   Signed     - 1: data_i and sum_o two's complement
 `include "cube4_pkg.sv"
 
 module cube4_box_taps #(
   parameter int unsigned  DataBits   = cube4_pkg::VoxelBits,
   parameter int unsigned  WeightBits = cube4_pkg::WeightBits,
+  parameter bit           Signed     = 1'b0,
   localparam int unsigned SumBits    = DataBits + WeightBits + 2
 ) (
   input  logic [4*DataBits-1:0]        data_i,
@@ -47,7 +54,10 @@ module cube4_box_taps #(
   always_comb begin
     sum_o = '0;
     for (int i = 0; i < 4; i++) begin
-      sum_o = sum_o + SumBits'(weight[i*OvBits +: OvBits]) * SumBits'(data_i[i*DataBits +: DataBits]);
+      // Sign- or zero-extended to SumBits: the product modulo 2^SumBits is
+      // the exact two's complement product.
+      sum_o = sum_o + SumBits'(weight[i*OvBits +: OvBits]) *
+                      {{(SumBits-DataBits){Signed && data_i[i*DataBits+DataBits-1]}}, data_i[i*DataBits +: DataBits]};
     end
   end
 

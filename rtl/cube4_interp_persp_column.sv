@@ -57,8 +57,23 @@
 // inputs belong to the cell's pass, as oy_i does. Without tags col_tag_o is
 // 0 and none of it is built.
 //
+// VolumePro's z gradient (HasZDiff = 1; docs/perspective.md, "Gradient"):
+// the column also weighs the voxel z differences of its window rows,
+//   col_dlo_o = golden box_taps(D(x, b-3 .. b, z_voxel),     window oy)
+//   col_dhi_o = golden box_taps(D(x, b-3 .. b, z_voxel + 1), window oy)
+// with D(z) = V(z+1) - V(z-1) (signed, V+1 bits; golden
+// voxel_z_difference()), the second home stage's inputs. The stream then
+// reads one voxel slice ahead after a priming pass (prime_i), as
+// cube4_interp_unit's: the slice store entry holds {z-1 value, z word,
+// z+1 word}, a pass with wz = 0 (and the priming pass) streams z+1 and
+// shifts the entry down by a slice, the others stream z+2; the row delay
+// carries the outer values (z-1, z+2) beside each pair. With wz = 0 the
+// upper differences are weighted zero, so z+2 reads zero there. Without
+// HasZDiff prime_i is ignored, the difference sums are zero and none of it
+// is built.
+//
 // Widths (V = VoxelBits, W = WeightBits): a column sum is V+W+2 bits
-// (cube4_box_taps).
+// (cube4_box_taps), a difference sum V+W+3 (two's complement).
 //
 // Parameters:
 //   VoxelBits, WeightBits - as cube4_box_taps (Precision defaults 12, 8)
@@ -66,6 +81,7 @@
 //   WordBits, TagPortBits - (derived) voxel word and col_tag_o widths
 //   BeamDepth             - row delay entries: max partial beams per beam
 //   SliceDepth            - slice store entries: max ny * partial beams
+//   HasZDiff              - VolumePro's z gradient: the difference sums
 `include "cube4_pkg.sv"
 
 module cube4_interp_persp_column #(
@@ -74,7 +90,9 @@ module cube4_interp_persp_column #(
   parameter int unsigned  BeamDepth  = 64,
   parameter int unsigned  SliceDepth = 16384,
   parameter int unsigned  VoxelTagBits = 0,
+  parameter bit           HasZDiff   = 1'b0,
   localparam int unsigned ColBits    = VoxelBits + WeightBits + 2,
+  localparam int unsigned DColBits   = VoxelBits + WeightBits + 3,
   localparam int unsigned WordBits   = VoxelBits + VoxelTagBits,
   localparam int unsigned TagPortBits = VoxelTagBits > 0 ? VoxelTagBits : 1
 ) (
@@ -87,6 +105,7 @@ module cube4_interp_persp_column #(
   input  logic                          slice_start_i,
   input  logic                          slice_end_i,
   input  logic                          flush_i,
+  input  logic                          prime_i,   // HasZDiff: a frame's priming pass
   input  logic [WordBits-1:0]           voxel_i,
   input  logic [WeightBits:0]           wz_i,
   // The beam's y box (cube4_persp_lanes along y).
@@ -100,6 +119,8 @@ module cube4_interp_persp_column #(
   output logic [ColBits-1:0]            col_front_o,
   output logic [ColBits-1:0]            col_back_o,
   output logic [TagPortBits-1:0]        col_tag_o,
+  output logic [DColBits-1:0]           col_dlo_o,  // HasZDiff, else 0
+  output logic [DColBits-1:0]           col_dhi_o,
   // The step's place in the stream, for the ring's control (combinational):
   // its beam drains the finished pass, and the beam of its pass (0, 1, 2,
   // then 3 for any later beam).
@@ -112,17 +133,43 @@ module cube4_interp_persp_column #(
   localparam int unsigned BeamDepthBits  = $clog2(BeamDepth + 1);
 
   // -------------------------------------------------------------------------
-  // The current row's pair (front = z_voxel, back = z_voxel + 1).
-  logic         on_slice, pass_last;
-  logic [V-1:0] vox, front_cur, back_cur, store_rdata;
+  // The current row's pair (front = z_voxel, back = z_voxel + 1), and with
+  // HasZDiff the outer values (below = z_voxel - 1, above = z_voxel + 2).
+  localparam int unsigned StoreBits = HasZDiff ? 2 * V + VB : V;
+  localparam int unsigned RowBits   = HasZDiff ? 2 * V + 2 * VB : 2 * V;
+  logic                 on_slice, pass_last;
+  logic [V-1:0]         vox, front_cur, back_cur;
+  logic [VB-1:0]        below_cur, above_cur;
+  logic [StoreBits-1:0] store_rdata, store_wdata;
   assign on_slice  = wz_i == '0;
   assign pass_last = slice_end_i && beam_end_i && !flush_i;
   assign vox       = flush_i ? '0 : voxel_i;
-  assign front_cur = (on_slice || flush_i) ? vox : store_rdata;
-  assign back_cur  = vox;
+
+  if (HasZDiff) begin : g_zdiff_in
+    // A wz = 0 pass streams z+1 and finds the entry a slice behind,
+    // {z-2, z-1, z}; it writes it shifted, {z-1, z, z+1}. The priming pass
+    // streams slice 0 and writes zero as slice "z", which the frame's first
+    // pass reads as slice -1.
+    logic [V-1:0]  st_next, st_cur;
+    logic [VB-1:0] st_prev;
+    assign {st_prev, st_cur, st_next} = store_rdata;
+    assign front_cur   = flush_i ? '0 : on_slice ? st_next : st_cur;
+    assign back_cur    = flush_i ? '0 : on_slice ? vox : st_next;
+    assign below_cur   = flush_i ? '0 : on_slice ? st_cur[0 +: VB] : st_prev;
+    assign above_cur   = (flush_i || on_slice) ? '0 : vox[0 +: VB];
+    assign store_wdata = {st_cur[0 +: VB], prime_i ? '0 : st_next, voxel_i};
+  end else begin : g_plain_in
+    assign front_cur   = (on_slice || flush_i) ? vox : store_rdata;
+    assign back_cur    = vox;
+    assign below_cur   = '0;
+    assign above_cur   = '0;
+    assign store_wdata = voxel_i;
+    logic unused_prime;
+    assign unused_prime = prime_i;
+  end
 
   cube4_slice_store #(
-    .Width     (V),
+    .Width     (StoreBits),
     .SliceDepth(SliceDepth)
   ) u_slice_store (
     .clk_i      (clk_i),
@@ -131,17 +178,25 @@ module cube4_interp_persp_column #(
     .flush_i    (flush_i),
     .pass_last_i(pass_last),
     .on_slice_i (on_slice),
-    .wdata_i    (voxel_i),
+    .wdata_i    (store_wdata),
     .rdata_o    (store_rdata)
   );
 
-  // Row delay: entry {pair b-1, pair b-2, pair b-3} of this column (b-3 in
-  // the low bits), each pair {back, front}; a step reads it and writes
-  // {b, b-1, b-2}.
-  logic [6*V-1:0] rows_rdata, rows_wdata;
-  assign rows_wdata = {back_cur, front_cur, rows_rdata[2*V +: 4*V]};
+  // Row delay: entry {row b-1, row b-2, row b-3} of this column (b-3 in
+  // the low bits), each row {back, front}, with HasZDiff {above, below,
+  // back, front}; a step reads it and writes {b, b-1, b-2}.
+  logic [RowBits-1:0]   row_cur;
+  logic [3*RowBits-1:0] rows_rdata, rows_wdata;
+  if (HasZDiff) begin : g_zdiff_row
+    assign row_cur = {above_cur, below_cur, back_cur, front_cur};
+  end else begin : g_plain_row
+    assign row_cur = {back_cur, front_cur};
+    logic unused_outer;
+    assign unused_outer = ^{below_cur, above_cur};
+  end
+  assign rows_wdata = {row_cur, rows_rdata[RowBits +: 2*RowBits]};
   cube4_delay_ram #(
-    .Width   (6 * V),
+    .Width   (3 * RowBits),
     .MaxDepth(BeamDepth)
   ) u_row_delay (
     .clk_i    (clk_i),
@@ -220,17 +275,57 @@ module cube4_interp_persp_column #(
   // the home row (cube4_box_taps' shift_i).
   logic [4*V-1:0]  win_front_w, win_back_w;  // words
   logic [4*VB-1:0] win_front, win_back;      // values
+  logic [4*RowBits-1:0] win_rows;            // the kept rows, whole
   for (genvar j = 0; j < 4; j++) begin : g_window
-    logic [2*V-1:0] pair;
+    logic [RowBits-1:0] row;
     if (j == 3) begin : g_current
-      assign pair = {back_cur, front_cur};
+      assign row = row_cur;
     end else begin : g_delayed
-      assign pair = rows_rdata[j*2*V +: 2*V];
+      assign row = rows_rdata[j*RowBits +: RowBits];
     end
-    assign win_front_w[j*V +: V] = keep[3-j] ? pair[0 +: V] : '0;
-    assign win_back_w[j*V +: V]  = keep[3-j] ? pair[V +: V] : '0;
+    assign win_rows[j*RowBits +: RowBits] = keep[3-j] ? row : '0;
+    assign win_front_w[j*V +: V] = win_rows[j*RowBits +: V];
+    assign win_back_w[j*V +: V]  = win_rows[j*RowBits + V +: V];
     assign win_front[j*VB +: VB] = win_front_w[j*V +: VB];
     assign win_back[j*VB +: VB]  = win_back_w[j*V +: VB];
+  end
+
+  // VolumePro's z differences of the window rows: D(z) = back - below,
+  // D(z+1) = above - front (values, V+1 bits two's complement).
+  localparam int unsigned DB = VB + 1;
+  logic [DColBits-1:0] dlo_d, dhi_d, dlo_q, dhi_q;
+  if (HasZDiff) begin : g_zdiff_sums
+    logic [4*DB-1:0] win_dlo, win_dhi;
+    for (genvar j = 0; j < 4; j++) begin : g_diff
+      logic [VB-1:0] below, above;
+      assign below = win_rows[j*RowBits + 2*V +: VB];
+      assign above = win_rows[j*RowBits + 2*V + VB +: VB];
+      assign win_dlo[j*DB +: DB] = {1'b0, win_back[j*VB +: VB]} - {1'b0, below};
+      assign win_dhi[j*DB +: DB] = {1'b0, above} - {1'b0, win_front[j*VB +: VB]};
+    end
+    cube4_box_taps #(
+      .DataBits  (DB),
+      .WeightBits(WeightBits),
+      .Signed    (1'b1)
+    ) u_dlo (
+      .data_i   (win_dlo),
+      .overlap_i(oy_i),
+      .shift_i  (!oy_left_i),
+      .sum_o    (dlo_d)
+    );
+    cube4_box_taps #(
+      .DataBits  (DB),
+      .WeightBits(WeightBits),
+      .Signed    (1'b1)
+    ) u_dhi (
+      .data_i   (win_dhi),
+      .overlap_i(oy_i),
+      .shift_i  (!oy_left_i),
+      .sum_o    (dhi_d)
+    );
+  end else begin : g_no_diff
+    assign dlo_d = '0;
+    assign dhi_d = '0;
   end
 
   // The tag of the cell's nearest voxel of the column: window row 1 or 2.
@@ -279,6 +374,8 @@ module cube4_interp_persp_column #(
     if (valid_i) begin
       front_q <= front_d;
       back_q  <= back_d;
+      dlo_q   <= dlo_d;
+      dhi_q   <= dhi_d;
       tag_q   <= tag_d;
     end
   end
@@ -288,5 +385,7 @@ module cube4_interp_persp_column #(
   assign col_front_o = front_q;
   assign col_back_o  = back_q;
   assign col_tag_o   = tag_q;
+  assign col_dlo_o   = dlo_q;
+  assign col_dhi_o   = dhi_q;
 
 endmodule

@@ -18,17 +18,26 @@
 // lerp (cube4_lerp). Handshake: valid-only; valid_i travels with the data
 // to valid_o; only the valid pipeline is reset.
 //
-// Widths (V = VoxelBits, W = WeightBits): column sums V+W+2 bits, row sums
-// V+2W+4, recip_i V+6 (cube4_box_mean), wz_i W+1 (cube4_lerp).
+// Widths (V = VoxelBits, W = WeightBits, D = V, or V+1 when Signed):
+// column sums D+W+2 bits, row sums D+2W+4, recip_i V+6 (cube4_box_mean),
+// wz_i W+1 (cube4_lerp), sample_o D.
+//
+// Signed = 1: the same filter over VolumePro's voxel z differences (two's
+// complement, V+1 bits; golden perspective_z_difference(), which filters
+// them with the sample's own boxes, reciprocal and z lerp): a ring with
+// the voxel-difference z gradient has a second home stage of this kind.
 //
 // Parameters:
 //   VoxelBits, WeightBits - as cube4_box_taps (Precision defaults 12, 8)
+//   Signed                - 1: the data are signed voxel z differences
 `include "cube4_pkg.sv"
 
 module cube4_interp_persp_home #(
   parameter int unsigned  VoxelBits  = cube4_pkg::VoxelBits,
   parameter int unsigned  WeightBits = cube4_pkg::WeightBits,
-  localparam int unsigned ColBits    = VoxelBits + WeightBits + 2
+  parameter bit           Signed     = 1'b0,
+  localparam int unsigned DataBits   = VoxelBits + (Signed ? 1 : 0),
+  localparam int unsigned ColBits    = DataBits + WeightBits + 2
 ) (
   input  logic                         clk_i,
   input  logic                         rst_ni,
@@ -40,11 +49,11 @@ module cube4_interp_persp_home #(
   input  logic [VoxelBits+5:0]         recip_i,
   input  logic [WeightBits:0]          wz_i,
   output logic                         valid_o,
-  output logic [VoxelBits-1:0]         sample_o
+  output logic [DataBits-1:0]          sample_o
 );
 
   localparam int unsigned Latency   = 3;
-  localparam int unsigned SumBits   = VoxelBits + 2 * WeightBits + 4;
+  localparam int unsigned SumBits   = DataBits + 2 * WeightBits + 4;
   localparam int unsigned RecipBits = VoxelBits + 6;
 
   logic [Latency-1:0] valid_q;
@@ -63,7 +72,8 @@ module cube4_interp_persp_home #(
   logic [WeightBits:0]  wz1_q, wz2_q;
   cube4_box_taps #(
     .DataBits  (ColBits),
-    .WeightBits(WeightBits)
+    .WeightBits(WeightBits),
+    .Signed    (Signed)
   ) u_front (
     .data_i   (cols_front_i),
     .overlap_i(ox_i),
@@ -72,7 +82,8 @@ module cube4_interp_persp_home #(
   );
   cube4_box_taps #(
     .DataBits  (ColBits),
-    .WeightBits(WeightBits)
+    .WeightBits(WeightBits),
+    .Signed    (Signed)
   ) u_back (
     .data_i   (cols_back_i),
     .overlap_i(ox_i),
@@ -87,10 +98,11 @@ module cube4_interp_persp_home #(
   end
 
   // Stage 2: the two means.
-  logic [VoxelBits-1:0] lo_d, hi_d, lo_q, hi_q;
+  logic [DataBits-1:0] lo_d, hi_d, lo_q, hi_q;
   cube4_box_mean #(
     .VoxelBits (VoxelBits),
-    .WeightBits(WeightBits)
+    .WeightBits(WeightBits),
+    .Signed    (Signed)
   ) u_lo (
     .sum_i   (front_q),
     .recip_i (recip_q),
@@ -98,7 +110,8 @@ module cube4_interp_persp_home #(
   );
   cube4_box_mean #(
     .VoxelBits (VoxelBits),
-    .WeightBits(WeightBits)
+    .WeightBits(WeightBits),
+    .Signed    (Signed)
   ) u_hi (
     .sum_i   (back_q),
     .recip_i (recip_q),
@@ -111,10 +124,11 @@ module cube4_interp_persp_home #(
   end
 
   // Stage 3: the z lerp between the two voxel slices.
-  logic [VoxelBits-1:0] sample_d, sample_q;
+  logic [DataBits-1:0] sample_d, sample_q;
   cube4_lerp #(
-    .VoxelBits (VoxelBits),
-    .WeightBits(WeightBits)
+    .VoxelBits (DataBits),
+    .WeightBits(WeightBits),
+    .Signed    (Signed)
   ) u_lerp (
     .a_i(lo_q),
     .b_i(hi_q),

@@ -47,6 +47,16 @@
 // the forming pipeline the nearest of the window's columns X and X+1.
 // Without tags vtag_o is 0 and none of it is built.
 //
+// VolumePro's z gradient (HasZDiff = 1; docs/perspective.md, "Gradient"):
+// each sample also leaves with zdiff_o, golden perspective_z_difference():
+// the voxel z differences of the sample's two voxel slices through its own
+// box filters and z lerp. The column stages weigh the differences too
+// (reading a slice ahead after the frame's priming pass, prime_i), their
+// sums travel beside the voxels' in the history, and a second home stage
+// (cube4_interp_persp_home, Signed) filters them. The priming pass brings
+// no rays (its constants are the zero pass's), so it forms no cells.
+// Without HasZDiff zdiff_o is 0 and none of it is built.
+//
 // Preconditions: as cube4_interp_persp_column's (ny >= 2, complete passes,
 // nx <= MaxDim, ny * ceil(nx/p) <= SliceDepth); spacing in [1, 3] voxels.
 //
@@ -57,6 +67,7 @@
 //   FracBits, PosBits, RayBits - the walks' (cube4_persp_lanes)
 //   TagBits               - the pass tag's width
 //   VoxelTagBits          - voxel tag width (0: none)
+//   HasZDiff              - VolumePro's z gradient: zdiff_o (above)
 `include "cube4_pkg.sv"
 
 module cube4_interp_persp_ring #(
@@ -69,6 +80,7 @@ module cube4_interp_persp_ring #(
   parameter int unsigned  RayBits    = 16,
   parameter int unsigned  TagBits    = 8,
   parameter int unsigned  VoxelTagBits = 0,
+  parameter bit           HasZDiff   = 1'b0,
   localparam int unsigned WordBits   = VoxelBits + VoxelTagBits,
   localparam int unsigned VTagPortBits = VoxelTagBits > 0 ? VoxelTagBits : 1,
   localparam int unsigned BeamDepth  = (MaxDim + NumPipes - 1) / NumPipes,
@@ -84,6 +96,7 @@ module cube4_interp_persp_ring #(
   input  logic                            slice_start_i,
   input  logic                            slice_end_i,
   input  logic                            flush_i,
+  input  logic                            prime_i,   // HasZDiff: a frame's priming pass
   input  logic [NumPipes*WordBits-1:0]    voxels_i,
   input  logic [WeightBits:0]             wz_i,
   input  logic [TagBits-1:0]              tag_i,
@@ -102,7 +115,8 @@ module cube4_interp_persp_ring #(
   output logic [NumPipes*RayBits-1:0]     ray_u_o,
   output logic [NumPipes*RayBits-1:0]     ray_v_o,
   output logic [NumPipes*TagBits-1:0]     tag_o,
-  output logic [NumPipes*VTagPortBits-1:0] vtag_o
+  output logic [NumPipes*VTagPortBits-1:0] vtag_o,
+  output logic [NumPipes*(VoxelBits+1)-1:0] zdiff_o  // HasZDiff: two's complement, else 0
 );
 
   localparam int unsigned P       = NumPipes;
@@ -111,7 +125,10 @@ module cube4_interp_persp_ring #(
   localparam int unsigned BoxBits = 4 * OvBits;
   localparam int unsigned ColBits = V + WeightBits + 2;
   localparam int unsigned T        = VTagPortBits;
-  localparam int unsigned PairBits = 2 * ColBits + T;  // {tag, back, front} of a column
+  localparam int unsigned DColBits = V + WeightBits + 3;  // a difference column sum
+  localparam int unsigned DB       = V + 1;               // a voxel z difference
+  // {dhi, dlo (HasZDiff), tag, back, front} of a column
+  localparam int unsigned PairBits = 2 * ColBits + T + (HasZDiff ? 2 * DColBits : 0);
   // How many steps back the formation reaches: the window's first column
   // lies three stream positions back, the cell two.
   localparam int unsigned ColDepth  = (3 + P - 1) / P;
@@ -155,12 +172,20 @@ module cube4_interp_persp_ring #(
   for (genvar k = 0; k < P; k++) begin : g_column
     logic       draining_k;
     logic [1:0] beam_k;
+    logic [DColBits-1:0] dlo_k, dhi_k;
+    if (HasZDiff) begin : g_diffs
+      assign col_live[k*PairBits + 2*ColBits + T +: 2*DColBits] = {dhi_k, dlo_k};
+    end else begin : g_no_diffs
+      logic unused_diffs;  // zero without HasZDiff
+      assign unused_diffs = ^{dlo_k, dhi_k};
+    end
     cube4_interp_persp_column #(
       .VoxelBits (V),
       .WeightBits(WeightBits),
       .BeamDepth (BeamDepth),
       .SliceDepth(SliceDepth),
-      .VoxelTagBits(VoxelTagBits)
+      .VoxelTagBits(VoxelTagBits),
+      .HasZDiff  (HasZDiff)
     ) u_column (
       .clk_i        (clk_i),
       .rst_ni       (rst_ni),
@@ -170,6 +195,7 @@ module cube4_interp_persp_ring #(
       .slice_start_i(slice_start_i),
       .slice_end_i  (slice_end_i),
       .flush_i      (flush_i),
+      .prime_i      (prime_i),
       .voxel_i      (voxels_i[k*WordBits +: WordBits]),
       .wz_i         (wz_i),
       .oy_i         (y_box),
@@ -180,6 +206,8 @@ module cube4_interp_persp_ring #(
       .col_front_o  (col_live[k*PairBits +: ColBits]),
       .col_back_o   (col_live[k*PairBits + ColBits +: ColBits]),
       .col_tag_o    (col_live[k*PairBits + 2*ColBits +: T]),
+      .col_dlo_o    (dlo_k),
+      .col_dhi_o    (dhi_k),
       .draining_o   (draining_k),
       .beam_o       (beam_k)
     );
@@ -385,6 +413,7 @@ module cube4_interp_persp_ring #(
     // belong to another beam than the cell's.
     logic [4*ColBits-1:0] front, back;
     logic [4*T-1:0]       tags;
+    logic [4*DColBits-1:0] dlo, dhi;  // HasZDiff
     for (genvar i = 0; i < 4; i++) begin : g_col
       localparam int unsigned Back    = 3 - i;  // stream positions back
       localparam int unsigned SrcPipe = (k + 4 * P - Back) % P;
@@ -396,6 +425,13 @@ module cube4_interp_persp_ring #(
       assign front[i*ColBits +: ColBits] = same ? entry[0 +: ColBits] : '0;
       assign back[i*ColBits +: ColBits]  = same ? entry[ColBits +: ColBits] : '0;
       assign tags[i*T +: T]              = same ? entry[2*ColBits +: T] : '0;
+      if (HasZDiff) begin : g_diff
+        assign dlo[i*DColBits +: DColBits] = same ? entry[2*ColBits + T +: DColBits] : '0;
+        assign dhi[i*DColBits +: DColBits] = same ? entry[2*ColBits + T + DColBits +: DColBits] : '0;
+      end else begin : g_no_diff
+        assign dlo[i*DColBits +: DColBits] = '0;
+        assign dhi[i*DColBits +: DColBits] = '0;
+      end
     end
     // The nearest column's tag: window column 1 (X) or 2 (X+1).
     logic [T-1:0] vtag;
@@ -421,6 +457,34 @@ module cube4_interp_persp_ring #(
       .sample_o    (sample_o[k*V +: V])
     );
     assign valid_o[k] = home_valid;
+
+    // The second home stage: the same boxes over the voxel z differences.
+    if (HasZDiff) begin : g_zdiff_home
+      logic zdiff_valid;
+      cube4_interp_persp_home #(
+        .VoxelBits (V),
+        .WeightBits(WeightBits),
+        .Signed    (1'b1)
+      ) u_zdiff_home (
+        .clk_i       (clk_i),
+        .rst_ni      (rst_ni),
+        .valid_i     (form && lane_valid && cell_forms && cell_row_valid),
+        .cols_front_i(dlo),
+        .cols_back_i (dhi),
+        .ox_i        (lane_box),
+        .ox_left_i   (lane_left),
+        .recip_i     (cell_recip),
+        .wz_i        (cell_wz),
+        .valid_o     (zdiff_valid),
+        .sample_o    (zdiff_o[k*DB +: DB])
+      );
+      logic unused_zdiff_valid;  // the same cycle as home_valid
+      assign unused_zdiff_valid = zdiff_valid;
+    end else begin : g_no_zdiff_home
+      assign zdiff_o[k*DB +: DB] = '0;
+      logic unused_dcols;
+      assign unused_dcols = ^{dlo, dhi};
+    end
 
     // The ray and tag beside the home stage.
     localparam int unsigned SideBits = 2 * RayBits + TagBits + T;

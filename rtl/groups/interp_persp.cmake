@@ -10,8 +10,13 @@ cube4_rtl_test(test_rtl_interp_persp
         ${PROJECT_SOURCE_DIR}/tb/rtl/rtl_main.cpp)
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_column Vcube4_interp_persp_column
   SOURCES cube4_delay_ram.sv cube4_slice_store.sv cube4_box_taps.sv PARAMS BeamDepth=32 SliceDepth=1024)
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_column Vcube4_interp_persp_column_zdiff
+  SOURCES cube4_delay_ram.sv cube4_slice_store.sv cube4_box_taps.sv PARAMS BeamDepth=32 SliceDepth=1024 HasZDiff=1'b1)
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_home Vcube4_interp_persp_home
   SOURCES cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv)
+# The second home stage of VolumePro's z gradient: signed voxel z differences.
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_home Vcube4_interp_persp_home_signed
+  SOURCES cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv PARAMS Signed=1'b1)
 set(_persp_ring_sources cube4_delay_ram.sv cube4_slice_store.sv cube4_box_taps.sv cube4_box_mean.sv cube4_lerp.sv cube4_box_axis.sv
     cube4_persp_lanes.sv cube4_interp_persp_column.sv cube4_interp_persp_home.sv)
 foreach(p 4 1 5 8)
@@ -25,6 +30,11 @@ endforeach()
 # With 4-bit voxel tags (bela §III): the words {tag, value}, a tag per sample.
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring Vcube4_interp_persp_ring_t4
   SOURCES ${_persp_ring_sources} PARAMS NumPipes=4 MaxDim=24 VoxelTagBits=4)
+# VolumePro's z gradient (HasZDiff): the voxel z differences filtered too.
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring Vcube4_interp_persp_ring_zdiff
+  SOURCES ${_persp_ring_sources} PARAMS NumPipes=4 MaxDim=24 HasZDiff=1'b1)
+cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring Vcube4_interp_persp_ring_zdiff_p5
+  SOURCES ${_persp_ring_sources} PARAMS NumPipes=5 MaxDim=24 HasZDiff=1'b1)
 # As large as the MRI head (brainsmall, 128 x 128 x 84), for its frame.
 cube4_rtl_variant(test_rtl_interp_persp cube4_interp_persp_ring Vcube4_interp_persp_ring_m128
   SOURCES ${_persp_ring_sources} PARAMS NumPipes=4 MaxDim=128)

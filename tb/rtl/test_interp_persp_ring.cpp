@@ -7,7 +7,10 @@
 // Every ray of every slice must leave exactly once, with golden's sample,
 // on the lane and in the cycle the dataflow says: the stream position two
 // columns after its home in the beam two after its home row, 4 cycles
-// after that step (docs/rtl-interp-persp.md).
+// after that step (docs/rtl-interp-persp.md). With VolumePro's z gradient
+// (HasZDiff) each frame starts with a priming pass, the stream reads a
+// voxel slice ahead, and every sample's z difference is checked against
+// golden perspective_z_difference() too.
 //
 // CUBE4_RTL_VECTORS overrides the sample count per ring (default 300,000).
 #include <gtest/gtest.h>
@@ -27,12 +30,15 @@
 #include "Vcube4_interp_persp_ring_p8.h"
 #include "Vcube4_interp_persp_ring_m128.h"
 #include "Vcube4_interp_persp_ring_t4.h"
+#include "Vcube4_interp_persp_ring_zdiff.h"
+#include "Vcube4_interp_persp_ring_zdiff_p5.h"
 #include "golden/errors.hpp"
 #include "golden/host_driver.hpp"
 #include "golden/perspective.hpp"
 #include "golden/permuted_volume.hpp"
 #include "golden/perspective_dataflow.hpp"
 #include "golden/scene_io.hpp"
+#include "golden/units/gradient.hpp"
 #include "golden/volume_io.hpp"
 #include "tb/rtl/persp_registers.hpp"
 #include "tb/rtl/rtl_check.hpp"
@@ -52,6 +58,7 @@ using Volume = rtl::VoxelGrid;
 
 struct Want {
   uint32_t sample = 0, vtag = 0;
+  int32_t zdiff = 0;
   int lane = 0;
   uint64_t cycle = 0;
   bool seen = false;
@@ -60,11 +67,13 @@ struct Want {
 // Streams `frames` frames of registers r over the volume (values, and the
 // tags in the words' upper bits) through ring m, checking every sample
 // against golden: its value, tag, lane and cycle, each ray once. Returns
-// the samples checked.
+// the samples checked. `zdiff`: the ring has HasZDiff (VolumePro's z
+// gradient: a priming pass per frame, the stream a slice ahead).
 template <class M>
 long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const Volume& tags, int frames, int vtag_bits,
-                   rtl::Random& rng, rtl::Checker& c, uint64_t& cycle) {
+                   rtl::Random& rng, rtl::Checker& c, uint64_t& cycle, bool zdiff = false) {
   const int K = r.sample_slices();
+  const int primed = zdiff ? 1 : 0;  // each frame's priming pass
   long samples = 0;
   const int B = (vol.nx + p - 1) / p;
   const int64_t Bp = int64_t{B} * p;
@@ -79,15 +88,20 @@ long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const 
     for (int k = 0; k < K; ++k) {
       const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
       auto voxel = [&](int x, int y, int dz) { return vol.at(x, y, s.z_voxel + dz); };
+      auto difference = [&](int x, int y, int dz) {
+        const int z = s.z_voxel + dz;
+        return g::voxel_z_difference(vol.at(x, y, z + 1), vol.at(x, y, z - 1));
+      };
       for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
         for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
           const int64_t hx = g::home_cell(g::ray_position(s.ray0_x, s.spacing, u), kF);
           const int64_t hy = g::home_cell(g::ray_position(s.ray0_y, s.spacing, v), kF);
-          const int64_t pos = g::forming_position(int64_t{f} * K + k, hx, hy, Bp, vol.ny);
+          const int64_t pos = g::forming_position(int64_t{f} * (K + primed) + primed + k, hx, hy, Bp, vol.ny);
           const auto key = std::make_tuple(f * K + k, u, v);
           const g::TagVoxel t = g::perspective_tag_voxel(r, s, u, v);
           const uint32_t vtag = tags.at(t.x, t.y, s.z_voxel + t.dz);
-          want[key] = {g::perspective_sample(r, s, u, v, voxel), vtag, static_cast<int>(pos % p), 0, false};
+          const int32_t zd = zdiff ? g::perspective_z_difference(r, s, u, v, difference) : 0;
+          want[key] = {g::perspective_sample(r, s, u, v, voxel), vtag, zd, static_cast<int>(pos % p), 0, false};
           forming.push_back({key, pos / p});
         }
     }
@@ -111,10 +125,12 @@ long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const 
       it->second.seen = true;
       const int64_t got_vtag =
           vtag_bits > 0 ? static_cast<int64_t>(rtl::get_bits(m.vtag_o, lane * vtag_bits, vtag_bits)) : 0;
+      const int64_t got_zdiff = rtl::sign_extend(rtl::get_bits(m.zdiff_o, lane * (kV + 1), kV + 1), kV + 1);
       c.check(cycle, where,
-              {{"sample", it->second.sample}, {"vtag", it->second.vtag}, {"lane", it->second.lane},
-               {"cycle", static_cast<int64_t>(it->second.cycle)}},
-              {{"sample", got}, {"vtag", got_vtag}, {"lane", lane}, {"cycle", static_cast<int64_t>(cycle)}});
+              {{"sample", it->second.sample}, {"vtag", it->second.vtag}, {"z difference", it->second.zdiff},
+               {"lane", it->second.lane}, {"cycle", static_cast<int64_t>(it->second.cycle)}},
+              {{"sample", got}, {"vtag", got_vtag}, {"z difference", got_zdiff}, {"lane", lane},
+               {"cycle", static_cast<int64_t>(cycle)}});
       ++samples;
     }
   };
@@ -136,12 +152,16 @@ long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const 
     }
   };
   std::sort(forming.begin(), forming.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
-  const int passes = frames * K;
+  // The stream's passes (with zdiff each frame's priming pass first), then
+  // the flush beams.
+  const int per_frame = K + primed, passes = frames * per_frame;
   for (int pass = 0; pass <= passes && c.ok(); ++pass) {
     const bool flush = pass == passes;
-    const int k = pass % K;
-    const g::PerspectiveSlice& s = slices[static_cast<size_t>(flush ? 0 : k)];
-    const int z_in = s.wz == 0 ? s.z_voxel : s.z_voxel + 1;
+    const bool prime = !flush && pass % per_frame < primed;
+    const int k = flush || prime ? 0 : pass % per_frame - primed;
+    const int frame_pass = pass / per_frame * K + k;  // the samples' tag
+    const g::PerspectiveSlice& s = slices[static_cast<size_t>(k)];
+    const int z_in = prime ? 0 : (s.wz == 0 ? s.z_voxel : s.z_voxel + 1) + primed;
     for (int b = 0; b < (flush ? 3 : vol.ny) && c.ok(); ++b)
       for (int j = 0; j < B && c.ok(); ++j) {
         while (rng.chance(0.15)) {
@@ -154,21 +174,23 @@ long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const 
         m.slice_start_i = !flush && b == 0;
         m.slice_end_i = !flush && b == vol.ny - 1;
         m.flush_i = flush;
+        m.prime_i = prime;
         const int word_bits = kV + vtag_bits;
         for (int lane = 0; lane < p; ++lane) {
           const int x = j * p + lane;
           rtl::put_bits(m.voxels_i, lane * word_bits, word_bits,
                         flush ? rng.bits(word_bits) : vol.at(x, b, z_in) | tags.at(x, b, z_in) << kV);
         }
-        m.wz_i = static_cast<uint16_t>(flush ? rng.bits(9) : s.wz);
-        m.tag_i = static_cast<uint8_t>(flush ? rng.bits(kTag) : pass);
+        m.wz_i = static_cast<uint16_t>(flush ? rng.bits(9) : prime ? 0 : s.wz);
+        m.tag_i = static_cast<uint8_t>(flush || prime ? rng.bits(kTag) : frame_pass);
         m.spacing_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.spacing, kPos);
         m.ray0_x_i = word(flush ? static_cast<int64_t>(rng.bits(kPos)) : s.ray0_x, kPos);
         m.ray0_y_i = word(s.ray0_y, kPos);
-        m.rays_x_lo_i = static_cast<uint16_t>(word(s.rays_x.lo, kRay));
-        m.rays_x_hi_i = static_cast<uint16_t>(word(s.rays_x.hi, kRay));
-        m.rays_y_lo_i = static_cast<uint16_t>(word(s.rays_y.lo, kRay));
-        m.rays_y_hi_i = static_cast<uint16_t>(word(s.rays_y.hi, kRay));
+        // The priming pass has no rays (the system gives it the zero pass's constants).
+        m.rays_x_lo_i = static_cast<uint16_t>(prime ? 0 : word(s.rays_x.lo, kRay));
+        m.rays_x_hi_i = static_cast<uint16_t>(prime ? 0 : word(s.rays_x.hi, kRay));
+        m.rays_y_lo_i = static_cast<uint16_t>(prime ? 0 : word(s.rays_y.lo, kRay));
+        m.rays_y_hi_i = static_cast<uint16_t>(prime ? 0 : word(s.rays_y.hi, kRay));
         m.recip_i = static_cast<uint32_t>(flush ? rng.bits(kV + 6) : s.box_reciprocal);
         step_cycle.push_back(cycle);  // the cycle it is driven in
         note_cycles();
@@ -191,16 +213,17 @@ long stream_frames(M& m, int p, const g::Registers& r, const Volume& vol, const 
   return samples;
 }
 
-// vtag_bits: the model's VoxelTagBits (0: none).
+// vtag_bits: the model's VoxelTagBits (0: none); zdiff: its HasZDiff.
 template <class M>
-void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
+void test_ring(int p, uint64_t salt, int vtag_bits = 0, bool zdiff = false) {
   rtl::Random rng(salt);
   const auto dut = rtl::make_dut<M>();
   M& m = *dut;
   rtl::reset(m);
-  rtl::Checker c("cube4_interp_persp_ring p=" + std::to_string(p));
+  const std::string name = "cube4_interp_persp_ring p=" + std::to_string(p) + (zdiff ? " (HasZDiff)" : "");
+  rtl::Checker c(name);
   const long n = rtl::vector_count(300000);
-  rtl::Timer t("cube4_interp_persp_ring p=" + std::to_string(p) + ": " + std::to_string(n) + " samples");
+  rtl::Timer t(name + ": " + std::to_string(n) + " samples");
   uint64_t cycle = 0;
   long samples = 0;
   int frames_run = 0;
@@ -210,7 +233,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
     if (r.dim[1] < 2 || r.dim[0] > kMaxDim || r.dim[1] > kMaxDim) continue;
     const int K = r.sample_slices();
     const int frames = rng.chance(0.3) ? 2 : 1;
-    if (frames * K > 255) continue;
+    if (frames * K > 255 || (zdiff && r.dim[1] < 2)) continue;
     Volume vol;
     vol.resize(r.dim[0], r.dim[1], r.dim[2]);
     for (uint32_t& x : vol.v) x = static_cast<uint32_t>(rng.edgy((1 << kV) - 1, 0.1));
@@ -218,7 +241,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
     tags.resize(r.dim[0], r.dim[1], r.dim[2]);
     if (vtag_bits > 0)
       for (uint32_t& x : tags.v) x = static_cast<uint32_t>(rng.bits(vtag_bits));
-    samples += stream_frames(m, p, r, vol, tags, frames, vtag_bits, rng, c, cycle);
+    samples += stream_frames(m, p, r, vol, tags, frames, vtag_bits, rng, c, cycle, zdiff);
     const std::array<long, 4> leaving = rtl::rays_leaving(r);
     for (size_t f = 0; f < 4; ++f) faces[f] += leaving[f];
     ++frames_run;
@@ -234,7 +257,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
 // 2 and 3, rays leaving through each side face, spreading rays; one frame
 // each and two back to back.
 template <class M>
-void test_directed(int p) {
+void test_directed(int p, bool zdiff = false) {
   rtl::Random rng(7);
   const auto dut = rtl::make_dut<M>();
   rtl::reset(*dut);
@@ -247,7 +270,8 @@ void test_directed(int p) {
                                          tags.resize(d.r.dim[0], d.r.dim[1], d.r.dim[2]);
                                          for (uint32_t& x : vol.v)
                                            x = static_cast<uint32_t>(rng.edgy((1 << kV) - 1, 0.1));
-                                         return stream_frames(*dut, p, d.r, vol, tags, frames, 0, rng, c, cycle);
+                                         return stream_frames(*dut, p, d.r, vol, tags, frames, 0, rng, c, cycle,
+                                                              zdiff);
                                        }),
             "");
 }
@@ -267,6 +291,15 @@ TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSays
 TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleWhereTheDataflowSaysAtP8) {
   test_ring<Vcube4_interp_persp_ring_p8>(8, 94);
 }
+// VolumePro's z gradient (HasZDiff): every sample's filtered voxel z
+// difference too, the stream primed each frame and a slice ahead.
+TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleAndZDifferenceAtP4WithHasZDiff) {
+  test_ring<Vcube4_interp_persp_ring_zdiff>(4, 97, 0, true);
+}
+TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleAndZDifferenceAtP5WithHasZDiff) {
+  test_ring<Vcube4_interp_persp_ring_zdiff_p5>(5, 98, 0, true);
+}
+TEST(RtlInterpPerspRing, DirectedCasesAtP4WithHasZDiff) { test_directed<Vcube4_interp_persp_ring_zdiff>(4, true); }
 // With 4-bit voxel tags (bela §III): each sample's tag is its nearest voxel's.
 TEST(RtlInterpPerspRing, EveryRayLeavesOnceWithGoldensSampleAndTagAtP4WithVoxelTags) {
   test_ring<Vcube4_interp_persp_ring_t4>(4, 95, 4);
