@@ -45,6 +45,15 @@
 // first or last slice, which have no slice behind or ahead; tag_i). The
 // ring keeps the last four passes' constants.
 //
+// VolumePro's z gradient (HasVoxelZ = 1; docs/perspective.md, "Gradient"):
+// each sample arrives with its filtered voxel z difference (zdiff_i, from
+// cube4_interp_persp_ring with HasZDiff), stored beside it, and the
+// gradient's z is C(the own sample's difference) (golden
+// perspective_gradient_voxel_z(); cube4_gradient with HasVoxelZ builds no
+// ABC lerps). The schedule stays the 12-neighbourhood's, so the cycles do
+// not depend on the z gradient chosen. Without HasVoxelZ zdiff_i is
+// ignored and nothing of it is built.
+//
 // Preconditions: every pass complete, with the same ny >= 6 rows and
 // ceil(nx/p) <= BeamDepth partial beams per beam; ny <= MaxDim; spacing in
 // [1, 3] voxels (the homes lie within three cells); supersampling_i held
@@ -58,6 +67,7 @@
 //   FracBits, PosBits, RayBits - the walks' (cube4_persp_lanes)
 //   TagBits               - the pass tag's width
 //   VoxelTagBits          - voxel tag width (0: none)
+//   HasVoxelZ             - VolumePro's z gradient (above)
 `include "cube4_pkg.sv"
 
 module cube4_gradient_persp_ring #(
@@ -73,6 +83,7 @@ module cube4_gradient_persp_ring #(
   parameter int unsigned  RayBits           = 16,
   parameter int unsigned  TagBits           = 8,
   parameter int unsigned  VoxelTagBits      = 0,
+  parameter bit           HasVoxelZ         = 1'b0,
   localparam int unsigned VTagPortBits      = VoxelTagBits > 0 ? VoxelTagBits : 1,
   localparam int unsigned RecipBits         = VoxelBits + 2
 ) (
@@ -108,6 +119,7 @@ module cube4_gradient_persp_ring #(
   input  logic [NumPipes-1:0]                sample_valid_i,
   input  logic [NumPipes*VoxelBits-1:0]      sample_i,
   input  logic [NumPipes*VTagPortBits-1:0]   vtag_i,
+  input  logic [NumPipes*(VoxelBits+1)-1:0]  zdiff_i,  // HasVoxelZ: two's complement
   // Gradients.
   output logic [NumPipes-1:0]                valid_o,
   output logic [NumPipes*GradientBits-1:0]   gx_o,
@@ -123,7 +135,8 @@ module cube4_gradient_persp_ring #(
   localparam int unsigned P         = NumPipes;
   localparam int unsigned V         = VoxelBits;
   localparam int unsigned T         = VTagPortBits;
-  localparam int unsigned WordBits  = V + VoxelTagBits;  // a stored sample: {voxel tag, value}
+  localparam int unsigned ZBits     = HasVoxelZ ? V + 1 : 0;
+  localparam int unsigned WordBits  = V + VoxelTagBits + ZBits;  // a stored sample: {z difference, voxel tag, value}
   localparam int unsigned BeamDepth = (MaxDim + P - 1) / P;
   localparam int unsigned RowBits   = $clog2(MaxDim);
   localparam int unsigned ColBits   = BeamDepth > 1 ? $clog2(BeamDepth) : 1;
@@ -383,13 +396,21 @@ module cube4_gradient_persp_ring #(
       assign rrows[i*RowBits +: RowBits]   = early ? next_row(row) : row;
     end
 
-    logic [WordBits-1:0] wdata;
+    logic [V+VoxelTagBits-1:0] wsample;
     if (VoxelTagBits > 0) begin : g_tagged
-      assign wdata = {vtag_i[k*T +: VoxelTagBits], sample_i[k*V +: V]};
+      assign wsample = {vtag_i[k*T +: VoxelTagBits], sample_i[k*V +: V]};
     end else begin : g_plain
-      assign wdata = sample_i[k*V +: V];
+      assign wsample = sample_i[k*V +: V];
       logic unused_vtag;
       assign unused_vtag = ^vtag_i[k*T +: T];
+    end
+    logic [WordBits-1:0] wdata;
+    if (HasVoxelZ) begin : g_zdiff
+      assign wdata = {zdiff_i[k*(V+1) +: V+1], wsample};
+    end else begin : g_no_zdiff
+      assign wdata = wsample;
+      logic unused_zdiff;
+      assign unused_zdiff = ^zdiff_i[k*(V+1) +: V+1];
     end
 
     cube4_persp_column #(
@@ -565,6 +586,14 @@ module cube4_gradient_persp_ring #(
     logic form;
     assign form = valid_i && lane_valid && ctx[RForms +: 1];
 
+    // VolumePro's z: the own sample's stored difference.
+    logic [V:0] own_zdiff;
+    if (HasVoxelZ) begin : g_own_zdiff
+      assign own_zdiff = own[V + VoxelTagBits +: V + 1];
+    end else begin : g_no_own_zdiff
+      assign own_zdiff = '0;
+    end
+
     logic [GradientBits-1:0] gx, gy, gz;
     cube4_gradient #(
       .VoxelBits        (V),
@@ -572,7 +601,8 @@ module cube4_gradient_persp_ring #(
       .GradientBits     (GradientBits),
       .GradientShift    (GradientShift),
       .SupersamplingBits(SupersamplingBits),
-      .HasPerspective   (1'b1)
+      .HasPerspective   (1'b1),
+      .HasVoxelZ        (HasVoxelZ)
     ) u_gradient (
       .clk_i          (clk_i),
       .rst_ni         (rst_ni),
@@ -589,7 +619,7 @@ module cube4_gradient_persp_ring #(
       .ahead_wy_i     ({1'b0, ctx[RAheadWy +: WeightBits]}),
       .supersampling_i(supersampling_i),
       .lateral_recip_i(fp[PLateral +: RecipBits+1]),
-      .zdiff_i        ('0),
+      .zdiff_i        (own_zdiff),
       .valid_o        (valid_o[k]),
       .gx_o           (gx),
       .gy_o           (gy),

@@ -23,3 +23,8 @@ endforeach()
 # With 4-bit voxel tags (bela §III): the stored words {tag, value}.
 cube4_rtl_variant(test_rtl_gradient_persp cube4_gradient_persp_ring Vcube4_gradient_persp_ring_t4
   SOURCES ${_gradient_persp_sources} PARAMS NumPipes=4 MaxDim=24 VoxelTagBits=4)
+# VolumePro's z gradient (HasVoxelZ): each sample's z difference stored beside it.
+cube4_rtl_variant(test_rtl_gradient_persp cube4_gradient_persp_ring Vcube4_gradient_persp_ring_vz
+  SOURCES ${_gradient_persp_sources} PARAMS NumPipes=4 MaxDim=24 HasVoxelZ=1'b1)
+cube4_rtl_variant(test_rtl_gradient_persp cube4_gradient_persp_ring Vcube4_gradient_persp_ring_vz_p5
+  SOURCES ${_gradient_persp_sources} PARAMS NumPipes=5 MaxDim=24 HasVoxelZ=1'b1)

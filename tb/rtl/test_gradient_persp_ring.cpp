@@ -12,7 +12,9 @@
 // slice must leave exactly once, with golden's gradient, its own sample,
 // voxel tag, ray and pass tag, on the lane and in the cycle the schedule
 // says: gradient_forming_position()'s step, 3 cycles after it
-// (docs/rtl-gradient-persp.md).
+// (docs/rtl-gradient-persp.md). The HasVoxelZ variant (VolumePro's z
+// gradient) takes each sample's filtered voxel z difference beside it
+// (random, signed) and must give golden perspective_gradient_voxel_z().
 //
 // CUBE4_RTL_VECTORS overrides the gradient count per ring (default 1,000,000).
 #include <gtest/gtest.h>
@@ -28,6 +30,8 @@
 #include "Vcube4_gradient_persp_ring_p5.h"
 #include "Vcube4_gradient_persp_ring_p8.h"
 #include "Vcube4_gradient_persp_ring_t4.h"
+#include "Vcube4_gradient_persp_ring_vz.h"
+#include "Vcube4_gradient_persp_ring_vz_p5.h"
 #include "golden/perspective.hpp"
 #include "golden/perspective_dataflow.hpp"
 #include "tb/rtl/persp_registers.hpp"
@@ -55,21 +59,28 @@ class FrameSamples {
     for (const g::PerspectiveSlice& s : slices) {
       std::vector<uint32_t>& value = values_.emplace_back();
       std::vector<uint32_t>& tag = tags_.emplace_back();
+      std::vector<int32_t>& zdiff = zdiffs_.emplace_back();
       for (int64_t v = s.rays_y.lo; v < s.rays_y.hi; ++v)
         for (int64_t u = s.rays_x.lo; u < s.rays_x.hi; ++u) {
           const int64_t x = smooth ? base + a * u + b * v + c * s.k + rng.range(-3, 3)
                                    : rng.edgy((1 << kV) - 1, 0.2);
           value.push_back(static_cast<uint32_t>(std::clamp<int64_t>(x, 0, (1 << kV) - 1)));
           tag.push_back(vtag_bits > 0 ? static_cast<uint32_t>(rng.bits(vtag_bits)) : 0u);
+          // A filtered voxel z difference: signed V + 1 bits, extremes often.
+          const int64_t vmax = (1 << kV) - 1;
+          zdiff.push_back(static_cast<int32_t>(smooth ? std::clamp<int64_t>(c * 8 + rng.range(-20, 20), -vmax, vmax)
+                                                      : rng.edgy(2 * vmax, 0.2) - vmax));
         }
     }
   }
   // 0 for rays that miss the slice, or slices the frame does not have.
   uint32_t sample(int k, int64_t u, int64_t v) const { return at(values_, k, u, v); }
   uint32_t vtag(int k, int64_t u, int64_t v) const { return at(tags_, k, u, v); }
+  int32_t zdiff(int k, int64_t u, int64_t v) const { return at(zdiffs_, k, u, v); }
 
  private:
-  uint32_t at(const std::vector<std::vector<uint32_t>>& t, int k, int64_t u, int64_t v) const {
+  template <class T>
+  T at(const std::vector<std::vector<T>>& t, int k, int64_t u, int64_t v) const {
     if (k < 0 || k >= static_cast<int>(slices_.size())) return 0;
     const g::PerspectiveSlice& s = slices_[static_cast<size_t>(k)];
     if (!g::samples(s, u, v)) return 0;
@@ -78,6 +89,7 @@ class FrameSamples {
   }
   const std::vector<g::PerspectiveSlice>& slices_;
   std::vector<std::vector<uint32_t>> values_, tags_;
+  std::vector<std::vector<int32_t>> zdiffs_;
 };
 
 struct Expect {
@@ -89,10 +101,11 @@ struct Expect {
 };
 
 // Streams `frames` frames of registers r through ring m with random samples,
-// checking every gradient. Returns the gradients checked.
+// checking every gradient. Returns the gradients checked. `voxel_z`: the
+// ring has HasVoxelZ (z from each sample's z difference).
 template <class M>
 long stream_frames(M& m, int p, const g::Registers& r, int frames, int vtag_bits, rtl::Random& rng, rtl::Checker& c,
-                   uint64_t& cycle) {
+                   uint64_t& cycle, bool voxel_z = false) {
   const int K = r.sample_slices(), nx = r.dim[0], ny = r.dim[1];
   const int B = (nx + p - 1) / p;
   const int64_t row = int64_t{B} * p;
@@ -115,8 +128,10 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, int vtag_bits
           const int64_t Y = g::home_cell(g::ray_position(s.ray0_y, s.spacing, v), kF);
           const int64_t pos = g::gradient_forming_position(int64_t{f} * K + k, X, Y, row, ny);
           Expect& e = want[pos / p][static_cast<int>(pos % p)];
-          e = {f * K + k, u, v, g::perspective_gradient(r, s, u, v, from(k), from(k - 1), from(k + 1)),
-               fs.sample(k, u, v), fs.vtag(k, u, v), false};
+          const g::Gradient grad =
+              voxel_z ? g::perspective_gradient_voxel_z(r, s, u, v, from(k), fs.zdiff(k, u, v))
+                      : g::perspective_gradient(r, s, u, v, from(k), from(k - 1), from(k + 1));
+          e = {f * K + k, u, v, grad, fs.sample(k, u, v), fs.vtag(k, u, v), false};
         }
     }
 
@@ -183,12 +198,15 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, int vtag_bits
           const g::FormedCell fc = g::formed_cell(st.step * p + lane, row, nx, ny);
           uint32_t value = static_cast<uint32_t>(rng.bits(kV)),
                    tag = static_cast<uint32_t>(rng.bits(vtag_bits ? vtag_bits : 1));
+          uint64_t zdiff = rng.bits(kV + 1);
           if (const rtl::HomedRay h = rtl::ray_homed_at(slices, fc, passes, kF, r.p.weight_bits); h.valid) {
             const FrameSamples& fs = samples[static_cast<size_t>(fc.pass / K)];
             valid |= 1u << lane;
             value = fs.sample(h.k, h.u, h.v);
             tag = fs.vtag(h.k, h.u, h.v);
+            zdiff = word(fs.zdiff(h.k, h.u, h.v), kV + 1);
           }
+          rtl::put_bits(m.zdiff_i, lane * (kV + 1), kV + 1, zdiff);  // ignored without HasVoxelZ
           rtl::put_bits(m.sample_i, lane * kV, kV, value);
           const int tb = vtag_bits > 0 ? vtag_bits : 1;
           rtl::put_bits(m.vtag_i, lane * tb, tb, tag);
@@ -203,14 +221,15 @@ long stream_frames(M& m, int p, const g::Registers& r, int frames, int vtag_bits
   return checked;
 }
 
-// vtag_bits: the model's VoxelTagBits (0: none).
+// vtag_bits: the model's VoxelTagBits (0: none); voxel_z: its HasVoxelZ.
 template <class M>
-void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
+void test_ring(int p, uint64_t salt, int vtag_bits = 0, bool voxel_z = false) {
   rtl::Random rng(salt);
   const auto dut = rtl::make_dut<M>();
   M& m = *dut;
   rtl::reset(m);
-  const std::string name = "cube4_gradient_persp_ring p=" + std::to_string(p) + (vtag_bits ? " tags" : "");
+  const std::string name =
+      "cube4_gradient_persp_ring p=" + std::to_string(p) + (vtag_bits ? " tags" : "") + (voxel_z ? " HasVoxelZ" : "");
   rtl::Checker c(name);
   const long n = rtl::vector_count(1000000);
   rtl::Timer t(name + ": " + std::to_string(n) + " gradients");
@@ -224,7 +243,7 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
     if (r.dim[1] < 6 || r.dim[0] < 7 || r.dim[0] > kMaxDim || r.dim[1] > kMaxDim) continue;
     const int frames = rng.chance(0.3) ? 2 : 1;
     if (frames * r.sample_slices() + 1 > (1 << kTag) - 1) continue;
-    gradients += stream_frames(m, p, r, frames, vtag_bits, rng, c, cycle);
+    gradients += stream_frames(m, p, r, frames, vtag_bits, rng, c, cycle, voxel_z);
     const std::array<long, 4> leaving = rtl::rays_leaving(r);
     for (size_t f = 0; f < 4; ++f) faces[f] += leaving[f];
     ++frames_run;
@@ -241,14 +260,17 @@ void test_ring(int p, uint64_t salt, int vtag_bits = 0) {
 // 2 and 3, rays leaving through each side face, spreading rays; one frame
 // each and two back to back.
 template <class M>
-void test_directed(int p) {
+void test_directed(int p, bool voxel_z = false) {
   rtl::Random rng(8);
   const auto dut = rtl::make_dut<M>();
   rtl::reset(*dut);
   rtl::Checker c("cube4_gradient_persp_ring p=" + std::to_string(p) + " (directed)");
   uint64_t cycle = 0;
   EXPECT_EQ(rtl::stream_directed_cases(
-                kF, c, [&](const rtl::DirectedCase& d, int frames) { return stream_frames(*dut, p, d.r, frames, 0, rng, c, cycle); }),
+                kF, c,
+                [&](const rtl::DirectedCase& d, int frames) {
+                  return stream_frames(*dut, p, d.r, frames, 0, rng, c, cycle, voxel_z);
+                }),
             "");
 }
 
@@ -267,6 +289,14 @@ TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWhereTheScheduleS
 TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWhereTheScheduleSaysAtP8) {
   test_ring<Vcube4_gradient_persp_ring_p8>(8, 84);
 }
+// VolumePro's z gradient (HasVoxelZ): z from each ray's own z difference.
+TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWithVoxelZAtP4) {
+  test_ring<Vcube4_gradient_persp_ring_vz>(4, 86, 0, true);
+}
+TEST(RtlGradientPerspRing, EveryRaysGradientLeavesOnceAsGoldensWithVoxelZAtP5) {
+  test_ring<Vcube4_gradient_persp_ring_vz_p5>(5, 87, 0, true);
+}
+TEST(RtlGradientPerspRing, DirectedCasesAtP4WithVoxelZ) { test_directed<Vcube4_gradient_persp_ring_vz>(4, true); }
 TEST(RtlGradientPerspRing, VoxelTagsLeaveWithTheirRaysGradients) {
   test_ring<Vcube4_gradient_persp_ring_t4>(4, 85, 4);
 }
