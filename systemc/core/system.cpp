@@ -123,12 +123,10 @@ void check_polygon_levels(const SystemConfig& cfg, bool perspective) {
 // plans cannot follow is refused here, before any voxel is read.
 void check_perspective_levels(const golden::Registers& r, const SystemConfig& cfg) {
   if (!r.perspective || (cfg.all_tlm() && !cfg.cycle_level)) return;
+  // VolumePro's z gradient needs the rings verilated with it (HasZDiff, HasVoxelZ).
   if (zdiff_stream(r) && (cfg.levels[static_cast<size_t>(Unit::Interp)] == Level::Rtl ||
                           cfg.levels[static_cast<size_t>(Unit::Gradient)] == Level::Rtl))
-    throw std::invalid_argument(
-        "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the perspective "
-        "interpolation and gradient rings have no voxel z differences at RTL yet; run those two units at TLM "
-        "(--model tlm, or mixed: naming neither interp nor gradient; docs/perspective.md)");
+    require_rtl_persp_zdiff(cfg.p, r.p.tag_bits);
   // The compositing ring's plan (docs/perspective.md): every ray moves at
   // most its reach from slice to slice, and its last blend, that many
   // positions after its last gradient, falls within the stream.

@@ -64,6 +64,17 @@ void require_variant(int p, const std::vector<int>& built, const std::string& wh
                               ", or " + otherwise + ")");
 }
 
+// VolumePro's z gradient at RTL: the `rings` verilated with it for p (no
+// ring has it with voxel tags).
+void require_zdiff_variant(int p, int tag_bits, const std::vector<int>& built, const std::string& rings,
+                           const std::string& cmake_list) {
+  const std::string otherwise = "run those units at TLM: --model tlm, or mixed: naming neither interp nor gradient";
+  if (tag_bits > 0)
+    throw std::invalid_argument("z_gradient voxel_differences with voxel tags: no " + rings + " have both; " +
+                                otherwise);
+  require_variant(p, built, rings + " for z_gradient voxel_differences", cmake_list, otherwise);
+}
+
 // A switch over the built p found none: refused as require_rtl() refuses.
 [[noreturn]] void unavailable(int p) {
   require_rtl(p);
@@ -149,12 +160,8 @@ std::vector<int> rtl_zdiff_pipes() {
 }
 
 void require_rtl_zdiff(int p, int tag_bits) {
-  if (tag_bits > 0)
-    throw std::invalid_argument(
-        "z_gradient voxel_differences with voxel tags: no RTL interpolation and gradient rings have both; run "
-        "those units at TLM (--model tlm, or mixed without interp and gradient)");
-  require_variant(p, rtl_zdiff_pipes(), "RTL interpolation and gradient rings for z_gradient voxel_differences",
-                  "CUBE4_SYSTEM_ZDIFF_PIPES", "run those units at TLM");
+  require_zdiff_variant(p, tag_bits, rtl_zdiff_pipes(), "RTL interpolation and gradient rings",
+                        "CUBE4_SYSTEM_ZDIFF_PIPES");
 }
 
 std::vector<int> rtl_persp_pipes() {
@@ -184,21 +191,31 @@ void require_rtl_persp_polygons(int p) {
                   "run the compositing unit at TLM (--model mixed: without composite)");
 }
 
-namespace {
-// The perspective rings at RTL have no voxel z differences yet
-// (check_perspective_levels() refuses such frames before any voxel is read).
-void require_no_persp_zdiff(const FramePlan& plan, const char* ring) {
-  if (plan.zdiff)
-    throw std::invalid_argument(std::string("the RTL perspective ") + ring +
-                                " ring has no voxel z differences (\"z_gradient\": \"voxel_differences\")");
+std::vector<int> rtl_persp_zdiff_pipes() {
+  return {
+#define CUBE4_RTL_PERSP_ZDIFF_P(p) p,
+#include "rtl_persp_zdiff_variant_list.inc"
+#undef CUBE4_RTL_PERSP_ZDIFF_P
+  };
 }
-}  // namespace
+
+void require_rtl_persp_zdiff(int p, int tag_bits) {
+  require_zdiff_variant(p, tag_bits, rtl_persp_zdiff_pipes(), "RTL perspective interpolation and gradient rings",
+                        "CUBE4_SYSTEM_PERSP_PIPES and CUBE4_SYSTEM_ZDIFF_PIPES");
+}
 
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                      const TraceWindow& trace) {
   require_rtl_perspective(plan.p);
-  require_no_persp_zdiff(plan, "interpolation");
-  if (plan.r.p.tag_bits > 0) {
+  if (plan.zdiff) {
+    require_rtl_persp_zdiff(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_PERSP_ZDIFF_P(p) \
+  case p: return std::make_unique<RtlInterpPersp<Vsys_interp_persp_zdiff_p##p>>(plan, ctx, trace);
+#include "rtl_persp_zdiff_variant_list.inc"
+#undef CUBE4_RTL_PERSP_ZDIFF_P
+    }
+  } else if (plan.r.p.tag_bits > 0) {
     // The tag variants are those of the p with the parallel rings' ones too.
     require_rtl_tags(plan.p, plan.r.p.tag_bits);
     switch (plan.p) {
@@ -221,8 +238,15 @@ std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, Veri
 std::unique_ptr<PerspGradientIf> make_rtl_gradient_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                          const TraceWindow& trace) {
   require_rtl_perspective(plan.p);
-  require_no_persp_zdiff(plan, "gradient");
-  if (plan.r.p.tag_bits > 0) {
+  if (plan.zdiff) {
+    require_rtl_persp_zdiff(plan.p, plan.r.p.tag_bits);
+    switch (plan.p) {
+#define CUBE4_RTL_PERSP_ZDIFF_P(p) \
+  case p: return std::make_unique<RtlGradientPersp<Vsys_gradient_persp_zdiff_p##p>>(plan, ctx, trace);
+#include "rtl_persp_zdiff_variant_list.inc"
+#undef CUBE4_RTL_PERSP_ZDIFF_P
+    }
+  } else if (plan.r.p.tag_bits > 0) {
     require_rtl_tags(plan.p, plan.r.p.tag_bits);
     switch (plan.p) {
 #define CUBE4_RTL_PERSP_TAG_P(p) \

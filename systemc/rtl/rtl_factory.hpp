@@ -71,6 +71,12 @@ void require_rtl_perspective(int p);
 // throws, naming them, if p has none.
 std::vector<int> rtl_persp_polygon_pipes();
 void require_rtl_persp_polygons(int p);
+// The p values whose perspective interpolation and gradient rings are
+// verilated with VolumePro's z gradient (both CUBE4_SYSTEM_PERSP_PIPES and
+// CUBE4_SYSTEM_ZDIFF_PIPES); throws, naming them, if p has none, or if the
+// scene also has voxel tags (no ring has both).
+std::vector<int> rtl_persp_zdiff_pipes();
+void require_rtl_persp_zdiff(int p, int tag_bits);
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan& plan, VerilatedContext& ctx,
                                                      const TraceWindow& trace);
 // The perspective gradient ring (cube4_gradient_persp_ring), on

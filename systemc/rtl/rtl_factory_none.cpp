@@ -27,6 +27,8 @@ std::vector<int> rtl_persp_pipes() { return {}; }
 void require_rtl_perspective(int) { unavailable(); }
 std::vector<int> rtl_persp_polygon_pipes() { return {}; }
 void require_rtl_persp_polygons(int) { unavailable(); }
+std::vector<int> rtl_persp_zdiff_pipes() { return {}; }
+void require_rtl_persp_zdiff(int, int) { unavailable(); }
 std::unique_ptr<PerspInterpIf> make_rtl_interp_persp(const FramePlan&, VerilatedContext&, const TraceWindow&) {
   unavailable();
 }

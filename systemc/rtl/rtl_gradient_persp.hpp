@@ -7,7 +7,9 @@
 // golden perspective_slice(), or the RTL weight generator's). The zero pass
 // (tag K) has no rays. With voxel tags M is a ring with kRtlVoxelTagBits of
 // tag hardware: each sample's tag is stored with it and leaves with its
-// ray's gradient.
+// ray's gradient. With VolumePro's z gradient (plan.zdiff) M is a ring with
+// HasVoxelZ: each sample's filtered voxel z difference is stored with it
+// and gives its gradient's z.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -35,7 +37,8 @@ class RtlGradientPersp final : public PerspGradientIf {
 
   RtlGradientPersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), g_(plan.r.p.gradient_bits), tag_bits_(plan.tag_bits()),
-        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), m_(ctx, "gradient_persp", trace, "gradient") {
+        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), zdiff_(plan.zdiff),
+        m_(ctx, "gradient_persp", trace, "gradient") {
     m_->supersampling_i = static_cast<uint8_t>(plan.r.supersampling);
     // The ring takes one realignment step per neighbour for both axes (as
     // cube4_dda gives it): m_k / m_(k -/+ 1), the same in x and y.
@@ -58,6 +61,8 @@ class RtlGradientPersp final : public PerspGradientIf {
       const auto i = static_cast<size_t>(k);
       put_bits(m.sample_i, k * v_, v_, in.sample[i]);
       put_bits(m.vtag_i, k * vtag_port, vtag_port, in.vtag[i]);
+      if (zdiff_)
+        put_bits(m.zdiff_i, k * (v_ + 1), v_ + 1, static_cast<uint64_t>(in.zdiff[i]) & ((uint64_t{1} << (v_ + 1)) - 1));
     }
     m_.settle();
     out = RayGradientBeat{};
@@ -107,6 +112,7 @@ class RtlGradientPersp final : public PerspGradientIf {
 
   const FramePlan& plan_;
   int p_, v_, g_, tag_bits_, vtag_bits_;  // vtag_bits_: the model's VoxelTagBits
+  bool zdiff_;
   RtlModel<M> m_;
   struct Control {
     int64_t step = -1;

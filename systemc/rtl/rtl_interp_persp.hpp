@@ -6,7 +6,9 @@
 // finished pass's own for its drain. The zero pass has no rays.
 // With voxel tags (bela §III) M is a ring with kRtlVoxelTagBits of tag
 // hardware: the voxel words {tag, value} go in whole, each sample's tag
-// comes out beside it.
+// comes out beside it. With VolumePro's z gradient (plan.zdiff) M is a ring
+// with HasZDiff: it is told the frame's priming pass and gives each
+// sample's filtered voxel z difference beside it.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -25,13 +27,15 @@ class RtlInterpPersp final : public PerspInterpIf {
  public:
   RtlInterpPersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), tag_bits_(plan.tag_bits()),
-        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), m_(ctx, "interp_persp", trace, "interp") {}
+        vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), zdiff_(plan.zdiff),
+        m_(ctx, "interp_persp", trace, "interp") {}
 
   void clock(const VoxelBeat& in, RaySampleBeat& out) override {
     using rtl::get_bits;
     using rtl::put_bits;
     M& m = *m_;
     rtl::drive_stream_flags(m, in);
+    m.prime_i = in.f.prime;
     const int word_bits = v_ + vtag_bits_;
     for (int k = 0; k < p_; ++k) put_bits(m.voxels_i, k * word_bits, word_bits, in.voxel[static_cast<size_t>(k)]);
     m.wz_i = in.wz;
@@ -55,6 +59,8 @@ class RtlInterpPersp final : public PerspInterpIf {
       out.v[i] = static_cast<int32_t>(rtl::sign_extend(get_bits(m.ray_v_o, k * kPerspRayBits, kPerspRayBits), kPerspRayBits));
       out.tag[i] = static_cast<uint32_t>(get_bits(m.tag_o, k * tag_bits_, tag_bits_));
       out.vtag[i] = vtag_bits_ > 0 ? static_cast<uint8_t>(get_bits(m.vtag_o, k * vtag_bits_, vtag_bits_)) : 0;
+      if (zdiff_)
+        out.zdiff[i] = static_cast<int32_t>(rtl::sign_extend(get_bits(m.zdiff_o, k * (v_ + 1), v_ + 1), v_ + 1));
     }
     m_.rise();
   }
@@ -72,6 +78,7 @@ class RtlInterpPersp final : public PerspInterpIf {
 
   const FramePlan& plan_;
   int p_, v_, tag_bits_, vtag_bits_;  // vtag_bits_: the model's VoxelTagBits
+  bool zdiff_;
   RtlModel<M> m_;
   struct Control {
     int64_t step = -1;

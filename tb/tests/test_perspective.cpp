@@ -399,11 +399,14 @@ TEST_F(PerspectiveCli, RendersAtEveryLevelWithPerspectiveModelsAndRefusesTheOthe
   }
 }
 
-// VolumePro's voxel-difference z gradient in perspective runs wherever the
-// interpolation and gradient units are clocked TLM (the others at RTL
-// included), with fixed's image; with either ring at RTL it is refused
-// before anything is written, naming the key and what to run instead.
-TEST_F(PerspectiveCli, VoxelDifferenceZGradientRendersWithTheRingsAtTlmAndIsRefusedWithEitherAtRtl) {
+// VolumePro's voxel-difference z gradient in perspective renders at every
+// level with fixed's image: the units at clocked TLM, the others at RTL,
+// and the interpolation and gradient rings at RTL at a p with their
+// z-gradient variants (CUBE4_SYSTEM_PERSP_PIPES and
+// CUBE4_SYSTEM_ZDIFF_PIPES); at a p without them either ring at RTL is
+// refused before anything is written, naming the CMake options and what to
+// run instead.
+TEST_F(PerspectiveCli, VoxelDifferenceZGradientRendersAtEveryLevelAndIsRefusedWhereTheRingsLackIt) {
   const std::string scene =
       write("zd.json", sphere(R"({"rotate": [10, 20, 0], "projection": "perspective", "fov": 40})",
                               R"(, "z_gradient": "voxel_differences", "output": {"width": 64, "height": 64})",
@@ -422,12 +425,24 @@ TEST_F(PerspectiveCli, VoxelDifferenceZGradientRendersWithTheRingsAtTlmAndIsRefu
     test::fs::remove(path("o.png"));
   }
   if (!rtl) return;
-  for (const char* model : {"mixed:interp", "mixed:gradient", "rtl"}) {
-    const test::CliResult r = run("render " + scene + " -q --model " + model + " -o " + path("o.png"));
-    EXPECT_EQ(r.code, 2) << model;
-    EXPECT_NE(r.err.find("\"z_gradient\": \"voxel_differences\""), std::string::npos) << model << ": " << r.err;
-    EXPECT_NE(r.err.find("mixed: naming neither interp nor gradient"), std::string::npos) << model << ": " << r.err;
-    EXPECT_FALSE(test::fs::exists(path("o.png"))) << model;
+  const std::vector<int> zdiff = sysc::rtl_persp_zdiff_pipes();
+  for (const int p : sysc::rtl_persp_pipes()) {
+    const bool built = std::find(zdiff.begin(), zdiff.end(), p) != zdiff.end();
+    for (const char* model : {"mixed:interp", "mixed:gradient", "rtl"}) {
+      const std::string args = std::string(model) + " --check --pipes " + std::to_string(p);
+      const test::CliResult r = run("render " + scene + " -q --model " + args + " -o " + path("o.png"));
+      if (built) {
+        ASSERT_EQ(r.code, 0) << args << ": " << r.err;
+        EXPECT_TRUE(cube4::tb::read_image(path("o.png")).rgba == fixed_image)
+            << args << ": the image differs from --model fixed";
+        test::fs::remove(path("o.png"));
+        continue;
+      }
+      EXPECT_EQ(r.code, 2) << args;
+      EXPECT_NE(r.err.find("z_gradient voxel_differences"), std::string::npos) << args << ": " << r.err;
+      EXPECT_NE(r.err.find("CUBE4_SYSTEM_ZDIFF_PIPES"), std::string::npos) << args << ": " << r.err;
+      EXPECT_FALSE(test::fs::exists(path("o.png"))) << args;
+    }
   }
 }
 

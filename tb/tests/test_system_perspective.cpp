@@ -532,10 +532,12 @@ TEST(SystemPerspective, EveryUnitAtRtlFromEveryFace) {
 // the interpolation unit gives each sample's filtered z difference with
 // it, and the gradient unit takes z from there (docs/perspective.md,
 // "Gradient"). From every face at p = 1, 4 and 5 with the units at clocked
-// TLM, the shading unit and compositing ring at RTL where built, and two
-// frames back to back: golden's image and accumulators, every sample, z
-// difference and gradient checked as it leaves, the cycles the cycle
-// model's (one pass more than the 12-neighbourhood's stream).
+// TLM, the shading unit and compositing ring at RTL where built, then the
+// interpolation and gradient rings too where their z-gradient variants are
+// (HasZDiff, HasVoxelZ; each alone at one face), and two frames back to
+// back: golden's image and accumulators, every sample, z difference and
+// gradient checked as it leaves, the cycles the cycle model's (one pass
+// more than the 12-neighbourhood's stream) at every level.
 TEST(SystemPerspective, VoxelDifferenceZGradientClockedFromEveryFace) {
   for (const char* eye : kEyes) {
     std::string json = scene(eye);
@@ -565,7 +567,22 @@ TEST(SystemPerspective, VoxelDifferenceZGradientClockedFromEveryFace) {
       cfg.levels[static_cast<size_t>(sysc::Unit::Shade)] = sysc::Level::Rtl;
       cfg.levels[static_cast<size_t>(sysc::Unit::Composite)] = sysc::Level::Rtl;
       cfg.levels[static_cast<size_t>(sysc::Unit::Addr)] = sysc::Level::Rtl;
-      SCOPED_TRACE("shading, compositing and address generation at RTL");
+      {
+        SCOPED_TRACE("shading, compositing and address generation at RTL");
+        expect_clocked_plane(want, expect_clocked(s, cfg, want, stats));
+      }
+      if (!has(sysc::rtl_persp_zdiff_pipes(), p)) continue;
+      if (eye == kEyes[0])
+        for (const sysc::Unit ring : {sysc::Unit::Interp, sysc::Unit::Gradient}) {
+          sysc::SystemConfig alone = clocked_config(p, false);
+          alone.accumulators = true;
+          alone.levels[static_cast<size_t>(ring)] = sysc::Level::Rtl;
+          SCOPED_TRACE(std::string(sysc::unit_name(ring)) + " ring alone at RTL");
+          expect_clocked_plane(want, expect_clocked(s, alone, want, stats));
+        }
+      cfg.levels[static_cast<size_t>(sysc::Unit::Interp)] = sysc::Level::Rtl;
+      cfg.levels[static_cast<size_t>(sysc::Unit::Gradient)] = sysc::Level::Rtl;
+      SCOPED_TRACE("every unit at RTL");
       expect_clocked_plane(want, expect_clocked(s, cfg, want, stats));
       if (p != 4) continue;
       cfg.frames = 2;
@@ -872,16 +889,26 @@ TEST(SystemPerspective, FramesOutsideTheRingsPlansAreRefusedNamingWhy) {
   golden::Registers drifting = s.host.regs;
   drifting.x_step += int64_t{4} << drifting.p.dda_frac_bits;
   refused(clocked_config(4, false), drifting, "more than the perspective compositing ring's reach 3");
-  // VolumePro's z gradient: not in the interpolation and gradient rings at
-  // RTL (the clocked TLM units have it: VoxelDifferenceZGradientClocked...).
+  // VolumePro's z gradient needs the rings' z-gradient variants: refused
+  // by name at a p with the perspective rings but not those (p = 5 by
+  // default), and with voxel tags (no ring has both).
   golden::Registers zdiff = s.host.regs;
   zdiff.gradient = true;
   zdiff.z_gradient = golden::ZGradient::VoxelDifferences;
   for (const sysc::Unit ring : {sysc::Unit::Interp, sysc::Unit::Gradient}) {
+    if (!CUBE4_TEST_RTL) break;
+    for (const int p : sysc::rtl_persp_pipes()) {
+      if (has(sysc::rtl_persp_zdiff_pipes(), p)) continue;
+      sysc::SystemConfig cfg = clocked_config(p, false);
+      cfg.levels[static_cast<size_t>(ring)] = sysc::Level::Rtl;
+      refused(cfg, zdiff, "CUBE4_SYSTEM_PERSP_PIPES and CUBE4_SYSTEM_ZDIFF_PIPES");
+      break;
+    }
+    golden::Registers tagged_zdiff = zdiff;
+    tagged_zdiff.p.tag_bits = 2;
     sysc::SystemConfig cfg = clocked_config(4, false);
     cfg.levels[static_cast<size_t>(ring)] = sysc::Level::Rtl;
-    refused(cfg, zdiff, "\"z_gradient\": \"voxel_differences\" with \"view.projection\": \"perspective\": the "
-                        "perspective interpolation and gradient rings have no voxel z differences at RTL");
+    refused(cfg, tagged_zdiff, "no RTL perspective interpolation and gradient rings have both");
   }
   if (CUBE4_TEST_RTL) {
     refused(clocked_config(2, true), s.host.regs, "CUBE4_SYSTEM_PERSP_PIPES");
