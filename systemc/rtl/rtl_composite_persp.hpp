@@ -9,10 +9,14 @@
 // when the pixels of rays that sampled nothing are written too. With a
 // polygon frame (a ring built with HasPolygons) every sample goes in with
 // its ray's depth, front and back pixels and the slab pixel behind it,
-// read from the host's polygon images (PerspPolygonPixels), and the rays
-// that sampled nothing are the front over the back pixel.
+// read from the host's polygon images (PerspPolygonPixels), the slab pixel
+// run-length decoded by cube4_persp_slab_decode (RtlPerspSlabDecode), and
+// the rays that sampled nothing are the front over the back pixel.
 #pragma once
+#include <array>
 #include <cstdint>
+#include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include "golden/perspective.hpp"
@@ -22,6 +26,7 @@
 #include "systemc/core/persp_polygon_pixels.hpp"
 #include "systemc/core/unit_if.hpp"
 #include "systemc/rtl/rtl_model.hpp"
+#include "systemc/rtl/rtl_persp_slab_decode.hpp"
 #include "systemc/rtl/unit_registers.hpp"
 #include "systemc/rtl/unit_streams.hpp"
 #include "systemc/rtl/vl_bits.hpp"
@@ -31,13 +36,15 @@ namespace cube4::sysc {
 template <class M>
 class RtlCompositePersp final : public PerspCompositor {
  public:
+  // With `polygons`, `slab` decodes the slab pixels (its images).
   RtlCompositePersp(const FramePlan& plan, bool accumulators, VerilatedContext& ctx, const TraceWindow& trace,
-                    const golden::PolygonFrame* polygons = nullptr)
+                    const golden::PolygonFrame* polygons = nullptr, std::unique_ptr<PerspSlabPixelsIf> slab = nullptr)
       : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), a_(plan.r.p.alpha_bits),
         ab_(plan.r.p.alpha_bits + plan.r.p.acc_guard_bits), tag_bits_(plan.tag_bits()), accumulators_(accumulators),
         origin_x_(plan.r.base_origin_x()), origin_y_(plan.r.base_origin_y()),
         per_frame_(golden::perspective_samples(plan.r)), plane_(golden::empty_base_plane(plan.r)),
-        polygon_pixels_(plan, polygons), m_(ctx, "composite_persp", trace, "composite") {
+        polygon_pixels_(plan, polygons), slab_(std::move(slab)), m_(ctx, "composite_persp", trace, "composite") {
+    if (polygons && !slab_) throw std::logic_error("RtlCompositePersp: polygons without a slab decoder");
     rtl::drive_composite_registers(*m_, plan.r);
     m_->poly_enabled_i = polygons != nullptr;
     // The rays that leave a frame: those that sample some slice (each
@@ -59,6 +66,7 @@ class RtlCompositePersp final : public PerspCompositor {
     rtl::drive_stream_flags(m, step, in.f);
     if (step && in.f.slice_start && in.f.beam_start && !in.f.flush) drive_pass(in.pass_tag);
     m.sample_valid_i = step ? in.valid : 0u;
+    if (slab_) slab_->decode(in, slab_pixels_);
     for (int k = 0; k < p_; ++k) {
       const auto i = static_cast<size_t>(k);
       put_bits(m.red_i, k * a_, a_, in.red[i]);
@@ -66,7 +74,7 @@ class RtlCompositePersp final : public PerspCompositor {
       put_bits(m.blue_i, k * a_, a_, in.blue[i]);
       put_bits(m.alpha_i, k * a_, a_, in.alpha[i]);
       put_bits(m.value_i, k * v_, v_, in.value[i]);
-      if (polygon_pixels_.frame() && step && (in.valid >> k & 1)) drive_polygons(k, in.tag[i], in.u[i], in.v[i]);
+      if (polygon_pixels_.frame() && step && (in.valid >> k & 1)) drive_polygons(k, in.u[i], in.v[i]);
     }
     m_.settle();
     for (int k = 0; k < p_; ++k) {
@@ -120,8 +128,8 @@ class RtlCompositePersp final : public PerspCompositor {
     plane_ = std::move(frame_);
     start_frame();
   }
-  // Lane k's sample of ray (u, v) on slice `slice`: its polygon data.
-  void drive_polygons(int k, uint32_t slice, int64_t u, int64_t v) {
+  // Lane k's sample of ray (u, v): its polygon data.
+  void drive_polygons(int k, int64_t u, int64_t v) {
     using rtl::put_bits;
     M& m = *m_;
     const golden::PolygonFrame& poly = *polygon_pixels_.frame();
@@ -135,7 +143,7 @@ class RtlCompositePersp final : public PerspCompositor {
     };
     drive(poly.front[i], m.ray_front_red_i, m.ray_front_green_i, m.ray_front_blue_i, m.ray_front_alpha_i);
     drive(poly.back[i], m.ray_back_red_i, m.ray_back_green_i, m.ray_back_blue_i, m.ray_back_alpha_i);
-    drive(polygon_pixels_.behind(slice, u, v), m.slab_red_i, m.slab_green_i, m.slab_blue_i, m.slab_alpha_i);
+    drive(slab_pixels_[static_cast<size_t>(k)], m.slab_red_i, m.slab_green_i, m.slab_blue_i, m.slab_alpha_i);
   }
   // The constants of the pass `tag` names (K: the zero pass, no rays).
   void drive_pass(uint64_t tag) {
@@ -159,6 +167,8 @@ class RtlCompositePersp final : public PerspCompositor {
   golden::BasePlane frame_, plane_;
   std::vector<uint8_t> written_;
   PerspPolygonPixels polygon_pixels_;
+  std::unique_ptr<PerspSlabPixelsIf> slab_;
+  std::array<golden::Pixel, kMaxLanes> slab_pixels_{};
   RtlModel<M> m_;
 };
 

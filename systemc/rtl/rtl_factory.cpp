@@ -272,10 +272,11 @@ std::unique_ptr<PerspCompositor> make_rtl_composite_persp(const FramePlan& plan,
   if (polygons) {
     require_rtl_persp_polygons(plan.p);
     switch (plan.p) {
-#define CUBE4_RTL_PERSP_POLY_P(p)                                                                                   \
-  case p:                                                                                                           \
-    return std::make_unique<RtlCompositePersp<Vsys_composite_persp_poly_p##p>>(plan, accumulators, ctx, trace, \
-                                                                              polygons);
+#define CUBE4_RTL_PERSP_POLY_P(p)                                                                                \
+  case p:                                                                                                        \
+    return std::make_unique<RtlCompositePersp<Vsys_composite_persp_poly_p##p>>(                                 \
+        plan, accumulators, ctx, trace, polygons,                                                                \
+        std::make_unique<RtlPerspSlabDecode<Vsys_persp_slab_decode_p##p>>(plan, *polygons, ctx, trace));
 #include "rtl_persp_poly_variant_list.inc"
 #undef CUBE4_RTL_PERSP_POLY_P
     }

@@ -5,10 +5,10 @@
 // (SlabImage::decode_beam(), golden RleDecoder line by line; what
 // PerspPolygonPixels reads for the TLM unit).
 //
-// The bench plays the slab memory: per bank, the lines of every other row
-// of rays (row b, b + 2, ...: slice by slice, each slice's rows of rays),
-// a read position per line advancing by consume_o, moving on two rows at an
-// edge that ends a cycle with line_o high; junk beyond a line's end. The
+// The slab memory is the system's (PerspSlabLines,
+// systemc/rtl/persp_slab_lines.hpp: per bank the lines of every other row
+// of rays, read positions advancing by consume_o, moving on two rows after
+// line_o), showing junk beyond a line's end. The
 // requests are a perspective ring's: each row's rays in rank order, spread
 // over the lanes with random gaps (cells without rays, idle cycles), a row
 // ending and the next starting within one cycle, at most two rows a cycle.
@@ -32,6 +32,7 @@
 #include "Vcube4_persp_slab_decode_p8.h"
 #include "golden/precision.hpp"
 #include "golden/rle_buffer.hpp"
+#include "systemc/rtl/persp_slab_lines.hpp"
 #include "tb/rtl/rtl_check.hpp"
 
 namespace {
@@ -82,64 +83,6 @@ Slice random_slice(Random& rnd, int p) {
 
 struct Row {
   int slice, y;
-};
-
-// One bank's slab lines: rows bank, bank + 2, ... of `rows`, line l of each.
-class BankSource {
- public:
-  BankSource(const std::vector<Slice>& slices, const std::vector<Row>& rows, int bank, int p)
-      : slices_(slices), rows_(rows), bank_(bank), p_(p), row_(bank), lines_(static_cast<size_t>(p)),
-        at_(static_cast<size_t>(p)) {
-    load();
-  }
-  template <class M>
-  void present(M& m, Random& junk) const {
-    for (int l = 0; l < p_; ++l) {
-      const int d = bank_ * p_ + l;
-      const g::RleLine& line = lines_[static_cast<size_t>(l)];
-      const size_t at = at_[static_cast<size_t>(l)], left = line.size() - std::min(at, line.size());
-      for (int i = 0; i < 5; ++i)
-        rtl::put_bits(m.window_i, (d * 5 + i) * 16, 16,
-                      static_cast<size_t>(i) < left ? line[at + static_cast<size_t>(i)] : junk.bits(16));
-      rtl::put_bits(m.avail_i, d * 3, 3, std::min<size_t>(5, left));
-    }
-  }
-  // The cycle's consume_o and line_o, read before its clock edge.
-  template <class M>
-  void take(const M& m) {
-    for (int l = 0; l < p_; ++l) consumed_[static_cast<size_t>(l)] = rtl::get_bits(m.consume_o, (bank_ * p_ + l) * 3, 3);
-    next_line_ = rtl::get_bits(m.line_o, bank_, 1) != 0;
-  }
-  // After the edge: the read positions advance, or the lines move on.
-  void clocked() {
-    for (int l = 0; l < p_; ++l) at_[static_cast<size_t>(l)] += consumed_[static_cast<size_t>(l)];
-    if (next_line_) {
-      row_ += 2;
-      load();
-    }
-  }
-  // Damages line l of the bank's current row: its last word goes.
-  void truncate(int l) { lines_[static_cast<size_t>(l)].pop_back(); }
-
- private:
-  void load() {
-    for (int l = 0; l < p_; ++l) {
-      g::RleLine& line = lines_[static_cast<size_t>(l)];
-      line.clear();
-      at_[static_cast<size_t>(l)] = 0;
-      if (row_ >= static_cast<int>(rows_.size())) continue;
-      const Row& r = rows_[static_cast<size_t>(row_)];
-      const g::SlabImage& image = slices_[static_cast<size_t>(r.slice)].image;
-      line = image.empty() ? g::rle_clear(image.lane_width(l)) : image.line(r.y, l).line();
-    }
-  }
-  const std::vector<Slice>& slices_;
-  const std::vector<Row>& rows_;
-  int bank_, p_, row_;
-  std::vector<g::RleLine> lines_;
-  std::vector<size_t> at_;
-  std::array<size_t, kMaxLanes> consumed_{};
-  bool next_line_ = false;
 };
 
 struct Request {
@@ -204,8 +147,10 @@ struct Bench {
         }
       two_rows += lo != hi;
     }
-    BankSource bank0(slices, rows, 0, p), bank1(slices, rows, 1, p);
-    if (damage) bank0.truncate(0);
+    std::vector<rtl::PerspSlabLines::Row> memory_rows;
+    for (const Row& r : rows) memory_rows.push_back({&slices[static_cast<size_t>(r.slice)].image, r.y});
+    rtl::PerspSlabLines memory(memory_rows, p);
+    if (damage) memory.truncate(0, 0);
     Lanes before{};  // the requests of the cycle before
     for (size_t c = 0; c <= cycles.size(); ++c) {
       const Lanes now = c < cycles.size() ? cycles[c] : Lanes{};
@@ -215,15 +160,12 @@ struct Bench {
         rtl::put_bits(m.req_first_i, i, 1, q.valid ? q.first : junk.bits(1));
         rtl::put_bits(m.req_last_i, i, 1, q.valid ? q.last : junk.bits(1));
       }
-      bank0.present(m, junk);
-      bank1.present(m, junk);
+      memory.present(m, [&] { return junk.bits(16); });
       rtl::settle(m);
       observe(slices, rows, before);
-      bank0.take(m);
-      bank1.take(m);
+      memory.take(m);
       rtl::rise(m);
-      bank0.clocked();
-      bank1.clocked();
+      memory.clocked();
       ++cycle;
       before = now;
     }

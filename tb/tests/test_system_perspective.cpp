@@ -454,8 +454,9 @@ TEST(SystemPerspective, ClockedCompositingKeepsGoldensAccumulatorsAndBlendModes)
 // Cube-5's polygons in clocked perspective frames, from every face: the
 // compositing unit as clocked TLM and as the verilated ring with polygon
 // hardware (p = 1, 4 and 5, CUBE4_SYSTEM_POLYGON_PIPES; every unit at RTL
-// at p = 4), golden's image and accumulators, every sample checked, and
-// the same cycles at either level; and two frames back to back at p = 4.
+// at p = 4; its slab pixels run-length decoded by cube4_persp_slab_decode),
+// golden's image and accumulators, every sample checked, and the same
+// cycles at either level; and two frames back to back at p = 4.
 TEST(SystemPerspective, PolygonsInClockedPerspectiveFramesWithTheRingAtRtl) {
   int rtl_frames = 0;
   for (const char* eye : kEyes) {
@@ -463,6 +464,11 @@ TEST(SystemPerspective, PolygonsInClockedPerspectiveFramesWithTheRingAtRtl) {
     for (int p : {1, 4, 5}) {
       s.scene.pipelines = p;
       const golden::PolygonFrame frame = golden::rasterise_polygons(s.scene, s.meshes, s.host);
+      // The slab images hold fragments, so the decoders' pixels count.
+      size_t slab_fragments = 0;
+      for (const golden::SlabImage& slab : frame.slabs)
+        for (int y = 0; y < slab.beams(); ++y) slab.for_each_pixel(y, [&](int, const golden::Pixel&) { ++slab_fragments; });
+      EXPECT_GT(slab_fragments, 0u) << eye;
       golden::FixedOptions opt;
       opt.polygons = &frame;
       opt.accumulators = true;
