@@ -34,6 +34,7 @@
 #include "golden/rle_buffer.hpp"
 #include "systemc/rtl/persp_slab_lines.hpp"
 #include "tb/rtl/rtl_check.hpp"
+#include "tb/rtl/sva_check.hpp"
 
 namespace {
 
@@ -259,6 +260,60 @@ TEST(RtlPerspSlabDecode, ALineEndingInsideAFlitRaisesError) {
   Bench<Vcube4_persp_slab_decode> d(4, "cube4_persp_slab_decode p=4 (damaged line)");
   d.run({s}, rnd, true);
   EXPECT_GT(d.errors, 0u);
+}
+
+// The request contract's assertions (rtl/assert/cube4_persp_slab_decode_sva.sv),
+// each driven into its violation at p = 4 over a slab image of 8 x 4 pixels:
+// quiet on a correct stream, firing in the cycle of the fault otherwise.
+// A cycle's requests: per lane 0 (none), 'r' (a ray), 'f' (its row's
+// first), 'l' (its row's last), 'b' (both: a row of one ray).
+void request_stream(const std::vector<std::string>& cycles, const std::string& label,
+                    std::initializer_list<std::string> parts) {
+  const g::Precision precision;
+  g::SlabImage image(8, 4, 4);
+  for (int x = 0; x < 8; ++x) image.insert(x, x % 4, {0, 0, 0, static_cast<uint16_t>(1000 + x)}, precision);
+  rtl::run_expecting<Vcube4_persp_slab_decode>(
+      [&](Vcube4_persp_slab_decode& m) {
+        rtl::PerspSlabLines memory({{&image, 0}, {&image, 1}, {&image, 2}, {&image, 3}}, 4);
+        for (const std::string& c : cycles) {
+          uint32_t valid = 0, first = 0, last = 0;
+          for (int i = 0; i < 4; ++i) {
+            const char r = c[static_cast<size_t>(i)];
+            valid |= static_cast<uint32_t>(r != '0') << i;
+            first |= static_cast<uint32_t>(r == 'f' || r == 'b') << i;
+            last |= static_cast<uint32_t>(r == 'l' || r == 'b') << i;
+          }
+          m.req_valid_i = valid;
+          m.req_first_i = first;
+          m.req_last_i = last;
+          memory.present(m, [] { return uint16_t{0}; });
+          rtl::settle(m);
+          memory.take(m);
+          rtl::rise(m);
+          memory.clocked();
+        }
+      },
+      label, parts);
+}
+
+TEST(RtlPerspSlabDecodeSva, RaysWithinTheirRows) {
+  CUBE4_SKIP_WITHOUT_ASSERTIONS();
+  // Rows of 3 rays: the second's first in the cycle of the first's last.
+  request_stream({"frr0", "lfrl", "00fr", "l000"}, "", {});
+  request_stream({"frr0", "lfrl", "00rr", "l000"}, "a_row_open", {"cycle 3:", "after its last"});  // a ray past its row
+  request_stream({"rr00"}, "a_row_open", {"cycle 1:", "before its row's first"});
+}
+
+TEST(RtlPerspSlabDecodeSva, ARowStartsOnlyWhereTheRowTwoBackEnded) {
+  CUBE4_SKIP_WITHOUT_ASSERTIONS();
+  // Row 0 never ends: row 2 (bank 0 again) would read its lines.
+  request_stream({"frr0", "fr0l", "fr00"}, "a_row_ended", {"cycle 3:", "has not ended"});
+}
+
+TEST(RtlPerspSlabDecodeSva, AtMostTwoRowsACycle) {
+  CUBE4_SKIP_WITHOUT_ASSERTIONS();
+  request_stream({"frr0", "lbf0", "l000"}, "a_two_rows", {"cycle 2:", "rays of 3 rows"});
+  request_stream({"frr0", "lf0r", "l000"}, "", {});
 }
 
 }  // namespace
