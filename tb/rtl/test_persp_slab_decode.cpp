@@ -22,7 +22,6 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -233,7 +232,9 @@ void random_frames(int p, uint64_t salt) {
   EXPECT_GE(b.pixels, static_cast<uint64_t>(n));
   EXPECT_GT(b.blank, 0u);
   EXPECT_LT(b.blank, b.pixels);
-  if (p > 1) EXPECT_GT(b.two_rows, 1000u);
+  if (p > 1) {
+    EXPECT_GT(b.two_rows, 1000u);
+  }
 }
 
 TEST(RtlPerspSlabDecode, EveryRaysPixelIsGoldensAtP4) { random_frames<Vcube4_persp_slab_decode>(4, 11); }
