@@ -506,7 +506,9 @@ TEST(SystemPerspective, PolygonsInClockedPerspectiveFramesWithTheRingAtRtl) {
       }
     }
   }
-  if (CUBE4_TEST_RTL) EXPECT_EQ(rtl_frames, 6 * 4);  // every face: p = 1, 4, 5, and every unit at p = 4
+  if (CUBE4_TEST_RTL) {
+    EXPECT_EQ(rtl_frames, 6 * 4);  // every face: p = 1, 4, 5, and every unit at p = 4
+  }
 }
 
 // Every unit at RTL (--model rtl): the perspective interpolation, gradient
