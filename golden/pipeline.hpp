@@ -71,7 +71,8 @@ struct Neighbourhood {
   uint32_t tag = 0;
 };
 
-inline Gradient sample_gradient(const Registers& r, const SliceControl& c, const Neighbourhood& n) {
+template <class R>
+inline Gradient sample_gradient(const R& r, const SliceControl& c, const Neighbourhood& n) {
   if (r.z_gradient == ZGradient::VoxelDifferences) return gradient_voxel_z(n.left, n.right, n.up, n.down, n.z_difference, r.p);
   const int w = r.p.weight_bits;
   const uint32_t behind = abc_sample(n.behind[0], n.behind[1], n.behind[2], n.behind[3],
@@ -99,7 +100,8 @@ inline std::unique_ptr<FacePositionTable> make_face_table(const Registers& r) {
 struct GradientShading {
   uint32_t gm = 0, id = 0, is = 0;
 };
-inline GradientShading gradient_shading(const Registers& r, const Gradient& g,
+template <class R>
+inline GradientShading gradient_shading(const R& r, const Gradient& g,
                                         const FacePositionTable* faces = nullptr) {
   const Precision& p = r.p;
   GradientShading out;
@@ -117,7 +119,8 @@ inline GradientShading gradient_shading(const Registers& r, const Gradient& g,
 // Classification and shading of a sample with value `centre` and tag `tag`
 // whose gradient gave `gs`: the classification entry is {tag, centre}'s and
 // the material the tag's.
-inline ShadedSample shade_with(const Registers& r, uint32_t centre, uint32_t tag, const GradientShading& gs) {
+template <class R>
+inline ShadedSample shade_with(const R& r, uint32_t centre, uint32_t tag, const GradientShading& gs) {
   const Precision& p = r.p;
   const uint32_t one = static_cast<uint32_t>(max_unsigned(p.alpha_bits));
   ShadedSample out;
@@ -136,7 +139,8 @@ inline ShadedSample shade_with(const Registers& r, uint32_t centre, uint32_t tag
 // gradient and shading (α only shrinks on the way through the pipeline,
 // and blend_front_to_back adds nothing for α = 0), so a model whose
 // gradient and shading streams nobody else reads may skip them.
-inline bool sample_cannot_change_ray(const Registers& r, uint32_t centre, uint32_t tag) {
+template <class R>
+inline bool sample_cannot_change_ray(const R& r, uint32_t centre, uint32_t tag) {
   return r.blend == BlendMode::Composite && classify(r.classification, tag, centre, r.p).a == 0;
 }
 
@@ -144,7 +148,8 @@ inline bool sample_cannot_change_ray(const Registers& r, uint32_t centre, uint32
 // tag `tag` and gradient `g` (Gradient{} when the gradient unit is off): the
 // shading unit's work (rtl/cube4_shade_unit.sv). Units the registers leave
 // off are not evaluated at all, exactly as the hardware would skip them.
-inline ShadedSample shade_classified(const Registers& r, uint32_t centre, uint32_t tag, const Gradient& g,
+template <class R>
+inline ShadedSample shade_classified(const R& r, uint32_t centre, uint32_t tag, const Gradient& g,
                                      const FacePositionTable* faces = nullptr) {
   return shade_with(r, centre, tag, gradient_shading(r, g, faces));
 }
@@ -152,10 +157,12 @@ inline ShadedSample shade_classified(const Registers& r, uint32_t centre, uint32
 // gradient_shading() of a frame's gradients, remembered in a small direct-
 // mapped table: neighbouring samples of smooth material often have equal
 // gradients. Equal by construction (an entry holds the function's value for
-// exactly its gradient). One per thread.
-class GradientShadingCache {
+// exactly its gradient). One per thread. R: the registers' type (Registers,
+// or DefaultPrecisionRegisters for widths known at compile time).
+template <class R>
+class BasicGradientShadingCache {
  public:
-  GradientShadingCache(const Registers& r, const FacePositionTable* faces) : r_(r), faces_(faces), entries_(kSize) {}
+  BasicGradientShadingCache(const R& r, const FacePositionTable* faces) : r_(r), faces_(faces), entries_(kSize) {}
   const GradientShading& operator()(const Gradient& g) {
     // Components are at most 16 bits signed: 21-bit fields keep them apart,
     // and the top bit marks a filled entry.
@@ -173,15 +180,17 @@ class GradientShadingCache {
     uint64_t key = 0;
     GradientShading value;
   };
-  const Registers& r_;
+  const R& r_;
   const FacePositionTable* faces_;
   std::vector<Entry> entries_;
 };
+using GradientShadingCache = BasicGradientShadingCache<Registers>;
 
 // Cropping, the block window and the cut plane of the shaded sample at
 // (x, y) of slice c.k: the compositing unit's first steps
 // (rtl/cube4_composite.sv).
-inline ShadedSample crop_and_cut(const Registers& r, const SliceControl& c, int x, int y, ShadedSample s) {
+template <class R>
+inline ShadedSample crop_and_cut(const R& r, const SliceControl& c, int x, int y, ShadedSample s) {
   if (r.crop_enabled) s.visible = crop_visible(x, y, c.z_voxel, r.crop);
   if (r.window_enabled && !window_inside(x, y, c.z_voxel, r.window)) s.visible = false;
   if (r.cut_enabled) {
@@ -198,13 +207,17 @@ inline ShadedSample crop_and_cut(const Registers& r, const SliceControl& c, int 
 // Gradient, magnitude, classification, shading, cropping and cut plane of
 // the sample at (x, y) of slice c.k: one pipeline's work on one sample.
 // `shading(g)` gives gradient_shading() of the sample's gradient g.
-template <class Shading>
-ShadedSample shade_sample_with(const Registers& r, const SliceControl& c, int x, int y, const Neighbourhood& n,
+// Flattened: with every unit function inlined, an instantiation for
+// DefaultPrecisionRegisters folds all its widths (GCC otherwise keeps some,
+// expand_bits and the map lookups among them, as calls with run-time widths).
+template <class R, class Shading>
+[[gnu::flatten]] ShadedSample shade_sample_with(const R& r, const SliceControl& c, int x, int y, const Neighbourhood& n,
                                Shading&& shading) {
   const Gradient g = r.gradient ? sample_gradient(r, c, n) : Gradient{};
   return crop_and_cut(r, c, x, y, shade_with(r, n.centre, n.tag, shading(g)));
 }
-inline ShadedSample shade_sample(const Registers& r, const SliceControl& c, int x, int y,
+template <class R>
+inline ShadedSample shade_sample(const R& r, const SliceControl& c, int x, int y,
                                  const Neighbourhood& n, const FacePositionTable* faces = nullptr) {
   return shade_sample_with(r, c, x, y, n, [&](const Gradient& g) { return gradient_shading(r, g, faces); });
 }

@@ -117,6 +117,22 @@ struct Registers {
   }
 };
 
+// Registers whose precision is the default one, known at compile time: its
+// `p` hides Registers::p, so a renderer's loops instantiated for this type
+// (the unit functions of golden/pipeline.hpp and the compositor are
+// templates on the registers' type) fold every width to a constant and
+// drop the shifts, branches and loops that run-time widths cost, with the
+// same functions and so the same bits. Only for registers whose own
+// precision is the default (has_default_precision()).
+struct DefaultPrecisionRegisters : Registers {
+  static constexpr Precision p{};
+  explicit DefaultPrecisionRegisters(const Registers& r) : Registers(r) {
+    if (!has_default_precision(r))
+      throw std::logic_error("DefaultPrecisionRegisters: the registers' precision is not the default");
+  }
+  static bool has_default_precision(const Registers& r) { return first_difference(r.p, Precision{}) == nullptr; }
+};
+
 // The view's DDA registers as the machine is built for them. Parallel: rays
 // move forwards by at most one voxel a sample slice (0 <= step <= 1.0: the
 // view's permutation and flips make every shear so, and the compositor's

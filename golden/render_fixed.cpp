@@ -21,11 +21,12 @@ namespace cube4::golden {
 
 namespace {
 
+template <class R>
 struct Frame {
-  const Registers& r;
+  const R& r;
   PermutedVolume access;
   const SkipMap& skip;
-  SliceCompositor& compositor;
+  BasicSliceCompositor<R>& compositor;
   const FacePositionTable* faces;
   SampleProbe* probe;
   bool may_skip;
@@ -34,9 +35,10 @@ struct Frame {
 // Beams [first, second) of slice k.
 using Beams = std::pair<int, int>;
 
+template <class R>
 class Band {
  public:
-  Band(const Frame& f, int v0, int v1)
+  Band(const Frame<R>& f, int v0, int v1)
       : f_(f), r_(f.r), nx_(r_.dim[0]), ny_(r_.dim[1]), K_(r_.sample_slices()), reach_(r_.gradient ? 1 : 0),
         iy_last_(r_.base_origin_y()), v0_(v0), v1_(v1), tagged_(r_.p.tag_bits > 0),
         voxel_z_(r_.gradient && r_.z_gradient == ZGradient::VoxelDifferences), vox_lo_(nx_, ny_, 1),
@@ -50,7 +52,7 @@ class Band {
   }
 
   void run(const Progress* progress) {
-    const Registers& r = r_;
+    const R& r = r_;
     int32_t first_visible = 0;
     while (first_visible < static_cast<int32_t>(r.class_values()) && !r.value_visible(first_visible)) ++first_visible;
     // Sample slices behind, current and ahead of the one being shaded.
@@ -183,8 +185,8 @@ class Band {
     interp_.slice(zdiff_lo_, zdiff_hi_, c, zdiff_, b.first, b.second, spans_.data());
   }
 
-  const Frame& f_;
-  const Registers& r_;
+  const Frame<R>& f_;
+  const R& r_;
   int nx_, ny_, K_, reach_, iy_last_, v0_, v1_;
   bool tagged_, voxel_z_;
   std::array<Plane, 4> zvox_;  // voxel slices z_voxel - 1 .. z_voxel + 2
@@ -199,7 +201,7 @@ class Band {
   std::vector<Span> spans_;
   int loaded_z_ = -1;
   uint64_t shaded_ = 0;
-  GradientShadingCache shading_;
+  BasicGradientShadingCache<R> shading_;
 };
 
 // Bands of base-plane rows with about equal work: a beam costs its
@@ -229,9 +231,11 @@ std::vector<int> band_edges(const Registers& r, const SkipMap& skip, int bands) 
 
 int default_threads() { return std::max(1, static_cast<int>(std::thread::hardware_concurrency())); }
 
-BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions& opt) {
-  check_dda(r);
-  if (r.perspective) return render_perspective(vol, r, opt);
+namespace {
+
+// The parallel-projection frame with registers of type R.
+template <class R>
+BasePlane render_parallel(const Volume& vol, const R& r, const FixedOptions& opt) {
   BasePlane bp = empty_base_plane(r);
   if (opt.accumulators) bp.acc.assign(static_cast<size_t>(bp.width) * bp.height, RayAcc{});
   const bool may_skip = r.blend == BlendMode::Composite && opt.probe == nullptr;
@@ -244,9 +248,9 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions
   const SkipMap skip(r, ranges);
   // Without accumulators asked for, only the base plane's pixels must be exact.
   const RayStop stop = !may_skip ? RayStop::never : opt.accumulators ? RayStop::full_alpha : RayStop::settled_pixel;
-  SliceCompositor compositor(r, bp, opt.polygons, stop);
+  BasicSliceCompositor<R> compositor(r, bp, opt.polygons, stop);
   const std::unique_ptr<FacePositionTable> faces = make_face_table(r);
-  const Frame frame{r, PermutedVolume(vol, r.perm, r.flip), skip, compositor, faces.get(), opt.probe, may_skip};
+  const Frame<R> frame{r, PermutedVolume(vol, r.perm, r.flip), skip, compositor, faces.get(), opt.probe, may_skip};
   const int threads = opt.probe ? 1 : std::clamp(opt.threads > 0 ? opt.threads : default_threads(), 1,
                                                  std::max(1, bp.height));
   const std::vector<int> edges = threads == 1 ? std::vector<int>{0, bp.height} : band_edges(r, skip, threads);
@@ -255,7 +259,7 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions
   std::vector<uint64_t> shaded(edges.size() - 1, 0);
   auto run_band = [&](size_t b, const Progress* progress) {
     try {
-      Band band(frame, edges[b], edges[b + 1]);
+      Band<R> band(frame, edges[b], edges[b + 1]);
       band.run(progress);
       shaded[b] = band.shaded();
     } catch (...) {
@@ -275,6 +279,18 @@ BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions
     for (uint64_t n : shaded) opt.stats->shaded += n;
   }
   return bp;
+}
+
+}  // namespace
+
+BasePlane render_fixed(const Volume& vol, const Registers& r, const FixedOptions& opt) {
+  check_dda(r);
+  if (r.perspective) return render_perspective(vol, r, opt);
+  // Most frames run at the default widths: their loops with the widths as
+  // constants (about a fifth fewer instructions, docs/performance.md).
+  if (opt.constant_widths && DefaultPrecisionRegisters::has_default_precision(r))
+    return render_parallel(vol, DefaultPrecisionRegisters(r), opt);
+  return render_parallel(vol, r, opt);
 }
 
 BasePlane render_fixed(const Volume& vol, const Registers& r, RenderStats* stats, const Progress& progress,

@@ -100,6 +100,10 @@ struct FixedOptions {
   const BlockRanges* ranges = nullptr;
   // Keep every ray's accumulator in BasePlane::acc.
   bool accumulators = false;
+  // At the default precision, run the loops instantiated with the widths as
+  // compile-time constants (DefaultPrecisionRegisters); false runs the
+  // run-time-width loops, which give the same bits (tested), a little slower.
+  bool constant_widths = true;
   // The frame's polygon images (Cube-5; golden/polygons.hpp), or none. This
   // one changes the base plane: it is hardware input, like the registers.
   const PolygonFrame* polygons = nullptr;

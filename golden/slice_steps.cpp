@@ -89,7 +89,8 @@ void SliceInterp::tags(const Plane& lo, const Plane& hi, const SliceControl& c, 
   }
 }
 
-void SliceCompositor::start_polygons() {
+template <class R>
+void BasicSliceCompositor<R>::start_polygons() {
   const size_t n = rays_.size();
   if (poly_->width != width_ || poly_->height != r_.base_height() || poly_->front.size() != n ||
       poly_->back.size() != n || poly_->z.size() != n || poly_->slabs.size() != static_cast<size_t>(K_) ||
@@ -113,7 +114,8 @@ void SliceCompositor::start_polygons() {
   }
 }
 
-void SliceCompositor::composite_slab(const SliceControl& c, int y, RayAcc* ray) {
+template <class R>
+void BasicSliceCompositor<R>::composite_slab(const SliceControl& c, int y, RayAcc* ray) {
   const SlabImage& slab = poly_->slabs[static_cast<size_t>(c.k)];
   if (slab.empty()) return;
   // A blank slab pixel leaves its ray as it is (ray_over_pixel): only the
@@ -132,6 +134,9 @@ void SliceCompositor::composite_slab(const SliceControl& c, int y, RayAcc* ray) 
     if (stopped && stop_.can_stop(acc)) stopped[u >> 6] |= uint64_t{1} << (u & 63);
   });
 }
+
+template class BasicSliceCompositor<Registers>;
+template class BasicSliceCompositor<DefaultPrecisionRegisters>;
 
 BasePlane empty_base_plane(const Registers& r) {
   BasePlane bp;

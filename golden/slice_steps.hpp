@@ -75,17 +75,21 @@ class SliceInterp {
 
 // The 12-neighbourhood of sample (x, y) of slice c.k from the sample slices
 // behind, current and ahead (borders of at least 1).
-inline void gather_neighbourhood(const Plane& behind, const Plane& current, const Plane& ahead,
-                                 const SliceControl& c, int x, int y, Neighbourhood& n) {
+[[gnu::always_inline]] inline void gather_neighbourhood(const Plane& behind, const Plane& current, const Plane& ahead,
+                                                         const SliceControl& c, int x, int y, Neighbourhood& n) {
+  // Row pointers: one address computation a plane instead of one a voxel.
+  // Always inlined, as the renderer's sample loop grew past GCC's budget.
   auto gather_2x2 = [x, y](const Plane& s, const Realign& rx, const Realign& ry, std::array<uint32_t, 4>& out) {
-    const int bx = x + rx.base, by = y + ry.base;
-    out = {s.at(bx, by), s.at(bx + 1, by), s.at(bx, by + 1), s.at(bx + 1, by + 1)};
+    const int32_t* a = s.row(y + ry.base) + x + rx.base;
+    out = {static_cast<uint32_t>(a[0]), static_cast<uint32_t>(a[1]), static_cast<uint32_t>(a[s.pitch]),
+           static_cast<uint32_t>(a[s.pitch + 1])};
   };
-  n.centre = current.at(x, y);
-  n.left = current.at(x - 1, y);
-  n.right = current.at(x + 1, y);
-  n.up = current.at(x, y - 1);
-  n.down = current.at(x, y + 1);
+  const int32_t* row = current.row(y) + x;
+  n.centre = static_cast<uint32_t>(row[0]);
+  n.left = static_cast<uint32_t>(row[-1]);
+  n.right = static_cast<uint32_t>(row[1]);
+  n.up = static_cast<uint32_t>(row[-current.pitch]);
+  n.down = static_cast<uint32_t>(row[current.pitch]);
   gather_2x2(behind, c.behind_x, c.behind_y, n.behind);
   gather_2x2(ahead, c.ahead_x, c.ahead_y, n.ahead);
 }
@@ -153,10 +157,12 @@ inline void write_rays(BasePlane& bp, const std::vector<RayAcc>& rays, const Pre
 //   can change the pixel, though it could still change the accumulator.
 enum class RayStop { never, full_alpha, settled_pixel };
 
-// RayStop's test on one ray, for every renderer that keeps rays.
-class RayStopRule {
+// RayStop's test on one ray, for every renderer that keeps rays. R: the
+// registers' type; with DefaultPrecisionRegisters the widths are constants.
+template <class R = Registers>
+class BasicRayStopRule {
  public:
-  RayStopRule(RayStop stop, BlendMode blend, const Precision& p)
+  BasicRayStopRule(RayStop stop, BlendMode blend, const Precision& p)
       : p_(p), stop_(blend == BlendMode::Composite ? stop : RayStop::never),
         full_(static_cast<uint32_t>(max_unsigned(acc_bits(p)))), settled_t_(settled_transparency()) {}
   bool active() const { return stop_ != RayStop::never; }
@@ -165,7 +171,7 @@ class RayStopRule {
     const uint32_t t = full_ - a.a;
     if (t > settled_t_) return false;  // α's own pixel can still change
     auto settled = [&](uint32_t v) {
-      return acc_to_pixel(v, p_) == acc_to_pixel(v < full_ - t ? v + t : full_, p_);
+      return acc_to_pixel(v, precision()) == acc_to_pixel(v < full_ - t ? v + t : full_, precision());
     };
     return settled(a.r) && settled(a.g) && settled(a.b);
   }
@@ -175,23 +181,31 @@ class RayStopRule {
   // with full_alpha): acc_to_pixel() is monotonic, so a binary search.
   uint32_t settled_transparency() const {
     if (stop_ != RayStop::settled_pixel) return 0;
-    const uint32_t top = acc_to_pixel(full_, p_);
+    const uint32_t top = acc_to_pixel(full_, precision());
     uint32_t lo = 0, hi = full_;  // acc_to_pixel(full_ - lo) == top, acc_to_pixel(full_ - hi) < top
     while (hi - lo > 1) {
       const uint32_t mid = lo + (hi - lo) / 2;
-      (acc_to_pixel(full_ - mid, p_) == top ? lo : hi) = mid;
+      (acc_to_pixel(full_ - mid, precision()) == top ? lo : hi) = mid;
     }
     return lo;
+  }
+  const Precision& precision() const {
+    if constexpr (std::is_same_v<R, Registers>) return p_;
+    else return R::p;
   }
   Precision p_;
   RayStop stop_;
   uint32_t full_, settled_t_;
 };
+using RayStopRule = BasicRayStopRule<Registers>;
 
-class SliceCompositor {
+// R: the registers' type (Registers, or DefaultPrecisionRegisters for widths
+// known at compile time).
+template <class R = Registers>
+class BasicSliceCompositor {
  public:
   // `bp` as empty_base_plane() makes it: pixels no ray reaches stay 0.
-  SliceCompositor(const Registers& r, BasePlane& bp, const PolygonFrame* polygons = nullptr,
+  BasicSliceCompositor(const R& r, BasePlane& bp, const PolygonFrame* polygons = nullptr,
                   RayStop stop = RayStop::never)
       : r_(r), bp_(bp), nx_(r.dim[0]), ny_(r.dim[1]), K_(r.sample_slices()),
         ix_last_(r.base_origin_x()), iy_last_(r.base_origin_y()), width_(r.base_width()),
@@ -288,15 +302,18 @@ class SliceCompositor {
     if (words_ > 0 && stop_.can_stop(rays_[static_cast<size_t>(v) * width_ + u]))
       stopped_[static_cast<size_t>(v) * words_ + (u >> 6)] |= uint64_t{1} << (u & 63);
   }
-  const Registers& r_;
+  const R& r_;
   BasePlane& bp_;
   int nx_, ny_, K_, ix_last_, iy_last_, width_;
-  RayStopRule stop_;
+  BasicRayStopRule<R> stop_;
   int words_;
   std::vector<RayAcc> rays_;
   std::vector<uint64_t> stopped_;  // words_ per base-plane row, bit u: ray u is stopped
   const PolygonFrame* poly_;
 };
+using SliceCompositor = BasicSliceCompositor<Registers>;
+extern template class BasicSliceCompositor<Registers>;
+extern template class BasicSliceCompositor<DefaultPrecisionRegisters>;
 
 // An empty base plane of the frame's size, with the warp's shift.
 BasePlane empty_base_plane(const Registers& r);

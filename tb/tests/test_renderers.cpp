@@ -189,6 +189,49 @@ TEST(RenderFixed, SkippingSamplesThatCannotChangeTheRayIsExact) {
   }
 }
 
+TEST(RenderFixed, ConstantWidthLoopsGiveTheRunTimeWidthLoopsBits) {
+  // At the default precision render_fixed() runs its loops instantiated
+  // with the widths as constants (DefaultPrecisionRegisters): the same unit
+  // functions, so every accumulator must be equal, with every effect the
+  // compositor and shading unit have, on one thread and on three.
+  for (const std::string& extra :
+       {std::string(), std::string(R"(, "gradient_modulation": {"opacity": true, "diffuse": true, "specular": true})"),
+        std::string(R"(, "cut_plane": {"normal": [1, 1, 0], "dmin": 14, "dmax": 20, "falloff": 2})"),
+        std::string(R"(, "cropping": {"x": [6, 17], "y": [6, 17], "z": [6, 17], "combine": "cross", "invert": true})"),
+        std::string(R"(, "blend": "mip")")}) {
+    const auto s = test::setup(sphere_scene(direction(0.4, -0.3, 1), extra, 20));
+    ASSERT_TRUE(golden::DefaultPrecisionRegisters::has_default_precision(s.host.regs));
+    for (int threads : {1, 3}) {
+      golden::FixedOptions constant, run_time;
+      constant.accumulators = run_time.accumulators = true;
+      constant.threads = run_time.threads = threads;
+      run_time.constant_widths = false;
+      const golden::BasePlane a = golden::render_fixed(s.volume, s.host.regs, constant);
+      const golden::BasePlane b = golden::render_fixed(s.volume, s.host.regs, run_time);
+      EXPECT_EQ(a.rgba, b.rgba) << extra << " threads " << threads;
+      ASSERT_EQ(a.acc.size(), b.acc.size());
+      size_t differ = 0;
+      for (size_t i = 0; i < a.acc.size(); ++i)
+        differ += a.acc[i].r != b.acc[i].r || a.acc[i].g != b.acc[i].g || a.acc[i].b != b.acc[i].b ||
+                  a.acc[i].a != b.acc[i].a || a.acc[i].value != b.acc[i].value;
+      EXPECT_EQ(differ, 0u) << extra << " threads " << threads;
+      EXPECT_GT(alpha_sum(a), 0) << extra;
+    }
+  }
+  // Another precision cannot take the constant loops.
+  const auto v = test::setup(sphere_scene(direction(0.4, -0.3, 1), R"(, "precision": {"alpha_bits": 12})", 12));
+  EXPECT_FALSE(golden::DefaultPrecisionRegisters::has_default_precision(v.host.regs));
+  EXPECT_THROW(golden::DefaultPrecisionRegisters{v.host.regs}, std::logic_error);
+}
+
+TEST(RenderFixed, ConstantWidthLoopsOnBrainsmallGiveTheRunTimeWidthLoopsImage) {
+  const auto s = test::setup_file(std::string(CUBE4_SOURCE_DIR) + "/scenes/default.json");
+  golden::FixedOptions run_time;
+  run_time.constant_widths = false;
+  EXPECT_EQ(golden::render_fixed(s.volume, s.host.regs, golden::FixedOptions{}).rgba,
+            golden::render_fixed(s.volume, s.host.regs, run_time).rgba);
+}
+
 namespace {
 // Recomputes every shaded sample from its value and gradient with the plain
 // unit functions: the renderer takes the gradient's part of the shading

@@ -38,7 +38,9 @@
 using sc_core::sc_time_stamp;
 #include "systemc/core/trace_window.hpp"
 #include "systemc/rtl/rtl_factory.hpp"
+#if CUBE4_TEST_RTL  // verilated.h is on the include path only in a build with RTL
 #include "systemc/rtl/vl_context.hpp"
+#endif
 
 namespace {
 
