@@ -82,8 +82,10 @@ echo "perf_golden: float..." >&2
 echo "perf_golden: reference..." >&2
 "${pin[@]}" "$bin/bench_golden" --model reference --frames 3 --warmup 1 > "$tmp/reference.json"
 
-python3 - "$tmp" "$(uname -m)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" \
-  "$frames" "$(nproc)" "$rounds" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" golden-speed
+# The section is made whole before the document is touched: a failure
+# leaves docs/performance.md as it was.
+section=$(python3 - "$tmp" "$(uname -m)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" \
+  "$frames" "$(nproc)" "$rounds" <<'PY'
 import json, statistics, sys, datetime
 tmp, arch, cpu, frames, cores, rounds = sys.argv[1:7]
 def load(name):
@@ -92,7 +94,7 @@ def load(name):
         obj, at = json.JSONDecoder().raw_decode(text, len(text) - len(text[at:].lstrip()))
         runs.append(obj)
     r = dict(runs[0])
-    for key in [k for k in r if k.endswith("ms")]:
+    for key in [k for k in r if k.endswith("ms") and isinstance(r[k], dict)]:  # not volume_load_ms
         r[key] = {"median": statistics.median(x[key]["median"] for x in runs), "min": min(x[key]["min"] for x in runs)}
     if "samples_per_frame" in r:
         r["samples_per_second"] = r["samples_per_frame"] / (r["ms"]["median"] * 1e-3)
@@ -141,4 +143,6 @@ for label, one, alln, n, cls, vt in ratios:
           + (f"; fixed-point golden / VTK **{vt:.2f}×**, one thread each" if vt else "; VTK not measured (no vtk_bench or xvfb-run)")
           + f"; VolPack's classified path with its pre-processing takes **{cls:.2f}×** the one-thread golden frame.")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" golden-speed
 echo "perf_golden: docs/performance.md updated" >&2
