@@ -112,8 +112,13 @@ module cube4_shade_cube_coord #(
     logic [2:0]         face_q;
     logic               far_u_q, far_v_q, nonzero_q;
 
+    // Each step: one subtractor whose borrow is the quotient bit, and a
+    // select keeping the difference if it did not borrow (as cube4_udiv:
+    // no compare-then-subtract if, which Verilator made a branch on the data).
     always_comb begin : divide
       logic [NumBits-1:0] step_divisor;
+      logic [NumBits:0]   diff_u, diff_v;
+      logic               fits_u, fits_v;
       rem_u_d = rem_u_q;
       rem_v_d = rem_v_q;
       quo_u_d = quo_u_q;
@@ -123,14 +128,14 @@ module cube4_shade_cube_coord #(
         if (k * DivBitsPerStage + j < QuoBits) begin
           // 2m << bit
           step_divisor = NumBits'(major_q) << (QuoBits - k * DivBitsPerStage - j);
-          if (rem_u_d >= step_divisor) begin
-            rem_u_d = rem_u_d - step_divisor;
-            quo_u_d[QuoBits - 1 - k * DivBitsPerStage - j] = 1'b1;
-          end
-          if (rem_v_d >= step_divisor) begin
-            rem_v_d = rem_v_d - step_divisor;
-            quo_v_d[QuoBits - 1 - k * DivBitsPerStage - j] = 1'b1;
-          end
+          diff_u  = {1'b0, rem_u_d} - {1'b0, step_divisor};
+          diff_v  = {1'b0, rem_v_d} - {1'b0, step_divisor};
+          fits_u  = !diff_u[NumBits];
+          fits_v  = !diff_v[NumBits];
+          rem_u_d = fits_u ? diff_u[NumBits-1:0] : rem_u_d;
+          rem_v_d = fits_v ? diff_v[NumBits-1:0] : rem_v_d;
+          quo_u_d[QuoBits - 1 - k * DivBitsPerStage - j] = fits_u;
+          quo_v_d[QuoBits - 1 - k * DivBitsPerStage - j] = fits_v;
         end
       end
     end

@@ -3,8 +3,8 @@
 // Function: quotient_o = dividend_i / divisor_i and remainder_o =
 // dividend_i % divisor_i, truncating, exactly C++ unsigned integer division.
 // One restoring step per dividend bit, most significant first: shift the
-// next dividend bit into the partial remainder, subtract the divisor if it
-// fits and set that quotient bit. A zero divisor (undefined in C++) gives an
+// next dividend bit into the partial remainder, subtract the divisor, and
+// keep the difference and set that quotient bit if it did not borrow. A zero divisor (undefined in C++) gives an
 // all-ones quotient and a don't-care remainder; it never produces X.
 //
 // Latency: 0 (combinational), DividendBits subtract-and-select steps deep.
@@ -27,15 +27,24 @@ module cube4_udiv #(
   // DivisorBits + 1 bits hold it after the shift.
   logic [DivisorBits:0] rem;
 
+  // Each step is one subtractor, whose borrow is the quotient bit, and a
+  // multiplexer keeping the difference when it did not borrow. Written as
+  // a select rather than an if (rem >= divisor) with a second subtraction:
+  // verilated, that if became a branch on the data, which the host
+  // mispredicts about every other step, and it was most of the verilated
+  // shading unit's time (docs/performance.md, "The dividers' branches").
+  logic [DivisorBits+1:0] diff;
+  logic                   fits;
+
   always_comb begin
     rem        = '0;
     quotient_o = '0;
     for (int i = DividendBits - 1; i >= 0; i--) begin
-      rem = {rem[DivisorBits-1:0], dividend_i[i]};
-      if (rem >= {1'b0, divisor_i}) begin
-        rem           = rem - {1'b0, divisor_i};
-        quotient_o[i] = 1'b1;
-      end
+      rem           = {rem[DivisorBits-1:0], dividend_i[i]};
+      diff          = {1'b0, rem} - {2'b0, divisor_i};
+      fits          = !diff[DivisorBits+1];
+      rem           = fits ? diff[DivisorBits:0] : rem;
+      quotient_o[i] = fits;
     end
     remainder_o = rem[DivisorBits-1:0];
   end

@@ -15,20 +15,15 @@ cycles=${1:-20000}
 command -v verilator >/dev/null || "$here/scripts/setup.sh" --packages-only >/dev/null
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-r=$here/rtl
-src=("$r/cube4_pkg.sv" "$r/cube4_udiv.sv" "$r/cube4_lerp.sv" "$r/cube4_mul_frac.sv" "$r/cube4_pipe_delay.sv" "$r/cube4_shade_magnitude.sv"
-     "$r/cube4_shade_classify.sv" "$r/cube4_shade_cube_coord.sv" "$r/cube4_shade_reflection.sv"
-     "$r/cube4_shade_reflectance.sv" "$r/cube4_shade_phong.sv" "$r/cube4_shade.sv" "$r/cube4_shade_unit.sv")
 declare -A opts=(
-  [system]="--x-assign unique --x-initial unique"
+  [system]=""
   [x_fast]="--x-assign fast --x-initial fast"
-  [threads2]="--x-assign unique --x-initial unique --threads 2"
+  [threads2]="--threads 2"
 )
 for v in system x_fast threads2; do
-  echo "perf_verilator_threads: verilating ($v: ${opts[$v]})..." >&2
+  echo "perf_verilator_threads: verilating ($v: ${opts[$v]:-as the system})..." >&2
   # shellcheck disable=SC2086
-  verilator --cc --exe --build -j 2 -O3 ${opts[$v]} -Wall -Wno-fatal -I"$r" --top cube4_shade_unit --prefix Vshade \
-    -Mdir "$tmp/$v" "${src[@]}" "$here/tb/bench/verilator_threads_bench.cpp" -CFLAGS -O2 >"$tmp/$v.log" 2>&1
+  "$here/scripts/verilate_shade_bench.sh" "$here/rtl" "$tmp/$v" ${opts[$v]}
 done
 python3 - "$tmp" "$cycles" "$(nproc)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | \
   python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" verilator-options

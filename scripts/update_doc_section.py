@@ -17,6 +17,10 @@ def main():
     path, name = args
     begin, end = f"<!-- BEGIN {name} -->", f"<!-- END {name} -->"
     body = sys.stdin.read().rstrip("\n")
+    if not body.strip():
+        # A producer that failed before printing anything must not blank
+        # the section it owns.
+        sys.exit(f"update_doc_section.py: nothing on standard input for {name}; {path} left as it was")
     try:
         text = open(path).read()
     except FileNotFoundError:
