@@ -246,9 +246,12 @@ class BasicSliceCompositor {
           x += __builtin_ctzll(live);
           if (x >= span.end) break;
           if ((z && !sample_before_z(c.k, z[x])) || !shade(x, y, ray[x], s)) continue;
-          ray[x] = blend_front_to_back(ray[x], s, r_.p);
+          // The stop test reads the blended ray from registers: reading it
+          // back from the store just made stalled on store forwarding.
+          const RayAcc blended = blend_front_to_back(ray[x], s, r_.p);
+          ray[x] = blended;
           const int u = x + shift;
-          if (stop_.can_stop(ray[x])) stopped[u >> 6] |= uint64_t{1} << (u & 63);
+          if (stop_.can_stop(blended)) stopped[u >> 6] |= uint64_t{1} << (u & 63);
         }
       } else if (!poly_) {
         for (int x = span.begin; x < span.end; ++x)
