@@ -31,7 +31,7 @@ module cube4_udiv #(
   // multiplexer keeping the difference when it did not borrow. Written as
   // a select rather than an if (rem >= divisor) with a second subtraction:
   // verilated, that if became a branch on the data, which the host
-  // mispredicts about every other step, and it was most of the verilated
+  // mispredicts about every other step: about a tenth of the verilated
   // shading unit's time (docs/performance.md, "The dividers' branches").
   logic [DivisorBits+1:0] diff;
   logic                   fits;
