@@ -25,7 +25,7 @@ echo "perf_shade_unit: verilating $rev's and this tree's cube4_shade_unit..." >&
 "$here/scripts/verilate_shade_bench.sh" "$here/rtl" "$tmp/new"
 pin=()
 command -v taskset >/dev/null && pin=(taskset -c "$(( $(nproc) - 1 ))")
-for round in $(seq "$rounds"); do
+for _ in $(seq "$rounds"); do
   "${pin[@]}" "$tmp/old/Vshade" 4 "$cycles" >> "$tmp/old.json"
   "${pin[@]}" "$tmp/new/Vshade" 4 "$cycles" >> "$tmp/new.json"
 done
