@@ -3,6 +3,7 @@
 // golden/render_fixed.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -168,4 +169,25 @@ TEST(EmptySpace, EveryThreadCountGivesTheSameImage) {
         EXPECT_EQ(render(scenes[i], threads, skip).rgba, one.rgba)
             << "scene " << i << ", " << threads << " threads, skipping " << skip;
   }
+}
+
+TEST(EmptySpace, BlockRangesGivenOnceAreTheOnesUsed) {
+  // A caller rendering many frames of one volume builds its ranges once
+  // (FixedOptions::ranges, as `cube4 render --repeat` and bench_golden
+  // --ranges volume do): the same image as ranges built inside the frame.
+  const auto s = test::setup(brainsmall(R"("view": {"rotate": [20, 60, 180]})"));
+  const golden::BlockRanges once = golden::block_ranges(s.volume);
+  golden::FixedOptions o;
+  o.threads = 1;
+  o.ranges = &once;
+  const golden::BasePlane given = golden::render_fixed(s.volume, s.host.regs, o);
+  EXPECT_GT(alpha_sum(given), 0);
+  EXPECT_EQ(given.rgba, render(s, 1, true).rgba);
+  // And they are used, not rebuilt: a volume of zeros of the same size has
+  // no block that can change a ray, so its ranges skip everything.
+  golden::Volume zeros = s.volume;
+  std::fill(zeros.data.begin(), zeros.data.end(), uint16_t{0});
+  const golden::BlockRanges empty = golden::block_ranges(zeros);
+  o.ranges = &empty;
+  EXPECT_EQ(alpha_sum(golden::render_fixed(s.volume, s.host.regs, o)), 0);
 }
