@@ -36,7 +36,7 @@ for scene in default sphere; do
     done
   done
 done
-python3 - "$results" "$step" "$frames" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" accuracy-time
+section=$(python3 - "$results" "$step" "$frames" <<'PY'
 import sys, datetime
 rows = [l.split() for l in open(sys.argv[1])]
 step, frames = sys.argv[2], sys.argv[3]
@@ -55,4 +55,6 @@ for scene in ("default", "sphere"):
         print(f"| {r[1]} | {r[2]} | {r[3]} | {r[4]} | {r[5]} | {r[6]} |")
     print()
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" accuracy-time
 echo "accuracy: docs/accuracy.md updated" >&2

@@ -72,7 +72,7 @@ mkdir -p "$here/docs/images"
 for v in sphere-40 head-40 head-flyin; do
   oiiotool "$tmp/$v-fixed.exr" --ch R,G,B -d uint8 -o "$here/docs/images/perspective-$v.png"
 done
-"$python" - "$results" "$step" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" perspective
+section=$("$python" - "$results" "$step" <<'PY'
 import sys, datetime
 rows = [l.split() for l in open(sys.argv[1])]
 print(f"Measured {datetime.date.today()} by `scripts/accuracy_perspective.sh`: final 256×256 images (premultiplied "
@@ -98,4 +98,6 @@ for name, title in (("sphere", "volume-sampled sphere 64³ (scenes/perspective_s
         print(f"| {view} | {r[2]} | {r[3]} / {r[4]} / {r[5]} | {r[6]} / {r[7]} / {r[8]} | {r[9]} / {r[10]} / {r[11]} |")
     print()
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" perspective
 echo "accuracy_perspective: docs/accuracy.md and docs/images/perspective-*.png updated" >&2

@@ -78,7 +78,7 @@ print('%g/%g %d' % (r['sigma'], r['distribution_width'], r['extent']) if r else 
     fi
   done
 done
-python3 - "$results" "$step" "$repeats" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" accuracy-splat
+section=$(python3 - "$results" "$step" "$repeats" <<'PY'
 import sys, datetime
 rows = [l.split() for l in open(sys.argv[1])]
 step, repeats = sys.argv[2], sys.argv[3]
@@ -111,4 +111,6 @@ for scene in ("default", "sphere"):
     cells = " | ".join(f"![](images/splat-{scene}-{m}.png)" for m in ("ref", "float", "splat", "splat-narrow", "splat-wide"))
     print(f"| {'brainsmall' if scene == 'default' else 'sphere'} | {cells} |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" accuracy-splat
 echo "accuracy_splat: docs/images/splat-*.png and docs/accuracy.md updated" >&2

@@ -39,7 +39,7 @@ print(sys.argv[3], frames, cycles, "%.1f" % tlm["system"]["image_fps_steady_stat
 PY
   done
 done
-python3 - "$results" "$step" "$repeats" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" accuracy-xy
+section=$(python3 - "$results" "$step" "$repeats" <<'PY'
 import sys, datetime
 rows = [l.split() for l in open(sys.argv[1])]
 step, repeats = sys.argv[2], sys.argv[3]
@@ -61,3 +61,5 @@ for scene in ("default", "sphere"):
         print(f"| {r[1]} | {r[5]} | {r[2]} | {r[3]} | {r[4]} | {int(r[6]):,} | {r[7]} | {r[8]} |")
     print()
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" accuracy-xy

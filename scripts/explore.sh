@@ -38,7 +38,7 @@ for sweep in brainsmall_20 sphere_20 tapeout; do
   cp "$tmp/$sweep/plots/fronts.svg" "$here/docs/images/explore-$sweep.svg"
   cp "$tmp/$sweep/results.json" "$tmp/$sweep.json"
 done
-python3 - "$tmp" "$times" "$jobs" "$(nproc)" "${gates[*]:-}" "$(cut -d' ' -f1 /proc/loadavg)" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/explore.md" explore-fronts
+section=$(python3 - "$tmp" "$times" "$jobs" "$(nproc)" "${gates[*]:-}" "$(cut -d' ' -f1 /proc/loadavg)" <<'PY'
 import json, sys, datetime
 tmp, times, jobs, cores, no_gates, load = sys.argv[1:7]
 t = {}
@@ -78,3 +78,5 @@ for sweep, name in [("brainsmall_20", "brainsmall"), ("sphere_20", "the volume-s
               f"{p['sim_seconds']:.2f} | {fronts} |")
     print()
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/explore.md" explore-fronts

@@ -16,7 +16,7 @@ trap 'rm -rf "$tmp"' EXIT
 for model in float fixed; do
   "$cube4" explore "$here/scenes/explore/rotation_$model.json" --out "$tmp/$model" --no-plots
 done
-python3 - "$tmp" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" sheared-ordinary
+section=$(python3 - "$tmp" <<'PY'
 import json, statistics, sys, datetime
 tmp = sys.argv[1]
 runs = {m: json.load(open(f"{tmp}/{m}/results.json"))["points"] for m in ("float", "fixed")}
@@ -39,3 +39,5 @@ for m in ("float", "fixed"):
           if m == "float" else
           f"| **{m}: over the rotation** | | | **{statistics.mean(means):.3f}** (worst view {max(means):.3f}) | |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" sheared-ordinary

@@ -19,7 +19,7 @@ for f in "$here"/rtl/*.sv; do
   case $n in *_ring) ;; *) units+=("$n") ;; esac
 done
 if [ $# -ge 1 ]; then cp "$1" "$tmp"; else "$here/scripts/gates.sh" "${units[@]}" > "$tmp"; fi
-python3 - "$tmp" "$(yosys -V | head -1)" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/gates.md" gates
+section=$(python3 - "$tmp" "$(yosys -V | head -1)" <<'PY'
 import re, sys, datetime
 table = open(sys.argv[1]).read()
 rows = {}
@@ -58,4 +58,6 @@ print("Not in the total: the address generator (one per chip, `cube4_addr` above
       "units are sized for 256-voxel volumes (MaxDim 256) with p = 4; the vg500 kept its "
       "on-chip storage to 2 Mbit with sectioning (VolumePro §5.4), which is not modelled.")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/gates.md" gates
 echo "gates_doc: docs/gates.md updated" >&2

@@ -30,8 +30,7 @@ echo "perf_block_jobs: $jobs jobs at a time..." >&2
 t2=$(date +%s.%N)
 load2=$(cut -d' ' -f1 /proc/loadavg)
 cmp -s "$tmp/one_bp.png" "$tmp/jobs_bp.png" && same=yes || same=NO
-python3 - "$tmp/one.json" "$t0" "$t1" "$t2" "$n" "$counts" "$jobs" "$same" "$(nproc)" "$load0" "$load2" <<'PY' | \
-  python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" block-jobs
+section=$(python3 - "$tmp/one.json" "$t0" "$t1" "$t2" "$n" "$counts" "$jobs" "$same" "$(nproc)" "$load0" "$load2" <<'PY'
 import json, sys, datetime
 r = json.load(open(sys.argv[1]))
 t0, t1, t2 = map(float, sys.argv[2:5])
@@ -54,4 +53,6 @@ print(f"| one process per block, {jobs} at a time (`scripts/render_blocks.sh -j 
 print()
 print(f"Speed-up {(t1 - t0) / (t2 - t1):.2f}× with {jobs} jobs; the jobs also pay a process start and a volume load each.")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" block-jobs
 [ "$same" = yes ] || { echo "perf_block_jobs: the base planes differ" >&2; exit 1; }

@@ -57,7 +57,7 @@ if [ $quick = 0 ]; then
   run c1024 1024 8 125 4x4x4
 fi
 
-python3 - "$rows" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" blocks-cost
+section=$(python3 - "$rows" <<'PY'
 import math, sys, datetime
 print(f"Generated {datetime.date.today()} by `scripts/perf_blocks.sh`.")
 print()
@@ -97,4 +97,6 @@ for r in (l.split() for l in open(sys.argv[1])):
     print(f"| {name} | {n}³ | {blocks} | {machines} | {p} | {mhz} | {int(mi):,} | {int(ni):,} | {int(fi):,} | "
           f"{int(lat):,} | {fps} | {ms} | {int(stored):,} | {wall} | {gib} |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" blocks-cost
 echo "perf_blocks: docs/performance.md updated" >&2

@@ -14,8 +14,7 @@ build=${CUBE4_BUILD:-$here/build}
 n=${1:-5}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-python3 - "$build/tb/cube4" "$n" "$(nproc)" "$tmp" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | \
-  python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" check-cost
+section=$(python3 - "$build/tb/cube4" "$n" "$(nproc)" "$tmp" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY'
 import json, shutil, statistics, subprocess, sys, datetime
 cube4, n, cores, tmp, cpu = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4], sys.argv[5]
 def frame_ms(check, pin):
@@ -38,4 +37,6 @@ for pin in (False, True):
     a, b = statistics.median(t["--no-check"]), statistics.median(t["--check"])
     print(f"| {'1 (taskset)' if pin else cores} | {a:.0f} | {b:.0f} | {b / a:.2f} |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" check-cost
 echo "perf_check: docs/performance.md updated" >&2

@@ -29,7 +29,7 @@ for s in "${scenes[@]}"; do
     done
   done
 done
-python3 - "$tmp" "$i" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" effect-savings
+section=$(python3 - "$tmp" "$i" <<'PY'
 import json, sys, datetime
 tmp, n = sys.argv[1], int(sys.argv[2])
 runs = {}
@@ -49,4 +49,6 @@ for (scene, model, mode), r in sorted(runs.items()):
     print(f"| `{scene}` | {model} | {s_ms:.0f} ({r['cycles_per_frame']}) | {a_ms:.0f} ({a['cycles_per_frame']}) | "
           f"{100 * (1 - s_ms / a_ms):.0f} % |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" effect-savings
 echo "perf_effects: docs/performance.md updated" >&2

@@ -35,7 +35,7 @@ for scene in perspective_sphere perspective_head perspective_flyin perspective_s
   par=$(time_of "$tmp/$scene-parallel.json" 1 pinned)
   echo "$scene $one $all $par" >> "$results"
 done
-"$python" - "$results" "$repeats" "$cores" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" perspective-speed
+section=$("$python" - "$results" "$repeats" "$cores" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY'
 import sys, datetime
 rows = [l.split() for l in open(sys.argv[1])]
 repeats, cores, cpu = sys.argv[2:5]
@@ -49,4 +49,6 @@ for name, one, many, par in rows:
     one, many, par = float(one), float(many), float(par)
     print(f"| `scenes/{name}.json` | {one:.1f} | {many:.1f} | {one / many:.2f} | {par:.1f} | {one / par:.2f} |")
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" perspective-speed
 echo "perf_perspective: docs/performance.md updated" >&2

@@ -44,8 +44,7 @@ for scene in perspective_sphere perspective_head; do
     measure "$tmp/$scene-parallel.json" parallel "$scene" "$model"
   done
 done
-"$python" - "$results" "$runs" "$(nproc)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | \
-  "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" perspective-clocked-speed
+section=$("$python" - "$results" "$runs" "$(nproc)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY'
 import sys, datetime
 rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1])]
 runs, cores, cpu = sys.argv[2:5]
@@ -60,4 +59,6 @@ for scene, projection, model, cycles, wall, rate, samples in rows:
     print(f"| `scenes/{scene}.json` | {projection} | {model} | {int(cycles):,} | {float(wall):.2f} | {int(rate):,} | "
           f"{int(samples):,} |")
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" perspective-clocked-speed
 echo "perf_perspective_clocked: docs/performance.md updated" >&2

@@ -42,7 +42,7 @@ for scene in brain_probe brain_probe_translucent sphere_box; do
     done
   done
 done
-"$python" - "$results" "$repeats" "$rounds" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" polygon-speed
+section=$("$python" - "$results" "$repeats" "$rounds" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY'
 import sys, datetime, statistics
 rows = [l.split() for l in open(sys.argv[1])]
 repeats, rounds, cpu = sys.argv[2], int(sys.argv[3]), sys.argv[4]
@@ -61,4 +61,6 @@ for scene in dict.fromkeys(r[0] for r in rows):
         w, n = t[(scene, model, k, "with")], t[(scene, model, k, "none")]
         print(f"| `scenes/{scene}.json` | {model} | {w:.2f} | {n:.2f} | {ratio:.2f} | {pairs[0][0]:.2f}–{pairs[-1][0]:.2f} |")
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" polygon-speed
 echo "perf_polygons: docs/performance.md updated" >&2

@@ -50,9 +50,8 @@ print(json.dumps({"ms": r["frame_ms"], "cycles_per_frame": s["cycles_per_frame"]
   frame "$build/tb/cube4" >> "$tmp/new.json"
   frame "$build/tb/cube4" --threads 1 >> "$tmp/one.json"
 done
-python3 - "$tmp" "$rev" "$(git -C "$here" rev-parse --short HEAD)" "$(nproc)" \
-  "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | \
-  python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" rtl-speedup
+section=$(python3 - "$tmp" "$rev" "$(git -C "$here" rev-parse --short HEAD)" "$(nproc)" \
+  "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY'
 import json, statistics, sys, datetime
 tmp, rev, head, cores, cpu = sys.argv[1:6]
 def rows(name):
@@ -71,4 +70,6 @@ print(f"| {head} | 1 | {med(one):.0f} | {one[0]['cycles_per_frame']} | {o / med(
 print(f"| {head} | {new[0].get('threads', 1)} (default) | {med(new):.0f} | {new[0]['cycles_per_frame']} | "
       f"**{o / med(new):.2f}×** |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" rtl-speedup
 echo "perf_rtl_speedup: docs/performance.md updated" >&2

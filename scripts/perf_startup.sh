@@ -17,8 +17,7 @@ oiio=$(ldd "$build/tb/libcube4_image_oiio.so" | awk '/libOpenImageIO\.so/ {print
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 printf '{"volume": {"synthetic": "sphere", "size": [8, 8, 8]}, "output": {"width": 16, "height": 16}}\n' > "$tmp/tiny.json"
-python3 - "$build/tb/cube4" "$here/scenes/sphere.json" "$oiio" "$n" "$(nproc)" "$tmp" <<'PY' | \
-  python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" startup
+section=$(python3 - "$build/tb/cube4" "$here/scenes/sphere.json" "$oiio" "$n" "$(nproc)" "$tmp" <<'PY'
 import os, resource, statistics, subprocess, sys, time, datetime
 cube4, scene, oiio, n, cores, tmp = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5], sys.argv[6]
 commands = {
@@ -48,4 +47,6 @@ for name, cmd in commands.items():
     ratio = statistics.median(x[0] / y[0] for x, y in zip(a, b))
     print(f"| {name} | {med(a, 0) * 1e3:.0f} | {med(a, 1) * 1e3:.0f} | {med(b, 0) * 1e3:.0f} | {med(b, 1) * 1e3:.0f} | {ratio:.3f} |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" startup
 echo "perf_startup: docs/performance.md updated" >&2

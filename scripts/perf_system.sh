@@ -49,7 +49,7 @@ for ((k = 0; k < rounds; k++)); do
   "${pin[@]}" "$bench" --model tlm-cycle --kernel plain --threads 1 --frames "$frames" --warmup 1 > "$tmp/pair$k-plain.json"
   "${pin[@]}" "$bench" --model tlm-cycle --kernel systemc --threads 1 --frames "$frames" --warmup 1 > "$tmp/pair$k-systemc.json"
 done
-python3 - "$tmp" "${#runs[@]}" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" "$rounds" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" system-speed
+section=$(python3 - "$tmp" "${#runs[@]}" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" "$rounds" <<'PY'
 import json, sys, datetime, statistics
 tmp, n, cpu, rounds = sys.argv[1], int(sys.argv[2]), sys.argv[3], int(sys.argv[4])
 rows = [json.load(open(f"{tmp}/{i}.json")) for i in range(n)]
@@ -88,4 +88,6 @@ print(f"- Clocked TLM against golden, paired ({rounds} rounds, each the golden f
 print(f"- RTL level on two threads against one: **{rs/ms('rtl', 'systemc', 2):.2f}×** faster under SystemC, "
       f"{rp/ms('rtl', 'plain', 2):.2f}× on the plain loop.")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" system-speed
 echo "perf_system: docs/performance.md updated" >&2

@@ -30,7 +30,7 @@ for n in "${sizes[@]}"; do
     echo "$n $model $(cat "$tmp/time.txt")" >> "$results"
   done
 done
-"$python" - "$results" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" "$(nproc)" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" tlm-large
+section=$("$python" - "$results" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" "$(nproc)" <<'PY'
 import sys, datetime
 rows = [l.split() for l in open(sys.argv[1])]
 t = {(r[0], r[1]): (float(r[2]), float(r[3]) / 1024) for r in rows}
@@ -44,4 +44,6 @@ for n in dict.fromkeys(r[0] for r in rows):
     (fs, fm), (ts, tm) = t[(n, "fixed")], t[(n, "tlm")]
     print(f"| {n}³ | {fs:.2f} | {fm:,.0f} | {ts:.2f} | {tm:,.0f} | {ts / fs:.2f} | {tm / fm:.2f} |")
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" tlm-large
 echo "perf_tlm_large: docs/performance.md updated" >&2

@@ -25,8 +25,7 @@ for v in system x_fast threads2; do
   # shellcheck disable=SC2086
   "$here/scripts/verilate_shade_bench.sh" "$here/rtl" "$tmp/$v" ${opts[$v]}
 done
-python3 - "$tmp" "$cycles" "$(nproc)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY' | \
-  python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" verilator-options
+section=$(python3 - "$tmp" "$cycles" "$(nproc)" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" <<'PY'
 import json, subprocess, sys, datetime
 tmp, cycles, cores, cpu = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
 def run(v, copies):
@@ -43,4 +42,6 @@ print("|---|---:|---:|")
 for v in ("system", "x_fast", "threads2"):
     print(f"| {names[v]} | {run(v, 1):.2f} | {run(v, 2):.2f} |")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" verilator-options
 echo "perf_verilator_threads: docs/performance.md updated" >&2

@@ -39,7 +39,7 @@ for n in 256 512; do
     > "$tmp/volume$n.json"
   "$build/tb/cube4" render "$tmp/volume$n.json" --model tlm -q -o "$tmp/volume$n.png" --report "$tmp/volume$n.r.json"
 done
-"$python" - "$tmp" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" polygon-traffic
+section=$("$python" - "$tmp" <<'PY'
 import json, sys, datetime
 tmp = sys.argv[1]
 print(f"Measured {datetime.date.today()} by `scripts/polygon_traffic.sh`: each scene's first frame at p = 4, "
@@ -72,8 +72,10 @@ for n, paper in ((256, "30 Hz"), (512, "under 4 Hz")):
     print(f"| {n}³ | {s['cycles_per_frame']:,} | {133e6 / s['cycles_per_frame']:.2f} | "
           f"{s['cycles_steady_state_interval']:,} | {s['fps_steady_state']:.2f} | {paper} |")
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" polygon-traffic
 "$build/tb/bench/cube5_connections" > "$tmp/bars.md"
-"$python" - "$tmp" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" cube5-connections
+section=$("$python" - "$tmp" <<'PY'
 import json, sys, datetime
 tmp = sys.argv[1]
 print(f"Measured {datetime.date.today()} by `scripts/polygon_traffic.sh`, with §6's rates (fill 180 M fragments/s, "
@@ -106,4 +108,6 @@ print("Fig. 16 (256³) and Fig. 17 (512³), four pipelines at 133 MHz: `tb/bench
 print()
 sys.stdout.write(open(f"{tmp}/bars.md").read())
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/performance.md" cube5-connections
 echo "polygon_traffic: docs/performance.md updated" >&2

@@ -31,7 +31,7 @@ while IFS=, read -r n p cyc fps; do
   rows+=("$n,$p,$cyc,$fps,$(run "$n" "$p" 33)")
 done < "$csv"
 vp=$(run 256 4 125)
-python3 - "$vp" "${rows[@]}" <<'PY' | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" table1
+section=$(python3 - "$vp" "${rows[@]}" <<'PY'
 import json, sys
 vp = json.load(open(sys.argv[1]))["system"]
 print("| n³ | p | Cube-4 cycles/frame | Cube-4 fps @ 33 MHz | cube4 cycles/frame (first frame) | ratio | steady-state interval | ratio | cube4 fps @ 33 MHz (steady) | n³/p |")
@@ -48,4 +48,6 @@ print(f"VolumePro configuration (256³, 4 pipelines, 125 MHz): {vp['cycles_per_f
       f"{vp['cycles_steady_state_interval']} between back-to-back frames: {vp['fps_steady_state']:.1f} fps "
       f"({vp['samples_per_cycle']:.2f} samples per cycle; the vg500 is quoted at 30 fps, 500 M samples/s).")
 PY
+)
+printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" table1
 echo "table1: docs/performance.md updated" >&2

@@ -70,7 +70,7 @@ oiiotool "$tmp/forehead-fixed-z4.png" "$tmp/forehead-fixed-vd-z4.png" "$tmp/fore
 
 echo "woodgrain_pictures: the price in cycles (cube4 explore, TLM)..." >&2
 "$cube4" explore "$here/scenes/explore/woodgrain.json" --out "$tmp/explore" -j 1 --no-plots
-"$python" - "$tmp/explore/results.csv" <<'PY' | "$python" "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" woodgrain-price
+section=$("$python" - "$tmp/explore/results.csv" <<'PY'
 import csv, sys, datetime
 rows = list(csv.DictReader(open(sys.argv[1])))
 print(f"Measured {datetime.date.today()} by `scripts/woodgrain_pictures.sh` (`cube4 explore scenes/explore/woodgrain.json`, "
@@ -83,4 +83,6 @@ for r in rows:
     print(f"| {r['z_gradient']} | {r['supersampling']} | {r['xy_supersampling'] or 1} | {float(r['psnr_db']):.2f} | "
           f"{float(r['roi_psnr_db']):.2f} | {int(float(r['cycles_per_image'])):,} | {float(r['fps']):.1f} |")
 PY
+)
+printf '%s\n' "$section" | "$python" "$here/scripts/update_doc_section.py" "$here/docs/accuracy.md" woodgrain-price
 echo "woodgrain_pictures: docs/images/woodgrain-*.png and docs/accuracy.md updated" >&2
