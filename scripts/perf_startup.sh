@@ -7,11 +7,11 @@
 # libcube4_image_oiio.so (tb/image_plugin.hpp) and PNG writing into cube4
 # itself (tb/image_png.hpp). Runs each pair in turn, N pairs, and writes the
 # medians and their ratios into the "startup" section of docs/performance.md.
-#   scripts/perf_startup.sh [N] [build-dir]   (default 20, build)
+#   scripts/perf_startup.sh [N] [build-dir]   (default 20, $CUBE4_BUILD or build)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 n=${1:-20}
-build=${2:-$here/build}
+build=${2:-${CUBE4_BUILD:-$here/build}}
 [ -x "$build/tb/cube4" ] || "$here/scripts/setup.sh" >/dev/null
 oiio=$(ldd "$build/tb/libcube4_image_oiio.so" | awk '/libOpenImageIO\.so/ {print $3; exit}')
 tmp=$(mktemp -d)
