@@ -4,8 +4,9 @@
 // dividend_i % divisor_i, truncating, exactly C++ unsigned integer division.
 // One restoring step per dividend bit, most significant first: shift the
 // next dividend bit into the partial remainder, subtract the divisor, and
-// keep the difference and set that quotient bit if it did not borrow. A zero divisor (undefined in C++) gives an
-// all-ones quotient and a don't-care remainder; it never produces X.
+// keep the difference and set that quotient bit if it did not borrow. A
+// zero divisor (undefined in C++) never borrows: an all-ones quotient and a
+// don't-care remainder; it never produces X.
 //
 // Latency: 0 (combinational), DividendBits subtract-and-select steps deep.
 // Handshake: none (pure function).
