@@ -17,7 +17,7 @@ class RtlGradient final : public GradientIf {
   RtlGradient(const FramePlan& plan, int max_dim, VerilatedContext& ctx, const TraceWindow& trace)
       : p_(plan.p), v_(plan.r.p.voxel_bits), g_(plan.r.p.gradient_bits), tag_bits_(plan.tag_bits()),
         vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), dim_bits_(clog2(max_dim + plan.p)), zdiff_(plan.zdiff),
-        m_(ctx, "gradient", trace, "gradient") {}
+        m_(ctx, "gradient", trace, "gradient", Outputs::Registered) {}
 
   void clock(const SampleBeat& in, GradientBeat& out) override {
     using rtl::get_bits;

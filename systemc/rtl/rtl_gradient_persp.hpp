@@ -38,7 +38,7 @@ class RtlGradientPersp final : public PerspGradientIf {
   RtlGradientPersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), g_(plan.r.p.gradient_bits), tag_bits_(plan.tag_bits()),
         vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), zdiff_(plan.zdiff),
-        m_(ctx, "gradient_persp", trace, "gradient") {
+        m_(ctx, "gradient_persp", trace, "gradient", Outputs::Registered) {
     m_->supersampling_i = static_cast<uint8_t>(plan.r.supersampling);
     // The ring takes one realignment step per neighbour for both axes (as
     // cube4_dda gives it): m_k / m_(k -/+ 1), the same in x and y.

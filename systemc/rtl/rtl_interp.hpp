@@ -19,7 +19,7 @@ class RtlInterp final : public InterpIf {
   RtlInterp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
       : p_(plan.p), v_(plan.r.p.voxel_bits), tag_bits_(plan.tag_bits()),
         vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), zdiff_(plan.zdiff),
-        m_(ctx, "interp", trace, "interp") {}
+        m_(ctx, "interp", trace, "interp", Outputs::Registered) {}
 
   void clock(const VoxelBeat& in, SampleBeat& out) override {
     using rtl::get_bits;

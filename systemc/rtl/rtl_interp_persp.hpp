@@ -28,7 +28,7 @@ class RtlInterpPersp final : public PerspInterpIf {
   RtlInterpPersp(const FramePlan& plan, VerilatedContext& ctx, const TraceWindow& trace)
       : plan_(plan), p_(plan.p), v_(plan.r.p.voxel_bits), tag_bits_(plan.tag_bits()),
         vtag_bits_(plan.r.p.tag_bits > 0 ? kRtlVoxelTagBits : 0), zdiff_(plan.zdiff),
-        m_(ctx, "interp_persp", trace, "interp") {}
+        m_(ctx, "interp_persp", trace, "interp", Outputs::Registered) {}
 
   void clock(const VoxelBeat& in, RaySampleBeat& out) override {
     using rtl::get_bits;

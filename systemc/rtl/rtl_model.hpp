@@ -6,6 +6,19 @@
 // The assertions (rtl/assert/) act on clock edges: an edge after which the
 // context records an error throws RtlAssertionError (the context must not
 // be fatalOnError, or Verilator aborts first; the system's is not).
+//
+// A model whose outputs are all registered (Outputs::Registered) shows the
+// same outputs after the previous rising edge as after this cycle's
+// settling, so without a trace its clock-low evaluation does nothing a
+// reader can see; but Verilator's eval() runs the model's whole
+// input-combinational region every time and finds a rising edge only
+// against the clock of the eval() before. Such a model is therefore
+// evaluated once a cycle: rise() tells the model the clock was low (its
+// previous-clock register, an internal of the verilated code checked
+// against Verilator 5.006's) and evaluates the edge. About a tenth of an
+// RTL frame's time was these clock-low evaluations (docs/performance.md,
+// "One evaluation a cycle"). Other Verilator versions, traced models and
+// models with combinational outputs keep both evaluations.
 #pragma once
 // verilated.h calls sc_time_stamp() unqualified once SystemC is included.
 #include <systemc>
@@ -23,16 +36,29 @@ using sc_core::sc_time_stamp;
 
 namespace cube4::sysc {
 
+// Whether any output of a unit's RTL depends on its inputs within the
+// cycle (then they are read after the clock-low evaluation), or every
+// output comes from registers.
+enum class Outputs { Combinational, Registered };
+
+#if VERILATOR_VERSION_INTEGER == 5006000
+inline constexpr bool kVerilatorClockLowSkippable = true;
+#else
+inline constexpr bool kVerilatorClockLowSkippable = false;
+#endif
+
 template <class M>
 class RtlModel {
  public:
-  RtlModel(VerilatedContext& ctx, const std::string& name, const TraceWindow& trace, const std::string& trace_suffix)
+  RtlModel(VerilatedContext& ctx, const std::string& name, const TraceWindow& trace, const std::string& trace_suffix,
+           Outputs outputs = Outputs::Combinational)
       : ctx_(ctx), name_(name), m_(std::make_unique<M>(&ctx, name.c_str())), window_(trace) {
     if (!trace.file.empty()) {
       fst_ = std::make_unique<VerilatedFstC>();
       m_->trace(fst_.get(), 99);
       fst_->open(trace_file_name(trace.file, trace_suffix).c_str());
     }
+    skip_low_ = kVerilatorClockLowSkippable && outputs == Outputs::Registered && !fst_;
     m_->rst_ni = 0;
     for (int i = 0; i < 2; ++i) setup_edge();
     m_->rst_ni = 1;
@@ -48,11 +74,13 @@ class RtlModel {
   M* operator->() { return m_.get(); }
 
   void settle() {
+    if (skip_low_) return;
     m_->clk_i = 0;
     m_->eval();
     dump(2 * cycle_);
   }
   void rise() {
+    if (skip_low_) clock_was_low();
     m_->clk_i = 1;
     m_->eval();
     dump(2 * cycle_ + 1);
@@ -83,6 +111,13 @@ class RtlModel {
   }
 
  private:
+  // What the clock-low eval() would have left for the edge detection of
+  // the next (Verilator 5.006: the act region's trigger compares clk_i with
+  // the clock it saw last).
+  void clock_was_low() {
+    m_->clk_i = 0;
+    if constexpr (kVerilatorClockLowSkippable) m_->rootp->__Vtrigrprev__TOP__clk_i = 0;
+  }
   void check_assertions(uint64_t cycle) const {
     if (ctx_.gotError()) throw RtlAssertionError(name_, cycle);
   }
@@ -94,6 +129,7 @@ class RtlModel {
   std::unique_ptr<M> m_;
   std::unique_ptr<VerilatedFstC> fst_;
   TraceWindow window_;
+  bool skip_low_ = false;
   uint64_t cycle_ = 0;
 };
 
