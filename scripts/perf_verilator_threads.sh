@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # What Verilator's own options do to the simulation of the shading unit,
 # the system's most expensive RTL (docs/performance.md): cube4_shade_unit
-# verilated as the system verilates it (-O3, --x-assign/--x-initial
+# verilated and compiled as the system does (-O3, --x-assign/--x-initial
 # unique), with --x-assign/--x-initial fast instead, and with --threads 2;
 # four instances in one context (p = 4) clocked from a C++ loop
 # (tb/bench/verilator_threads_bench.cpp), alone and with a second copy of
@@ -31,7 +31,7 @@ tmp, cycles, cores, cpu = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
 def run(v, copies):
     procs = [subprocess.Popen([f"{tmp}/{v}/Vshade", "4", cycles], stdout=subprocess.PIPE, text=True) for _ in range(copies)]
     return max(json.loads(p.communicate()[0])["us_per_unit_cycle"] for p in procs)
-names = {"system": "as the system verilates it (`-O3 --x-assign unique --x-initial unique`)",
+names = {"system": "as the system verilates and compiles it (`-O3 --x-assign unique --x-initial unique`, C++ `-O3`)",
          "x_fast": "`--x-assign fast --x-initial fast`", "threads2": "`--threads 2`"}
 print(f"Measured {datetime.date.today()} by `scripts/perf_verilator_threads.sh {cycles}` on {cpu} ({cores} cores): "
       f"four `cube4_shade_unit`s in one context, {cycles} cycles of random samples and gradients, µs per unit and cycle "

@@ -2,8 +2,11 @@
 # Verilates cube4_shade_unit from the RTL folder RTL with
 # tb/bench/verilator_threads_bench.cpp as its main (four instances in one
 # context, clocked from a C++ loop with random samples and gradients) into
-# OUT/Vshade, as the system verilates the unit (-O3, X unique) plus any
-# further Verilator options given. Shared by perf_verilator_threads.sh and
+# OUT/Vshade, as the system verilates and compiles the unit (Verilator's
+# -O3, X unique; the C++ at -O3 -march=x86-64-v2 -falign-functions=64, as
+# systemc/CMakeLists.txt compiles it: Verilator's own makefile would
+# otherwise compile the model at -Os, about 1.7x slower) plus any further
+# Verilator options given. Shared by perf_verilator_threads.sh and
 # perf_shade_unit.sh.
 #   scripts/verilate_shade_bench.sh RTL OUT [verilator options...]
 set -euo pipefail
@@ -18,4 +21,5 @@ for unit in pkg udiv lerp mul_frac pipe_delay shade_magnitude shade_classify sha
 done
 verilator --cc --exe --build -j 2 -O3 --x-assign unique --x-initial unique "$@" -Wall -Wno-fatal -I"$r" \
   --top cube4_shade_unit --prefix Vshade -Mdir "$out" "${src[@]}" "$here/tb/bench/verilator_threads_bench.cpp" \
-  -CFLAGS -O2 >"$out.log" 2>&1 || { echo "verilate_shade_bench: verilator failed on $r (log: $out.log)" >&2; exit 1; }
+  -CFLAGS "-march=x86-64-v2 -falign-functions=64" -MAKEFLAGS OPT_FAST=-O3 -MAKEFLAGS OPT_SLOW=-O3 -MAKEFLAGS OPT_GLOBAL=-O3 \
+  >"$out.log" 2>&1 || { echo "verilate_shade_bench: verilator failed on $r (log: $out.log)" >&2; exit 1; }
