@@ -15,7 +15,8 @@ class RtlAddr final : public AddrIf {
   static constexpr int kDimBits = kRtlAddrDimBits;
 
   RtlAddr(const FramePlan& plan, const golden::SkewLayout& layout, VerilatedContext& ctx, const TraceWindow& trace)
-      : p_(plan.p), index_bits_(3 * kDimBits + 4 - clog2(plan.p + 1)), m_(ctx, "addr", trace, "addr", Outputs::Registered) {
+      : p_(plan.p), index_bits_(3 * kDimBits + 4 - clog2(plan.p + 1)),
+        m_(ctx, "addr", trace, "addr", Outputs::Registered) {
     for (int a = 0; a < 3; ++a)
       if (layout.n[a] >= (1 << kDimBits))
         throw std::invalid_argument("volume: dimension " + std::to_string(layout.n[a]) +

@@ -27,7 +27,10 @@ class RtlComposite final : public CompositeIf {
   // frames of the view stream back to back (each reads the same slab lines).
   RtlComposite(const FramePlan& plan, PixelMemory& pixels, VerilatedContext& ctx, const TraceWindow& trace,
                const golden::PolygonFrame* polygons = nullptr, int frames = 1)
-      : plan_(plan), pixels_(pixels), m_(ctx, "composite", trace, "composite", polygons ? Outputs::Combinational : Outputs::Registered), poly_(polygons), frames_(frames) {
+      : plan_(plan), pixels_(pixels),
+        // The polygon hardware's outputs depend on its inputs within the cycle.
+        m_(ctx, "composite", trace, "composite", polygons ? Outputs::Combinational : Outputs::Registered),
+        poly_(polygons), frames_(frames) {
     rtl::drive_composite_registers(*m_, plan.r, poly_ != nullptr);
     if (poly_) start_polygons();
   }

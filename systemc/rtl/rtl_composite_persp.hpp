@@ -43,7 +43,9 @@ class RtlCompositePersp final : public PerspCompositor {
         ab_(plan.r.p.alpha_bits + plan.r.p.acc_guard_bits), tag_bits_(plan.tag_bits()), accumulators_(accumulators),
         origin_x_(plan.r.base_origin_x()), origin_y_(plan.r.base_origin_y()),
         per_frame_(golden::perspective_samples(plan.r)), plane_(golden::empty_base_plane(plan.r)),
-        polygon_pixels_(plan, polygons), slab_(std::move(slab)), m_(ctx, "composite_persp", trace, "composite", polygons ? Outputs::Combinational : Outputs::Registered) {
+        polygon_pixels_(plan, polygons), slab_(std::move(slab)),
+        // The polygon hardware's outputs depend on its inputs within the cycle.
+        m_(ctx, "composite_persp", trace, "composite", polygons ? Outputs::Combinational : Outputs::Registered) {
     if (polygons && !slab_) throw std::logic_error("RtlCompositePersp: polygons without a slab decoder");
     rtl::drive_composite_registers(*m_, plan.r);
     m_->poly_enabled_i = polygons != nullptr;

@@ -39,7 +39,8 @@ class RtlShadeUnits {
     for (int k = first; k < this->last; ++k) {
       const std::string name = "shade" + std::to_string(k);
       // Only pipeline 0 is traced: the others run the same control.
-      units_.push_back(std::make_unique<RtlModel<M>>(ctx, name, k == 0 ? trace : TraceWindow{}, name, Outputs::Registered));
+      units_.push_back(
+          std::make_unique<RtlModel<M>>(ctx, name, k == 0 ? trace : TraceWindow{}, name, Outputs::Registered));
       load_tables(*units_.back());
       units_.back()->restart_cycles();
     }
