@@ -69,6 +69,15 @@ print(f"| {rev} | 1 | {o:.0f} | {old[0]['cycles_per_frame']} | 1.00× |")
 print(f"| {head} | 1 | {med(one):.0f} | {one[0]['cycles_per_frame']} | {o / med(one):.2f}× |")
 print(f"| {head} | {new[0].get('threads', 1)} (default) | {med(new):.0f} | {new[0]['cycles_per_frame']} | "
       f"**{o / med(new):.2f}×** |")
+# Round by round: the machine's speed drifts between rounds, alike for
+# both builds within one; the spread says how far one run's figure can move.
+def pairs(rs):
+    return sorted(a["ms"]["median"] / b["ms"]["median"] for a, b in zip(old, rs))
+two, single = pairs(new), pairs(one)
+print()
+print(f"Round by round (the earlier build's frame over this build's of the same round): "
+      f"{statistics.median(two):.2f}× on {new[0].get('threads', 1)} threads ({two[0]:.2f}× to {two[-1]:.2f}×), "
+      f"{statistics.median(single):.2f}× on one ({single[0]:.2f}× to {single[-1]:.2f}×).")
 PY
 )
 printf '%s\n' "$section" | python3 "$here/scripts/update_doc_section.py" "$here/docs/performance.md" rtl-speedup
