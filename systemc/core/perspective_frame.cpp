@@ -259,11 +259,12 @@ uint64_t run_plain(PerspectiveStream& stream) {
   return cycle;
 }
 
-// The SystemC schedule: the former and each unit a process on the
-// machine's clock, registered links between them. SystemC elaborates
-// once, so the top is built with the machine's (clocked_tops.hpp) and each
-// frame plugs its stream in; idle, the processes wait for the next frame
-// instead of waking every cycle.
+// The SystemC schedule: one process on the machine's clock that clocks
+// the former and each unit, registered links between them (as CycleTop,
+// schedules.cpp, says why one). SystemC elaborates once, so the top is
+// built with the machine's (clocked_tops.hpp) and each frame plugs its
+// stream in; idle, the process waits for the next frame instead of waking
+// every cycle.
 SC_MODULE(PerspectiveTop) {
   const EdgeClock& clk_;  // first: the links read its edges
   Link<VoxelBeat> link{"voxels", clk_};
@@ -276,19 +277,7 @@ SC_MODULE(PerspectiveTop) {
   uint64_t cycle = 0;
 
   PerspectiveTop(sc_core::sc_module_name name, const EdgeClock& clk) : sc_core::sc_module(name), clk_(clk) {
-    SC_METHOD(former_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(interp_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(gradient_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(shade_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(composite_step);
+    SC_METHOD(edge);
     sensitive << clk.posedge_event();
     dont_initialize();
   }
@@ -308,7 +297,8 @@ SC_MODULE(PerspectiveTop) {
   }
   void stop() { run = nullptr; }
 
-  // Both processes of an edge see its cycle number, whichever runs first.
+  // A frame's first edge is the wake-up by `go`; each rising edge after it
+  // one more.
   void tick() {
     const sc_core::sc_time now = sc_core::sc_time_stamp();
     if (first_ || now != edge_) ++cycle;
@@ -330,26 +320,19 @@ SC_MODULE(PerspectiveTop) {
       sc_core::sc_pause();
     }
   }
-  void former_step() {
+  // Each unit in turn, from the last to the first; the links keep the
+  // previous edge's beats, so the order changes nothing a unit sees.
+  void edge() {
     guarded([&] {
+      run->composite_edge(cycle, shaded.read());
+      run->shade_edge(gradients.read(), shaded.next());
+      run->gradient_edge(cycle, samples.read(), gradients.next());
+      run->interp_edge(cycle, link.read(), samples.next());
       VoxelBeat& beat = link.next();
       beat = VoxelBeat{};
       run->former_edge(cycle, beat);
-      // The unit still takes this edge's beat (sc_pause() ends the delta).
       if (run->finished()) sc_core::sc_pause();
     });
-  }
-  void interp_step() {
-    guarded([&] { run->interp_edge(cycle, link.read(), samples.next()); });
-  }
-  void gradient_step() {
-    guarded([&] { run->gradient_edge(cycle, samples.read(), gradients.next()); });
-  }
-  void shade_step() {
-    guarded([&] { run->shade_edge(gradients.read(), shaded.next()); });
-  }
-  void composite_step() {
-    guarded([&] { run->composite_edge(cycle, shaded.read()); });
   }
 
  private:

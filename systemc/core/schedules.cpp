@@ -179,10 +179,14 @@ class BackEnd {
 
 bool finished(const FrameUnits& u, const BackEnd* back) { return back ? back->done() : u.done; }
 
-// The clocked top: one process per unit, registered links between them.
-// SystemC elaborates once per process, so the top is built on the first
-// frame and each frame plugs its units in (sc_pause() ends a frame). With
-// two threads the shading and compositing processes only watch the back.
+// The clocked top: registered links between the units, and one process on
+// the clock's rising edge that clocks each unit in turn. The links keep the
+// previous edge's beats, so the order changes nothing a unit sees, and one
+// process a clock instead of one per unit saves the kernel four process
+// activations a cycle (docs/performance.md, "Simulation speed of the
+// system model"). SystemC elaborates once per process, so the top is built
+// on the first frame and each frame plugs its units in (sc_pause() ends a
+// frame). With two threads the edge clocks only the front's units.
 SC_MODULE(CycleTop) {
   EdgeClock clk{"clk", sc_core::sc_time(1, sc_core::SC_NS)};
   Link<VoxelBeat> voxels{"voxels", clk};
@@ -195,19 +199,7 @@ SC_MODULE(CycleTop) {
   std::exception_ptr error;
 
   SC_CTOR(CycleTop) {
-    SC_METHOD(former_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(interp_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(gradient_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(shade_step);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-    SC_METHOD(composite_step);
+    SC_METHOD(edge);
     sensitive << clk.posedge_event();
     dont_initialize();
   }
@@ -244,30 +236,26 @@ SC_MODULE(CycleTop) {
     }
   }
 
-  void former_step() { guarded([&] { voxels.write(former_edge(*u)); }); }
-  void interp_step() { guarded([&] { interp_edge(*u, voxels.read(), samples.next()); }); }
-  void gradient_step() {
+  // From the last unit to the first, as the plain loop runs them.
+  void edge() {
     guarded([&] {
       if (!back) {
+        composite_edge(*u, shaded.read(), u->cycle);
+        if (u->done) {
+          sc_core::sc_pause();
+          return;
+        }
+        shade_edge(*u, gradients.read(), u->cycle, shaded.next());
         gradient_edge(*u, samples.read(), gradients.next());
-        return;
+      } else {
+        back->front_cycle(gradients.read(), [&] {
+          const GradientBeat g = gradient_edge(*u, samples.read());
+          gradients.write(g);
+          return g;
+        });
       }
-      back->front_cycle(gradients.read(), [&] {
-        const GradientBeat g = gradient_edge(*u, samples.read());
-        gradients.write(g);
-        return g;
-      });
-    });
-  }
-  void shade_step() {
-    guarded([&] {
-      if (!back) shade_edge(*u, gradients.read(), u->cycle, shaded.next());
-    });
-  }
-  void composite_step() {
-    guarded([&] {
-      if (!back) composite_edge(*u, shaded.read(), u->cycle);
-      if (finished(*u, back)) sc_core::sc_pause();
+      interp_edge(*u, voxels.read(), samples.next());
+      voxels.write(former_edge(*u));
     });
   }
 };

@@ -1,6 +1,6 @@
 // How a cycle-level frame's units are clocked (run_frame() builds them,
-// system.cpp): on the SystemC kernel (one process per unit, registered
-// links) or on a plain C++ loop over the same units, each either on one
+// system.cpp): on the SystemC kernel (one process a clock edge that clocks
+// every unit, registered links) or on a plain C++ loop over the same units, each either on one
 // thread or split between two. All four give the same cycles, streams and
 // image (the system tests compare them).
 //
