@@ -11,7 +11,8 @@
 #   rtl, SystemC kernel               what `cube4 render --model rtl` runs
 #   mixed:UNIT                        each unit alone at RTL
 #   then golden and tlm-cycle (plain, SystemC) in 5 paired rounds: the
-#   clocked TLM level's ratio to golden, round by round
+#   clocked TLM level's ratio to golden, round by round, and the SystemC
+#   kernel alone for the same cycles (tb/bench/bench_edge_clock.cpp)
 #   scripts/perf_system.sh [frames]   (default 3)
 # CUBE4_BUILD: a build directory already configured (skips the set-up).
 set -euo pipefail
@@ -44,17 +45,19 @@ done
 # and the ratio is taken round by round.
 rounds=5
 for ((k = 0; k < rounds; k++)); do
-  echo "perf_system: paired round $((k + 1)) of $rounds (golden, tlm-cycle plain, tlm-cycle systemc)..." >&2
+  echo "perf_system: paired round $((k + 1)) of $rounds (golden, tlm-cycle plain, tlm-cycle systemc, the clock alone)..." >&2
   "${pin[@]}" "$bench" --model golden --threads 1 --frames $(( frames * 10 )) --warmup 1 > "$tmp/pair$k-golden.json"
   "${pin[@]}" "$bench" --model tlm-cycle --kernel plain --threads 1 --frames "$frames" --warmup 1 > "$tmp/pair$k-plain.json"
   "${pin[@]}" "$bench" --model tlm-cycle --kernel systemc --threads 1 --frames "$frames" --warmup 1 > "$tmp/pair$k-systemc.json"
+  cycles=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["cycles_per_frame"])' "$tmp/pair$k-systemc.json")
+  "${pin[@]}" "$build/tb/bench/bench_edge_clock" --cycles "$cycles" --frames "$frames" --warmup 1 > "$tmp/pair$k-clock.json"
 done
 section=$(python3 - "$tmp" "${#runs[@]}" "$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)" "$rounds" <<'PY'
 import json, sys, datetime, statistics
 tmp, n, cpu, rounds = sys.argv[1], int(sys.argv[2]), sys.argv[3], int(sys.argv[4])
 rows = [json.load(open(f"{tmp}/{i}.json")) for i in range(n)]
 pair = lambda k, which: json.load(open(f"{tmp}/pair{k}-{which}.json"))["ms"]["median"]
-paired = {kern: [pair(k, kern) / pair(k, "golden") for k in range(rounds)] for kern in ("plain", "systemc")}
+paired = {kern: [pair(k, kern) / pair(k, "golden") for k in range(rounds)] for kern in ("plain", "systemc", "clock")}
 by = {(r["model"], r["kernel"], r["threads"]): r for r in rows}
 print(f"Measured {datetime.date.today()} by `scripts/perf_system.sh` on {cpu}, brainsmall "
       f"(128×128×84, default view), p = 4, {rows[0]['cycles_per_frame']} cycles per frame (rtl; clocked TLM units "
@@ -84,7 +87,10 @@ print(f"- Clocked TLM against golden, paired ({rounds} rounds, each the golden f
       f"back on the pinned core; the median ratio and the range of the rounds; target: within 10×): "
       f"**{statistics.median(paired['plain']):.1f}×** on the plain loop ({min(paired['plain']):.1f}–"
       f"{max(paired['plain']):.1f}), **{statistics.median(paired['systemc']):.1f}×** under SystemC "
-      f"({min(paired['systemc']):.1f}–{max(paired['systemc']):.1f}).")
+      f"({min(paired['systemc']):.1f}–{max(paired['systemc']):.1f}). The SystemC kernel alone, its clock and "
+      f"one idle process on it for the clocked frame's cycles (`bench_edge_clock`), takes "
+      f"{statistics.median(paired['clock']):.1f}× golden in the same rounds: what a clocked frame costs under "
+      f"SystemC beyond the plain loop can be no less.")
 print(f"- RTL level on two threads against one: **{rs/ms('rtl', 'systemc', 2):.2f}×** faster under SystemC, "
       f"{rp/ms('rtl', 'plain', 2):.2f}× on the plain loop.")
 PY
