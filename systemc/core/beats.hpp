@@ -118,10 +118,4 @@ struct ShadedBeat {
   std::array<uint16_t, kMaxLanes> red{}, green{}, blue{}, alpha{}, value{};
 };
 
-// Compositing -> pixel memory: at most one pixel per pipeline per clock.
-struct PixelBeat {
-  uint32_t valid = 0;  // bit k: pipeline k's port
-  std::array<uint16_t, kMaxLanes> u{}, v{}, red{}, green{}, blue{}, alpha{};
-};
-
 }  // namespace cube4::sysc

@@ -56,9 +56,9 @@ class RtlComposite final : public CompositeIf {
         consumed_[q] = static_cast<int>(get_bits(m.slab_consume_o, static_cast<int>(q) * 3, 3));
         next_line_[q] = get_bits(m.slab_line_o, static_cast<int>(q), 1) != 0;
       }
-    out.pixels.valid = static_cast<uint32_t>(get_bits(m.pixel_valid_o, 0, p));
-    for (int k = 0; out.pixels.valid >> k; ++k) {
-      if (!(out.pixels.valid >> k & 1)) continue;
+    out.pixel_valid = static_cast<uint32_t>(get_bits(m.pixel_valid_o, 0, p));
+    for (int k = 0; out.pixel_valid >> k; ++k) {
+      if (!(out.pixel_valid >> k & 1)) continue;
       const int u = static_cast<int>(get_bits(m.pixel_u_o, k * kPosBits, kPosBits));
       const int w = static_cast<int>(get_bits(m.pixel_v_o, k * kPosBits, kPosBits));
       pixels_.write(k, u, w, static_cast<uint16_t>(get_bits(m.pixel_red_o, k * a, a)),

@@ -7,7 +7,7 @@ TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels, const gol
 
 void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   // It writes pixel memory directly: its pixel ports stay idle.
-  out.pixels.valid = 0;
+  out.pixel_valid = 0;
   out.frame_done = false;
   if (!in.valid) return;
   for (int k = 0; k < plan_.p; ++k) {
