@@ -17,7 +17,7 @@ void TlmGradient::emit_current(const golden::Plane& ahead) {
   if (current_slice_ == 0) ++frame_;
   for (int y = 0; y < plan_.ny; ++y)
     for (int j = 0; j < plan_.B; ++j) {
-      GradientBeat& b = out_.emplace_back();
+      GradientBeat& b = out_.recycled_back();
       b.valid = true;
       b.f = {j == 0, j == plan_.B - 1, y == 0, y == plan_.ny - 1};
       b.x = j * plan_.p;
@@ -25,8 +25,14 @@ void TlmGradient::emit_current(const golden::Plane& ahead) {
       b.slice = static_cast<uint32_t>(current_slice_);
       for (int k = 0; k < plan_.p; ++k) {
         const int x = j * plan_.p + k;
-        if (x >= plan_.nx) continue;  // padding columns: zero sample, zero gradient
         const auto i = static_cast<size_t>(k);
+        // Padding columns: zero sample, zero gradient; a skipped sample: zero gradient.
+        b.gx[i] = b.gy[i] = b.gz[i] = 0;
+        if (x >= plan_.nx) {
+          b.sample[i] = 0;
+          b.vtag[i] = 0;
+          continue;
+        }
         const uint32_t centre = current_.at(x, y), tag = tags_current_.at(x, y);
         b.sample[i] = static_cast<uint16_t>(centre);
         b.vtag[i] = static_cast<uint8_t>(tag);

@@ -54,17 +54,17 @@ void TlmInterp::end_of_pass(const VoxelBeat& in) {
 void TlmInterp::emit_pass(uint64_t tag) {
   for (int y = 0; y < plan_.ny; ++y)
     for (int j = 0; j < plan_.B; ++j) {
-      SampleBeat& b = out_.emplace_back();
+      SampleBeat& b = out_.recycled_back();
       b.valid = true;
       b.f = {j == 0, j == plan_.B - 1, y == 0, y == plan_.ny - 1};
       b.tag = tag;
       for (int k = 0; k < plan_.p; ++k) {
         const int x = j * plan_.p + k;
-        if (x >= plan_.nx) continue;
         const auto i = static_cast<size_t>(k);
-        b.sample[i] = static_cast<uint16_t>(samples_.at(x, y));
-        if (tagged_) b.vtag[i] = static_cast<uint8_t>(sample_tags_.at(x, y));
-        if (plan_.zdiff) b.zdiff[i] = zdiffs_.row(y)[x];
+        const bool inside = x < plan_.nx;  // padding columns carry zeros
+        b.sample[i] = inside ? static_cast<uint16_t>(samples_.at(x, y)) : 0;
+        if (tagged_) b.vtag[i] = inside ? static_cast<uint8_t>(sample_tags_.at(x, y)) : 0;
+        if (plan_.zdiff) b.zdiff[i] = inside ? zdiffs_.row(y)[x] : 0;
       }
     }
 }
