@@ -1,8 +1,8 @@
 // How a cycle-level frame's units are clocked (run_frame() builds them,
 // system.cpp): on the SystemC kernel (one process a clock edge that clocks
-// every unit, registered links) or on a plain C++ loop over the same units, each either on one
-// thread or split between two. All four give the same cycles, streams and
-// image (the system tests compare them).
+// every unit, registered links) or on a plain C++ loop over the same
+// units, each either on one thread or split between two. All four give the
+// same cycles, streams and image (the system tests compare them).
 //
 // Two threads: the machine's links carry no back-pressure, so the shading
 // and compositing units (the back) can run any number of cycles behind the

@@ -24,8 +24,9 @@
 namespace cube4::sysc {
 
 // Who clocks a cycle-level run: the SystemC kernel (one process on the
-// clock's edge clocking every unit, registered links), or a plain C++ loop over the same units (the speed
-// ceiling for benchmarks; same cycles, same image).
+// clock's edge clocking every unit, registered links), or a plain C++ loop
+// over the same units (the speed ceiling for benchmarks; same cycles, same
+// image).
 enum class Kernel { SystemC, PlainLoop };
 
 struct SystemConfig {
