@@ -127,11 +127,12 @@ struct BeamAccess {
 // rotation and reverse (entries from p on keep what they held, so that a
 // simulator can reuse one BeamAccess a clock instead of clearing 32 lanes).
 // Precondition: 1 <= l.p <= kMaxSkewPipes, position in range.
-constexpr void beam_access_into(BeamAccess& b, const SkewLayout& l, const SkewTraversal& t, int y, int z, int j) {
+// s: skew_strides(l), which a caller clocking many beams works out once.
+constexpr void beam_access_into(BeamAccess& b, const SkewLayout& l, const SkewStrides& s, const SkewTraversal& t,
+                                int y, int z, int j) {
   std::array<int, 3> o{0, 0, 0};
   o[t.perm[1]] = skew_object_coordinate(l, t, 1, y);
   o[t.perm[2]] = skew_object_coordinate(l, t, 2, z);
-  const SkewStrides s = skew_strides(l);
   for (int k = 0; k < l.p; ++k) {
     o[t.perm[0]] = skew_object_coordinate(l, t, 0, j * l.p + k);
     b.lane[k] = skew_address(s, o[0], o[1], o[2]);
@@ -139,6 +140,20 @@ constexpr void beam_access_into(BeamAccess& b, const SkewLayout& l, const SkewTr
   }
   b.rotation = b.lane[0].module;
   b.reverse = t.flip[0];
+}
+constexpr void beam_access_into(BeamAccess& b, const SkewLayout& l, const SkewTraversal& t, int y, int z, int j) {
+  beam_access_into(b, l, skew_strides(l), t, y, z, j);
+}
+// The de-skew: lane k of out gets word[m], m the module pipeline k reads
+// ((rotation +/- k) mod p), stepped lane by lane instead of divided.
+template <class Word>
+constexpr void deskew(const BeamAccess& b, int p, const Word* word, Word* out) {
+  int m = b.rotation;
+  for (int k = 0; k < p; ++k) {
+    out[k] = word[m];
+    if (b.reverse) m = (m == 0 ? p : m) - 1;
+    else m = m + 1 == p ? 0 : m + 1;
+  }
 }
 // The same as a value (lanes from p on zero).
 constexpr BeamAccess beam_access(const SkewLayout& l, const SkewTraversal& t, int y, int z, int j) {

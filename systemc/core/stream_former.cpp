@@ -94,11 +94,7 @@ VoxelBeat StreamFormer::next() {
     // it; the de-skew rotation then hands pipeline k its module's word.
     uint16_t word[golden::kMaxSkewPipes];
     for (int m = 0; m < plan_.p; ++m) word[m] = mem_.read(m, a.access.module_index[static_cast<size_t>(m)]);
-    for (int k = 0; k < plan_.p; ++k) {
-      const int m = a.access.reverse ? ((a.access.rotation - k) % plan_.p + plan_.p) % plan_.p
-                                     : (a.access.rotation + k) % plan_.p;
-      b.voxel[static_cast<size_t>(k)] = word[m];
-    }
+    golden::deskew(a.access, plan_.p, word, b.voxel.data());
   } else if (a.valid) {
     throw std::logic_error("address generation: a partial beam arrived for a beat that reads nothing");
   }

@@ -11,7 +11,8 @@ namespace cube4::sysc {
 
 class TlmAddr final : public AddrIf {
  public:
-  TlmAddr(const golden::SkewLayout& l, const golden::SkewTraversal& t) : layout_(l), traversal_(t) {}
+  TlmAddr(const golden::SkewLayout& l, const golden::SkewTraversal& t)
+      : layout_(l), strides_(golden::skew_strides(l)), traversal_(t) {}
   // An access holds every lane of kMaxSkewPipes (about 800 bytes), so the
   // two registers (the answer of this edge, the access pending for the
   // next) swap roles instead of being copied, and an invalid result's other
@@ -24,7 +25,7 @@ class TlmAddr final : public AddrIf {
       pending.j = j;
       pending.y = y;
       pending.z = z;
-      golden::beam_access_into(pending.access, layout_, traversal_, y, z, j);
+      golden::beam_access_into(pending.access, layout_, strides_, traversal_, y, z, j);
     }
     return slot_[answer_];
   }
@@ -36,6 +37,7 @@ class TlmAddr final : public AddrIf {
 
  private:
   golden::SkewLayout layout_;
+  golden::SkewStrides strides_;
   golden::SkewTraversal traversal_;
   std::array<AddrResult, 2> slot_;
   int answer_ = 0;  // slot_[answer_ ^ 1] is pending
