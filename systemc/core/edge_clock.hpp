@@ -6,7 +6,9 @@
 // of the kernel's work per simulated cycle (docs/performance.md,
 // "Simulation speed of the system model").
 #pragma once
+#include <functional>
 #include <systemc>
+#include <utility>
 
 namespace cube4::sysc {
 
@@ -23,15 +25,23 @@ class EdgeClock : public sc_core::sc_module {
   const sc_core::sc_event& posedge_event() const { return posedge_; }
   // Rising edges so far: the current one's number while its processes run.
   uint64_t edges() const { return edges_; }
+  // Work done at every rising edge inside the clock's own process, before
+  // the processes sensitive to posedge_event() run: the same evaluation
+  // phase, the same links, for one process activation a cycle instead of
+  // two and no event triggered for it (the clocked top's units,
+  // schedules.cpp). One hook; a second replaces the first.
+  void at_each_edge(std::function<void()> work) { work_ = std::move(work); }
 
  private:
   void rise() {
     ++edges_;
+    if (work_) work_();
     posedge_.notify();
     next_trigger(period_);
   }
   sc_core::sc_time period_;
   sc_core::sc_event posedge_;
+  std::function<void()> work_;
   uint64_t edges_ = 0;
 };
 

@@ -198,11 +198,7 @@ SC_MODULE(CycleTop) {
   BackEnd* back = nullptr;
   std::exception_ptr error;
 
-  SC_CTOR(CycleTop) {
-    SC_METHOD(edge);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-  }
+  SC_CTOR(CycleTop) { clk.at_each_edge([this] { edge(); }); }
 
   void start(FrameUnits& units, BackEnd* back_end) {
     u = &units;

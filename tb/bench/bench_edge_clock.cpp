@@ -1,7 +1,7 @@
 // What the SystemC kernel alone costs a clocked frame: the machine's clock
-// (systemc/core/edge_clock.hpp) and one process on its rising edge, as the
-// clocked top has (systemc/core/schedules.cpp), doing nothing else, for the
-// frame's cycles. A clocked frame under SystemC costs at least the plain
+// (systemc/core/edge_clock.hpp) with edge work that does nothing else, as
+// the clocked top gives it (systemc/core/schedules.cpp), for the frame's
+// cycles. A clocked frame under SystemC costs at least the plain
 // loop's time plus this (docs/performance.md, scripts/perf_system.sh).
 //   bench_edge_clock [--cycles N] [--frames F] [--warmup K]
 // Prints one line of JSON: the cycles and the median and smallest time.
@@ -21,11 +21,7 @@ SC_MODULE(IdleTop) {
   cube4::sysc::EdgeClock clk{"clk", sc_core::sc_time(1, sc_core::SC_NS)};
   uint64_t left = 0;
 
-  SC_CTOR(IdleTop) {
-    SC_METHOD(edge);
-    sensitive << clk.posedge_event();
-    dont_initialize();
-  }
+  SC_CTOR(IdleTop) { clk.at_each_edge([this] { edge(); }); }
   void edge() {
     if (left > 0 && --left == 0) sc_core::sc_pause();
   }
