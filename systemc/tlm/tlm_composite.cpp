@@ -1,9 +1,12 @@
 #include "systemc/tlm/tlm_composite.hpp"
 
+#include <algorithm>
+
 namespace cube4::sysc {
 
 TlmComposite::TlmComposite(const FramePlan& plan, PixelMemory& pixels, const golden::PolygonFrame* polygons)
-    : plan_(plan), pixels_(pixels), polygons_(polygons), slice_(static_cast<size_t>(plan.nx) * plan.ny) {}
+    : plan_(plan), pixels_(pixels), polygons_(polygons), slice_(static_cast<size_t>(plan.nx) * plan.ny),
+      changing_(static_cast<size_t>(plan.ny), golden::Span{plan.nx, 0}) {}
 
 void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
   // It writes pixel memory directly: its pixel ports stay idle.
@@ -19,6 +22,11 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
     s.alpha = in.alpha[i];
     s.value = in.value[i];
     s.visible = true;
+    if (golden::blend_changes_ray(plan_.r.blend, s)) {
+      golden::Span& c = changing_[static_cast<size_t>(in.y)];
+      c.begin = std::min(c.begin, x);
+      c.end = std::max(c.end, x + 1);
+    }
   }
   if (!(in.f.slice_end && in.f.beam_end)) return;
   // A frame's compositor starts with its first slice: with polygons it
@@ -37,7 +45,8 @@ void TlmComposite::clock(const ShadedBeat& in, CompositeOut& out) {
     s = golden::crop_and_cut(plan_.r, c, x, y, slice_[static_cast<size_t>(y) * plan_.nx + x]);
     return golden::blend_changes_ray(plan_.r.blend, s);
   };
-  compositor_->slice(c, shade, [](int) { return true; });
+  compositor_->slice(c, shade, [&](int y) { return changing_[static_cast<size_t>(y)]; });
+  std::fill(changing_.begin(), changing_.end(), golden::Span{plan_.nx, 0});
   if (in.slice + 1 == static_cast<uint32_t>(plan_.K)) {
     compositor_->finish();
     out.frame_done = true;

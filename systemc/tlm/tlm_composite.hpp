@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "golden/empty_space.hpp"
 #include "golden/slice_steps.hpp"
 #include "systemc/core/frame_plan.hpp"
 #include "systemc/core/pixel_memory.hpp"
@@ -36,6 +37,11 @@ class TlmComposite final : public CompositeIf {
   std::optional<golden::SliceCompositor> compositor_;  // a new one per frame, from its first slice
   uint64_t frames_ = 0;                                 // frames begun
   std::vector<golden::ShadedSample> slice_;
+  // Per beam of the slice being collected: the samples that may change
+  // their ray (golden::blend_changes_ray before cropping and cutting, which
+  // only take opacity and visibility away), so that the compositor visits
+  // no more of the beam than those.
+  std::vector<golden::Span> changing_;
 };
 
 }  // namespace cube4::sysc
