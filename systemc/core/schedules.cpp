@@ -179,12 +179,12 @@ class BackEnd {
 
 bool finished(const FrameUnits& u, const BackEnd* back) { return back ? back->done() : u.done; }
 
-// The clocked top: registered links between the units, and one process on
-// the clock's rising edge that clocks each unit in turn. The links keep the
-// previous edge's beats, so the order changes nothing a unit sees, and one
-// process a clock instead of one per unit saves the kernel four process
-// activations a cycle (docs/performance.md, "Simulation speed of the
-// system model"). SystemC elaborates once per process, so the top is built
+// The clocked top: registered links between the units, and work at the
+// clock's rising edge that clocks each unit in turn. The links keep the
+// previous edge's beats, so the order changes nothing a unit sees. The
+// work runs inside the clock's own process (EdgeClock::at_each_edge): one
+// process activation a cycle, where a process per unit had taken six
+// (docs/performance.md, "Simulation speed of the system model"). SystemC elaborates once per process, so the top is built
 // on the first frame and each frame plugs its units in (sc_pause() ends a
 // frame). With two threads the edge clocks only the front's units.
 SC_MODULE(CycleTop) {
