@@ -184,9 +184,10 @@ bool finished(const FrameUnits& u, const BackEnd* back) { return back ? back->do
 // previous edge's beats, so the order changes nothing a unit sees. The
 // work runs inside the clock's own process (EdgeClock::at_each_edge): one
 // process activation a cycle, where a process per unit had taken six
-// (docs/performance.md, "Simulation speed of the system model"). SystemC elaborates once per process, so the top is built
-// on the first frame and each frame plugs its units in (sc_pause() ends a
-// frame). With two threads the edge clocks only the front's units.
+// (docs/performance.md, "Simulation speed of the system model"). SystemC
+// elaborates once per process, so the top is built on the first frame and
+// each frame plugs its units in (sc_pause() ends a frame). With two
+// threads the edge clocks only the front's units.
 SC_MODULE(CycleTop) {
   EdgeClock clk{"clk", sc_core::sc_time(1, sc_core::SC_NS)};
   Link<VoxelBeat> voxels{"voxels", clk};

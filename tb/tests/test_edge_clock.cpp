@@ -28,8 +28,10 @@ SC_MODULE(Recorder) {
     sensitive << clk.posedge_event();
     dont_initialize();
   }
+  // "edge@ns": the clock's edge count and the simulated time.
   std::string at() const {
-    return std::to_string(clk.edges()) + "@" + std::to_string(static_cast<int>(sc_core::sc_time_stamp().to_seconds() * 1e9 + 0.5));
+    const auto ns = static_cast<int>(sc_core::sc_time_stamp().to_seconds() * 1e9 + 0.5);
+    return std::to_string(clk.edges()) + "@" + std::to_string(ns);
   }
   // The work writes the edge's number into the link; the process reads what
   // the work wrote one edge earlier.
