@@ -7,6 +7,8 @@
 // "Simulation speed of the system model").
 #pragma once
 #include <functional>
+#include <stdexcept>
+#include <string>
 #include <systemc>
 #include <utility>
 
@@ -29,8 +31,12 @@ class EdgeClock : public sc_core::sc_module {
   // the processes sensitive to posedge_event() run: the same evaluation
   // phase, the same links, for one process activation a cycle instead of
   // two and no event triggered for it (the clocked top's units,
-  // schedules.cpp). One hook; a second replaces the first.
-  void at_each_edge(std::function<void()> work) { work_ = std::move(work); }
+  // schedules.cpp). One hook: a second would silently take the first's
+  // place, so it is refused.
+  void at_each_edge(std::function<void()> work) {
+    if (work_) throw std::logic_error(std::string(name()) + ": the clock's edge work is already set");
+    work_ = std::move(work);
+  }
 
  private:
   void rise() {

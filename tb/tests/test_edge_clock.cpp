@@ -5,6 +5,7 @@
 // once per process, and this test builds its own modules.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 #include <systemc>
 #include <vector>
@@ -52,6 +53,8 @@ TEST(EdgeClock, EdgeWorkRunsAtEveryEdgeBeforeTheEdgesProcesses) {
       "work 4@3 read 3", "process 4@3 read 3",
   };
   EXPECT_EQ(r.log, want);
+  // A second hook would take the top's place without a word: refused.
+  EXPECT_THROW(r.clk.at_each_edge([] {}), std::logic_error);
 }
 
 }  // namespace
